@@ -1,0 +1,21 @@
+# Every dependency comes from a Debian 12 package (scripts/install-deps.sh installs them).
+find_package(Threads REQUIRED)            # glslang's CMake config needs Threads::Threads
+find_package(PkgConfig REQUIRED)
+find_package(glm REQUIRED)                # vectors and matrices, GLSL-compatible
+find_package(glslang CONFIG REQUIRED)     # GLSL -> SPIR-V at run time
+find_package(assimp CONFIG REQUIRED)      # glTF and OBJ/MTL scene loading
+find_package(tomlplusplus REQUIRED)       # experiment files
+find_package(nlohmann_json REQUIRED)      # run manifests
+find_package(CLI11 REQUIRED)              # command line
+find_package(GTest REQUIRED)              # tests
+# OpenImageIO 2.4's CMake config names /usr/include/opencv4; its pkg-config module works.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)   # offscreen GL 4.5 core on llvmpipe
+
+set(LPVLAB_EGL_TARGET "")
+if(LPVLAB_WITH_EGL)
+  pkg_check_modules(EGL QUIET IMPORTED_TARGET egl)
+  if(EGL_FOUND)
+    set(LPVLAB_EGL_TARGET PkgConfig::EGL)
+  endif()
+endif()

@@ -1,0 +1,60 @@
+// `lpvlab bench`: per-stage GPU times (medians after warm-up) and propagation throughput
+// (cell-iterations per second) for each grid resolution and iteration count. A benchmark prints
+// figures; it asserts nothing.
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "framework/cli/commands.h"
+#include "framework/io/atomic_file.h"
+#include "framework/pipeline/run.h"
+
+namespace lpvlab::cli {
+
+int benchCommand(const Options& options) {
+  std::unique_ptr<GlContext> context;
+  ShaderCompiler shaders;
+  std::ostringstream csv;
+  csv << "grid,cells,iterations,stage,gpu_median_ms,gpu_q1_ms,gpu_q3_ms,wall_median_ms\n";
+  bool header = false;
+  for (int grid : options.gridSizes) {
+    for (int iterations : options.iterationCounts) {
+      std::vector<std::string> overrides = options.overrides;
+      overrides.push_back("grid.resolution=" + std::to_string(grid));
+      overrides.push_back("grid.margin=0");
+      overrides.push_back("propagation.iterations=" + std::to_string(iterations));
+      Experiment e = loadExperiment(options.experiment, overrides);
+      if (!context) {
+        context = GlContext::create(e.glBackend);
+        std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "
+                  << e.warmupFrames << " warm-up + " << e.repeats << " repeats, medians (ms)\n";
+      }
+      const int cells = e.settings.grid.cellCount();
+      Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+      const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
+      if (!header) {
+        std::cout << std::setw(12) << "grid" << std::setw(6) << "iter";
+        for (const auto& [stage, s] : report.gpuMs) std::cout << std::setw(12) << stage;
+        std::cout << std::setw(16) << "cell-it/s\n";
+        header = true;
+      }
+      const glm::ivec3 r = e.settings.grid.resolution;
+      std::cout << std::setw(12) << (std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z))
+                << std::setw(6) << iterations << std::fixed << std::setprecision(3);
+      for (const auto& [stage, s] : report.gpuMs) {
+        std::cout << std::setw(12) << s.median;
+        csv << grid << "," << cells << "," << iterations << "," << stage << "," << s.median << ","
+            << s.q1 << "," << s.q3 << "," << report.wallMs.at(stage).median << "\n";
+      }
+      const double propagationS = report.gpuMs.at("propagation").median * 1e-3;
+      std::cout << std::setw(15) << std::scientific << std::setprecision(3)
+                << (propagationS > 0 ? double(cells) * iterations / propagationS : 0.0) << "\n"
+                << std::flush;
+    }
+  }
+  if (!options.csv.empty()) writeTextAtomically(options.csv, csv.str());
+  return 0;
+}
+
+}  // namespace lpvlab::cli

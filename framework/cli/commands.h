@@ -1,0 +1,22 @@
+#pragma once
+// The subcommands behind lpvlab's CLI; each returns the process exit code.
+
+#include <string>
+#include <vector>
+
+namespace lpvlab::cli {
+
+struct Options {
+  std::string experiment;                 // "" = the built-in default
+  std::string out;
+  std::vector<std::string> overrides;     // "key.path=value"
+  std::vector<int> gridSizes{16, 32, 64};
+  std::vector<int> iterationCounts{1, 4, 16, 64};
+  std::string csv;
+};
+
+int runCommand(const Options& options);
+int benchCommand(const Options& options);
+int listCommand();
+
+}  // namespace lpvlab::cli

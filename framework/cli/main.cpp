@@ -1,0 +1,47 @@
+// lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`.
+// Every failure below this point is an lpvlab::Error (or a library exception); it is printed
+// once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "framework/cli/commands.h"
+#include "framework/core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"lpvlab: a research framework for Light Propagation Volumes variants"};
+  app.require_subcommand(1);
+  lpvlab::cli::Options options;
+
+  CLI::App* run = app.add_subcommand(
+      "run", "Run one experiment (default: the built-in Cornell box) into its own directory");
+  run->add_option("experiment", options.experiment, "Experiment file (TOML); omit for the default");
+  run->add_option("-o,--out", options.out, "Output directory (default: runs/<name>-<UTC time>)");
+  run->add_option("-s,--set", options.overrides,
+                  "Override one parameter, e.g. -s propagation.iterations=16 (repeatable)");
+
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Per-stage times and propagation throughput over grid sizes and iteration counts");
+  bench->add_option("experiment", options.experiment, "Experiment file (default: the Cornell box)");
+  bench->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
+  bench->add_option("--grids", options.gridSizes, "Grid resolutions to measure")->delimiter(',');
+  bench->add_option("--iterations", options.iterationCounts, "Iteration counts")->delimiter(',');
+  bench->add_option("--csv", options.csv, "Also write the table as CSV to this file");
+
+  app.add_subcommand("list", "List the strategies of every stage");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (run->parsed()) return lpvlab::cli::runCommand(options);
+    if (bench->parsed()) return lpvlab::cli::benchCommand(options);
+    return lpvlab::cli::listCommand();
+  } catch (const std::exception& e) {
+    std::cerr << "lpvlab: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,138 @@
+// The "egl" backend: a GL 4.5 core context without any surface to draw on (surfaceless, or a
+// 1x1 pbuffer where EGL_KHR_surfaceless_context is missing), on an EGL device chosen through
+// EGL_EXT_platform_device so that no X server or Wayland compositor is needed.
+
+#if LPVLAB_HAVE_EGL
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/gl/context_backends.h"
+
+namespace lpvlab::gl_detail {
+namespace {
+
+bool hasExtension(const char* list, const std::string& name) {
+  if (!list) return false;
+  const std::string padded = " " + std::string(list) + " ";
+  return padded.find(" " + name + " ") != std::string::npos;
+}
+
+// Throws with EGL's error code of the last call appended: EGL reports why in nothing else.
+[[noreturn]] void fail(const std::string& what) {
+  char code[32];
+  std::snprintf(code, sizeof code, " (EGL error 0x%04X)", static_cast<unsigned>(eglGetError()));
+  throwAt("egl", what + code);
+}
+
+// An initialised display, on a GPU device when the device extensions can find one (devices
+// that fail to initialise, e.g. a GPU without a driver for this EGL, are passed over);
+// EGL_MESA_device_software marks Mesa's CPU renderers. Without device enumeration, the default
+// display is all there is.
+EGLDisplay openDisplay(bool requireGpu) {
+  std::vector<EGLDisplay> candidates;
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  auto queryDevices =
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+      eglGetProcAddress("eglQueryDeviceStringEXT"));
+  auto platformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  EGLint count = 0;
+  if (hasExtension(client, "EGL_EXT_platform_device") && queryDevices && queryDeviceString &&
+      platformDisplay && queryDevices(0, nullptr, &count) && count > 0) {
+    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+    queryDevices(count, devices.data(), &count);
+    std::vector<EGLDisplay> software;
+    for (EGLDeviceEXT device : devices) {
+      const bool isSoftware =
+          hasExtension(queryDeviceString(device, EGL_EXTENSIONS), "EGL_MESA_device_software");
+      EGLDisplay display = platformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+      if (display != EGL_NO_DISPLAY) (isSoftware ? software : candidates).push_back(display);
+    }
+    if (!requireGpu) candidates.insert(candidates.end(), software.begin(), software.end());
+  } else if (requireGpu) {
+    throwAt("egl", "cannot tell GPU devices from others (no EGL_EXT_platform_device)");
+  } else {
+    candidates.push_back(eglGetDisplay(EGL_DEFAULT_DISPLAY));
+  }
+  if (candidates.empty())
+    throwAt("egl", requireGpu ? "no GPU device (EGL offers software renderers only)"
+                              : "no EGL device");
+  for (EGLDisplay display : candidates) {
+    EGLint major = 0, minor = 0;
+    if (display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor)) return display;
+  }
+  fail("no EGL display could be initialised");
+}
+
+class EglContext : public GlContext {
+public:
+  explicit EglContext(bool requireGpu) {
+    display_ = openDisplay(requireGpu);
+    try {
+      setUp();
+    } catch (...) {
+      release();
+      throw;
+    }
+  }
+  ~EglContext() override { release(); }
+  std::string backend() const override { return "egl"; }
+
+private:
+  void setUp() {
+    if (!eglBindAPI(EGL_OPENGL_API)) fail("eglBindAPI(EGL_OPENGL_API) failed: no desktop GL");
+    const bool surfaceless =
+        hasExtension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context");
+    const EGLint configAttributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,
+                                       EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                                       EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+                                       EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint configs = 0;
+    if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1)
+      fail("no EGL config for desktop GL");
+    const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
+                                        EGL_CONTEXT_MINOR_VERSION, 5,
+                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                        EGL_NONE};
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
+    if (context_ == EGL_NO_CONTEXT) fail("eglCreateContext gave no GL 4.5 core context");
+    if (!surfaceless) {
+      const EGLint pbufferAttributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
+      surface_ = eglCreatePbufferSurface(display_, config, pbufferAttributes);
+      if (surface_ == EGL_NO_SURFACE) fail("no surfaceless contexts and no pbuffer surface");
+    }
+    if (!eglMakeCurrent(display_, surface_, surface_, context_)) fail("eglMakeCurrent failed");
+  }
+
+  void release() {
+    if (display_ == EGL_NO_DISPLAY) return;
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    eglTerminate(display_);
+    display_ = EGL_NO_DISPLAY;
+  }
+
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  EGLSurface surface_ = EGL_NO_SURFACE;
+};
+
+}  // namespace
+
+CurrentContext createEglContext(bool requireGpu) {
+  return {std::make_unique<EglContext>(requireGpu), &eglGetProcAddress};
+}
+
+}  // namespace lpvlab::gl_detail
+
+#endif  // LPVLAB_HAVE_EGL

@@ -1,0 +1,45 @@
+#pragma once
+// Linear float images and their files. Data: EXR (half or float) with named AOVs as channel
+// groups ("direct.R", "direct.G", ...), written and read through OpenImageIO. Looking: a
+// tone-mapped sRGB PNG. Every file is written to a temporary name and renamed, so a killed run
+// never leaves a half-written file that looks whole.
+
+#include <string>
+#include <vector>
+
+namespace lpvlab {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  std::vector<float> pixels;  // row-major, top row first, interleaved channels
+
+  Image() = default;
+  Image(int w, int h, int c, float fill = 0.0f)
+      : width(w), height(h), channels(c), pixels(size_t(w) * h * c, fill) {}
+  float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
+};
+
+// One named output (AOV): "direct", "indirect", "combined", "albedo", "normal", "depth", ...
+// Channel names in the file: RGB images get NAME.R/G/B, one-channel images NAME.Z for depth
+// and NAME.Y otherwise.
+struct NamedImage {
+  std::string name;
+  Image image;
+};
+
+// Writes all AOVs (same size) into one multi-channel float EXR; `metadata` key/values become
+// string attributes in the header (e.g. the run's configuration hash).
+void writeExr(const std::string& path, const std::vector<NamedImage>& aovs,
+              const std::vector<std::pair<std::string, std::string>>& metadata = {});
+// Reads every AOV back, grouped by the prefix before the '.' in channel names.
+std::vector<NamedImage> readExr(const std::string& path);
+
+// sRGB PNG of an RGB image scaled by 2^exposureStops, with a simple Reinhard-style tone curve
+// (x / (1 + x)) applied when `tonemap` is set, else clamped.
+void writePng(const std::string& path, const Image& rgb, float exposureStops = 0.0f,
+              bool tonemap = true);
+
+}  // namespace lpvlab

@@ -1,0 +1,164 @@
+#include "framework/pipeline/experiment.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "framework/core/error.h"
+#include "framework/core/parameters.h"
+#include "framework/scene/scene_loader.h"
+
+namespace lpvlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr float kDegrees = float(M_PI) / 180.0f;
+
+std::string sharedDir() {
+  if (const char* env = std::getenv("LPVLAB_SHARED_DIR")) return env;
+  return LPVLAB_SHARED_DIR;
+}
+
+Light readLight(Params& p) {
+  Light light;
+  const std::string type = p.getChoice("type", "point", {"point", "spot", "directional"});
+  light.type = type == "point" ? LightType::Point
+               : type == "spot" ? LightType::Spot : LightType::Directional;
+  light.name = p.get<std::string>("name", type);
+  light.color = p.get<glm::vec3>("color", glm::vec3(1.0f), {.min = glm::vec3(0.0f)});
+  light.intensity = p.require<float>("intensity", {.min = 0.0f, .max = 1e12f});
+  if (light.type != LightType::Directional) light.position = p.require<glm::vec3>("position");
+  if (light.type != LightType::Point) {
+    const glm::vec3 d = p.require<glm::vec3>("direction");
+    if (glm::length(d) < 1e-6f) throw Error(p.where("direction") + ": must not be zero");
+    light.direction = glm::normalize(d);
+  }
+  if (light.type == LightType::Spot) {
+    light.outerConeAngle = kDegrees * p.get<float>("outer_cone_deg", 45.0f, {.min = 0.01f, .max = 90.0f});
+    light.innerConeAngle = kDegrees * p.get<float>("inner_cone_deg", 0.0f, {.min = 0.0f, .max = 90.0f});
+    if (light.innerConeAngle > light.outerConeAngle)
+      throw Error(p.where("inner_cone_deg") + ": must not exceed outer_cone_deg");
+  }
+  return light;
+}
+
+Camera readCamera(Params& p, const Scene& scene) {
+  if (p.has("position")) {
+    Camera camera;
+    camera.name = "experiment";
+    camera.position = p.require<glm::vec3>("position");
+    const glm::vec3 target = p.require<glm::vec3>("look_at");
+    const glm::vec3 up = p.get<glm::vec3>("up", glm::vec3(0, 1, 0));
+    camera.forward = target - camera.position;
+    if (glm::length(camera.forward) < 1e-6f)
+      throw Error(p.where("look_at") + ": must differ from the camera position");
+    camera.forward = glm::normalize(camera.forward);
+    const glm::vec3 right = glm::cross(camera.forward, up);
+    if (glm::length(right) < 1e-6f) throw Error(p.where("up") + ": parallel to the view direction");
+    camera.up = glm::normalize(glm::cross(glm::normalize(right), camera.forward));
+    camera.verticalFov = kDegrees * p.get<float>("fov_deg", 45.0f, {.min = 1.0f, .max = 170.0f});
+    const float diagonal = glm::length(scene.bounds().extent());
+    camera.nearPlane = p.get<float>("near", std::max(1e-4f, 1e-4f * diagonal), {.min = 1e-6f});
+    camera.farPlane = p.get<float>("far", 4.0f * diagonal + glm::length(camera.position - scene.bounds().center()),
+                                   {.min = 1e-5f});
+    return camera;
+  }
+  if (scene.cameras.empty())
+    throw Error(p.file() + ": the scene " + scene.source + " has no camera; give one with "
+                "[camera] position, look_at (and fov_deg)");
+  std::vector<std::string> names;
+  for (const Camera& c : scene.cameras) names.push_back(c.name);
+  const std::string name = p.getChoice("name", scene.cameras.front().name, names);
+  for (const Camera& c : scene.cameras)
+    if (c.name == name) return c;
+  return scene.cameras.front();
+}
+
+}  // namespace
+
+GridGeometry GridPlacement::resolve(const Bounds& sceneBounds) const {
+  if (origin && cellSize && cells) return GridGeometry{*origin, *cellSize, *cells};
+  return GridGeometry::fitted(sceneBounds, resolution, marginCells);
+}
+
+std::string resolveScenePath(const std::string& reference, const std::string& experimentFile) {
+  if (reference.rfind("builtin:", 0) == 0) return reference;
+  if (reference.rfind("shared:", 0) == 0) return (fs::path(sharedDir()) / reference.substr(7)).string();
+  const fs::path path(reference);
+  if (path.is_absolute() || experimentFile.empty()) return path.string();
+  return (fs::path(experimentFile).parent_path() / path).string();
+}
+
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides) {
+  toml::table root = path.empty() ? toml::table{} : readTomlFile(path);
+  for (const std::string& assignment : overrides) applyOverride(root, assignment);
+  const std::string file = path.empty() ? "built-in default experiment" : path;
+  Params params(root, file);
+
+  Experiment e;
+  e.file = path;
+  e.name = path.empty() ? "cornell_box" : fs::path(path).stem().string();
+
+  Params sceneParams = params.table("scene");
+  const std::string sceneRef = sceneParams.get<std::string>("file", "builtin:cornell_box");
+  e.scene = loadSceneByName(resolveScenePath(sceneRef, path));
+  if (sceneParams.get<bool>("replace_lights", false)) e.scene.lights.clear();
+  for (Params& lightParams : params.tables("lights")) e.scene.lights.push_back(readLight(lightParams));
+
+  Params cameraParams = params.table("camera");
+  e.camera = readCamera(cameraParams, e.scene);
+
+  Params output = params.table("output");
+  e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});
+  e.settings.height = output.get<int>("height", 512, {.min = 1, .max = 16384});
+  e.exposureStops = output.get<float>("exposure", 0.0f, {.min = -40.0f, .max = 40.0f});
+
+  Params lightMaps = params.table("light_maps");
+  e.settings.rsmResolution = lightMaps.get<int>("rsm_resolution", 256, {.min = 1, .max = 8192});
+  e.settings.shadowResolution = lightMaps.get<int>("shadow_resolution", 1024, {.min = 1, .max = 16384});
+  e.settings.shadow.normalOffsetTexels =
+      lightMaps.get<float>("shadow_normal_offset", 1.5f, {.min = 0.0f, .max = 100.0f});
+  e.settings.shadow.depthBias = lightMaps.get<float>("shadow_depth_bias", 2e-5f, {.min = 0.0f, .max = 0.1f});
+
+  Params gridParams = params.table("grid");
+  GridPlacement placement;
+  placement.resolution = gridParams.get<int>("resolution", 32, {.min = 1, .max = 1024});
+  placement.marginCells = gridParams.get<float>("margin", 1.0f, {.min = 0.0f, .max = 64.0f});
+  if (gridParams.has("origin") || gridParams.has("cell_size") || gridParams.has("cells")) {
+    placement.origin = gridParams.require<glm::vec3>("origin");
+    placement.cellSize = gridParams.require<float>("cell_size", {.min = 1e-6f});
+    placement.cells = gridParams.require<glm::ivec3>("cells", {.min = glm::ivec3(1), .max = glm::ivec3(1024)});
+  }
+  e.settings.grid = placement.resolve(e.scene.bounds());
+
+  Params timing = params.table("timing");
+  e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
+  e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
+  e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
+
+  Params injection = params.table("injection");
+  e.strategies.injection = Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl");
+  Params propagation = params.table("propagation");
+  e.strategies.propagation = Registry<PropagationStrategy>::instance().create(propagation, "standard");
+  Params rendering = params.table("rendering");
+  e.strategies.rendering = Registry<RenderingStrategy>::instance().create(rendering, "trilinear");
+
+  params.finish();
+  e.configuration = params.resolved();
+  e.configuration["scene"]["resolved_path"] = e.scene.source;
+  e.configuration["camera"]["resolved"] = {
+      {"name", e.camera.name},
+      {"position", {e.camera.position.x, e.camera.position.y, e.camera.position.z}},
+      {"forward", {e.camera.forward.x, e.camera.forward.y, e.camera.forward.z}},
+      {"vertical_fov_deg", e.camera.verticalFov / kDegrees}};
+  const GridGeometry& g = e.settings.grid;
+  e.configuration["grid"]["resolved"] = {
+      {"origin", {g.origin.x, g.origin.y, g.origin.z}},
+      {"cell_size", g.cellSize},
+      {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}};
+  return e;
+}
+
+}  // namespace lpvlab

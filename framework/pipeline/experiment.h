@@ -1,0 +1,53 @@
+#pragma once
+// An experiment: a scene (a file or the built-in Cornell box), the lights it adds, the camera, the
+// output, the light grid's placement, the strategy of each stage with its parameters, and how to
+// time. Read from a TOML file (see experiments/ for commented examples); without a file every
+// key takes its default, which is the built-in Cornell box with standard LPV. Command-line
+// overrides ("propagation.iterations=16") are applied before reading, so they are checked like
+// the file's keys. Any key nobody reads is an error naming the file, the line and the valid keys.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "framework/pipeline/pipeline.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+
+struct GridPlacement {
+  int resolution = 32;          // cells along the scene's longest axis
+  float marginCells = 1.0f;     // empty cells around the scene bounds
+  std::optional<glm::vec3> origin;      // fixed placement: all three of these given
+  std::optional<float> cellSize;
+  std::optional<glm::ivec3> cells;
+  GridGeometry resolve(const Bounds& sceneBounds) const;
+};
+
+struct Experiment {
+  std::string name;             // the file's stem, or "cornell_box" for the built-in default
+  std::string file;             // the experiment file, or "" for the built-in default
+  Scene scene;
+  Camera camera;
+  PipelineSettings settings;
+  Strategies strategies;
+  int warmupFrames = 2;
+  int repeats = 5;
+  float exposureStops = 0.0f;   // for the PNG only
+  std::string glBackend = "auto";
+  nlohmann::json configuration; // every parameter as resolved (defaults included)
+};
+
+// Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
+// the file and key for anything wrong.
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Resolves a scene reference from an experiment: "builtin:cornell_box", "shared:<path>" (relative
+// to the shared folder: env LPVLAB_SHARED_DIR, else the build's default), or a path relative to
+// the experiment file's folder.
+std::string resolveScenePath(const std::string& reference, const std::string& experimentFile);
+
+}  // namespace lpvlab

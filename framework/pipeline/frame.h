@@ -1,0 +1,47 @@
+#pragma once
+// What one frame's stages read and write. The pipeline owns all of it; strategies get a Frame.
+
+#include "framework/gl/resources.h"
+#include "framework/pipeline/light_grid.h"
+
+namespace lpvlab {
+
+// The camera's view of the scene, one texel per output pixel (textures are bottom row first,
+// as GL has them). Uncovered pixels have position.w = 0.
+struct GBuffer {
+  int width = 0, height = 0;
+  gl::Texture position;   // RGBA32F: world position (m), w = 1 where a surface was hit
+  gl::Texture normal;     // RGBA32F: unit world normal facing the camera, w = view depth (m)
+  gl::Texture albedo;     // RGBA32F: Lambertian reflectance
+  gl::Texture emission;   // RGBA32F: emitted radiance, W/(m^2 sr)
+  gl::Texture depth;      // DEPTH32F: the rasteriser's depth buffer
+  std::size_t memoryBytes() const;
+};
+
+// Per light view (a cube face of a point or spot light, or a directional light's box): the
+// shadow map for direct light and the reflective shadow map (RSM) for injection, as 2D array
+// textures with one layer per view. Views and lights are described to kernels by the GPU
+// records in light_views.h.
+struct LightMaps {
+  int views = 0;
+  int rsmResolution = 0;
+  int shadowResolution = 0;
+  gl::Texture rsmPosition;  // RGBA32F: world position of the texel's surface, w = 1 if covered
+  gl::Texture rsmNormal;    // RGBA32F: unit normal facing the light
+  gl::Texture rsmFlux;      // RGBA32F: reflected flux of the texel's surface patch, W per channel
+  gl::Texture rsmDepth;     // DEPTH32F
+  gl::Texture shadowDepth;  // DEPTH32F, shadowResolution^2 per layer
+  gl::Buffer lightRecords;  // GpuLight[] (binding conventions: see shaders/common/lights_gpu.glsl)
+  gl::Buffer viewRecords;   // GpuView[]
+  int lightCount = 0;
+  std::size_t memoryBytes() const;
+};
+
+struct Frame {
+  const GBuffer& gbuffer;
+  const LightMaps& lightMaps;
+  LightGrid& lightGrid;
+  gl::Texture& indirect;    // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
+};
+
+}  // namespace lpvlab

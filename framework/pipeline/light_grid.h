@@ -1,0 +1,33 @@
+#pragma once
+// The light grid: RGB SH coefficients of radiant intensity (W/sr) per cell, in GPU buffers laid
+// out as shaders/common/grid.glsl describes (structure of arrays, coefficient-major).
+//   current:     the light of the latest propagation step (after injection: the injected VPLs)
+//   accumulated: the sum over injection and every propagation step, which rendering reads
+// Propagation strategies allocate their own scratch (e.g. a ping-pong partner for `current`).
+
+#include <cstddef>
+
+#include "framework/gl/resources.h"
+#include "framework/math/grid_geometry.h"
+
+namespace lpvlab {
+
+struct LightGrid {
+  static constexpr int kChannels = 3;
+
+  GridGeometry geometry;
+  int coefficients = 4;  // per channel: (order + 1)^2
+  gl::Buffer current;
+  gl::Buffer accumulated;
+
+  LightGrid() = default;
+  LightGrid(const GridGeometry& geometry, int shOrder);
+
+  std::size_t floatsPerGrid() const {
+    return std::size_t(kChannels) * coefficients * geometry.cellCount();
+  }
+  std::size_t bytesPerGrid() const { return floatsPerGrid() * sizeof(float); }
+  std::size_t memoryBytes() const { return current.size() + accumulated.size(); }
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,102 @@
+#include "framework/pipeline/light_views.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "framework/core/error.h"
+
+namespace lpvlab {
+
+namespace {
+
+// Cube faces in the order +x, -x, +y, -y, +z, -z, with up vectors as in GL cube maps.
+const glm::vec3 kFaceAxis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const glm::vec3 kFaceUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+
+// Angle between a cube face's axis and the corners of its frustum: acos(1 / sqrt(3)).
+const float kFaceHalfDiagonal = std::acos(1.0f / std::sqrt(3.0f));
+
+void checkLight(const Light& light) {
+  const std::string where = "light '" + light.name + "'";
+  auto finite = [&](const glm::vec3& v, const char* what) {
+    for (int i = 0; i < 3; ++i) requireFinite(v[i], where, what);
+  };
+  finite(light.position, "position");
+  finite(light.direction, "direction");
+  finite(light.color, "colour");
+  requireFinite(light.intensity, where, "intensity");
+  if (light.intensity < 0.0f || glm::any(glm::lessThan(light.color, glm::vec3(0.0f))))
+    throwAt(where, "negative colour or intensity");
+  if (light.type != LightType::Point && glm::length(light.direction) < 1e-6f)
+    throwAt(where, "direction has zero length");
+  if (light.type == LightType::Spot &&
+      !(light.outerConeAngle > 0.0f && light.outerConeAngle <= 0.5f * float(M_PI) &&
+        light.innerConeAngle >= 0.0f && light.innerConeAngle <= light.outerConeAngle))
+    throwAt(where, "cone angles must satisfy 0 <= inner <= outer <= pi/2 and outer > 0");
+}
+
+}  // namespace
+
+LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bounds) {
+  if (bounds.empty()) throw Error("light views: the scene has no geometry");
+  const float diagonal = std::max(glm::length(bounds.extent()), 1e-3f);
+  LightViews out;
+  for (const Light& light : lights) {
+    checkLight(light);
+    const int lightIndex = int(out.lights.size());
+    GpuLight record{};
+    const glm::vec3 direction =
+        light.type == LightType::Point ? glm::vec3(0, -1, 0) : glm::normalize(light.direction);
+    const int type = light.type == LightType::Point ? 0 : light.type == LightType::Spot ? 1 : 2;
+    record.positionType = glm::vec4(light.position, float(type));
+    const bool spot = light.type == LightType::Spot;
+    record.directionCosOuter =
+        glm::vec4(direction, spot ? std::cos(light.outerConeAngle) : -1.0f);
+    record.intensityCosInner =
+        glm::vec4(light.color * light.intensity, spot ? std::cos(light.innerConeAngle) : -1.0f);
+    record.viewOfFace0123 = glm::ivec4(-1);
+    record.viewOfFace45 = glm::ivec4(-1);
+
+    if (light.type == LightType::Directional) {
+      // An orthographic box around the scene's bounding sphere, looking along the light.
+      const glm::vec3 centre = bounds.center();
+      const float radius = 0.5f * diagonal;
+      const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+      const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * radius, centre, up);
+      const glm::mat4 clipFromView =
+          glm::ortho(-radius, radius, -radius, radius, 0.5f * radius, 3.5f * radius);
+      record.viewOfFace0123.x = int(out.views.size());
+      out.views.push_back({clipFromView * viewFromWorld, glm::vec4(1.0f, 2.0f * radius, lightIndex, 0)});
+    } else {
+      // The near plane scales with the scene; far reaches the farthest corner of the bounds.
+      float farthest = 0.0f;
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                          (corner & 2) ? bounds.max.y : bounds.min.y,
+                          (corner & 4) ? bounds.max.z : bounds.min.z);
+        farthest = std::max(farthest, glm::length(p - light.position));
+      }
+      const float nearPlane = std::max(1e-4f, 1e-4f * diagonal);
+      const float farPlane = std::max(farthest * 1.01f, 2.0f * nearPlane);
+      const glm::mat4 clipFromView = glm::perspective(0.5f * float(M_PI), 1.0f, nearPlane, farPlane);
+      for (int face = 0; face < 6; ++face) {
+        if (spot) {
+          const float angle = std::acos(std::clamp(glm::dot(kFaceAxis[face], direction), -1.0f, 1.0f));
+          if (angle > light.outerConeAngle + kFaceHalfDiagonal) continue;  // can't meet the cone
+        }
+        const glm::mat4 viewFromWorld =
+            glm::lookAt(light.position, light.position + kFaceAxis[face], kFaceUp[face]);
+        const int view = int(out.views.size());
+        if (face < 4) record.viewOfFace0123[face] = view;
+        else record.viewOfFace45[face - 4] = view;
+        out.views.push_back({clipFromView * viewFromWorld, glm::vec4(0.0f, 1.0f, lightIndex, 0)});
+      }
+    }
+    out.lights.push_back(record);
+  }
+  return out;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,43 @@
+#pragma once
+// Turning the scene's lights into the views that shadow maps and RSMs are rendered from:
+//   point and spot lights: the six 90-degree faces of a cube around the light, skipping the faces
+//     whose frustum cannot meet the spot's cone (a spot pointing down renders no upward face);
+//   directional lights: one orthographic view covering the scene bounds.
+// A cube face's texel subtends (2 tan(fov/2) / N)^2 / (1 + x^2 + y^2)^(3/2) sr at the light, so an
+// RSM texel's reflected flux is albedo * I(w) * that solid angle, whatever the surface's slope.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/math/bounds.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+
+// std430 mirrors of shaders/common/lights_gpu.glsl.
+struct GpuLight {
+  glm::vec4 positionType;
+  glm::vec4 directionCosOuter;
+  glm::vec4 intensityCosInner;
+  glm::ivec4 viewOfFace0123;
+  glm::ivec4 viewOfFace45;
+};
+static_assert(sizeof(GpuLight) == 80);
+
+struct GpuView {
+  glm::mat4 clipFromWorld;
+  glm::vec4 params;
+};
+static_assert(sizeof(GpuView) == 80);
+
+struct LightViews {
+  std::vector<GpuLight> lights;
+  std::vector<GpuView> views;
+};
+
+// Throws an Error when a light can't be used (zero or negative intensity is allowed: it gives
+// black; non-finite values and degenerate directions are errors).
+LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& sceneBounds);
+
+}  // namespace lpvlab

@@ -1,0 +1,91 @@
+#pragma once
+// The LPV pipeline: per frame, (1) shadow maps and RSMs per light view, (2) the camera's
+// G-buffer and direct light, (3) clearing the light grid, (4) injection, (5) propagation,
+// (6) rendering of indirect light. Stages 4-6 are the experiment's strategies. Every stage is
+// timed on the GPU (timestamp queries) and on the wall clock (the stage ends with glFinish).
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/gl/gpu_timer.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/io/image.h"
+#include "framework/pipeline/direct_lighting.h"
+#include "framework/pipeline/raster_passes.h"
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+
+struct PipelineSettings {
+  int width = 512;             // output pixels
+  int height = 512;
+  int rsmResolution = 256;     // RSM texels per side per light view
+  int shadowResolution = 1024; // shadow-map texels per side per light view
+  GridGeometry grid;           // where the light grid sits (resolved by the experiment)
+  ShadowSettings shadow;
+};
+
+struct Strategies {
+  std::unique_ptr<InjectionStrategy> injection;
+  std::unique_ptr<PropagationStrategy> propagation;
+  std::unique_ptr<RenderingStrategy> rendering;
+};
+
+// Stage name -> milliseconds, for one frame.
+struct FrameTimes {
+  std::map<std::string, double> gpuMs;
+  std::map<std::string, double> wallMs;
+};
+
+// Flux bookkeeping of injection (W, summed over RGB): what the RSMs reflect, and what the grid
+// holds after injection (the difference fell outside the grid).
+struct InjectionBalance {
+  double rsmFlux = 0.0;
+  double gridFlux = 0.0;
+};
+
+class Pipeline {
+public:
+  // The stage names, in execution order.
+  static const std::vector<std::string>& stageNames();
+
+  Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
+           Strategies strategies, ShaderCompiler& shaders);
+  ~Pipeline();
+
+  FrameTimes renderFrame();
+  // The last frame's outputs, top row first: direct, indirect, combined, albedo, normal, depth
+  // (view depth in metres; 0 where no surface was hit).
+  std::vector<NamedImage> readOutputs() const;
+  // Re-runs clearing and injection alone and measures the flux balance (a diagnostic: reads
+  // the RSM and the grid back to the CPU).
+  InjectionBalance measureInjection();
+  // The light grid's current / accumulated coefficients as floats (grid.glsl layout).
+  std::vector<float> readGrid(bool accumulated) const;
+
+  const LightGrid& lightGrid() const { return lightGrid_; }
+  const Strategies& strategies() const { return strategies_; }
+  // Bytes of GPU memory per resource group.
+  nlohmann::json memoryReport() const;
+
+private:
+  template <class F>
+  void stage(const std::string& name, FrameTimes& times, F&& work);
+
+  PipelineSettings settings_;
+  Camera camera_;
+  Strategies strategies_;
+  std::unique_ptr<SceneGpu> scene_;
+  std::unique_ptr<GBufferPass> gbufferPass_;
+  std::unique_ptr<LightMapsPass> lightMapsPass_;
+  std::unique_ptr<DirectLighting> direct_;
+  LightGrid lightGrid_;
+  gl::Texture directImage_, indirectImage_;
+  GpuTimer gpuTimer_;
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,144 @@
+#include "framework/pipeline/raster_passes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace lpvlab {
+
+namespace {
+
+void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int colourTargets) {
+  framebuffer.bind();
+  static const GLenum targets[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                    GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+  if (colourTargets > 0) glNamedFramebufferDrawBuffers(framebuffer.id(), colourTargets, targets);
+  else glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
+  glViewport(0, 0, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // surfaces are two-sided
+  const float zero[4] = {0, 0, 0, 0};
+  for (int i = 0; i < colourTargets; ++i) glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, i, zero);
+  const float far = 1.0f;
+  glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
+}
+
+}  // namespace
+
+GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height)
+    : program_(shaders.graphics("raster/scene.vert", "raster/gbuffer.frag")) {
+  gbuffer_.width = width;
+  gbuffer_.height = height;
+  gbuffer_.position = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer position");
+  gbuffer_.normal = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer normal");
+  gbuffer_.albedo = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer albedo");
+  gbuffer_.emission = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer emission");
+  gbuffer_.depth = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, "gbuffer depth");
+  framebuffer_.attach(GL_COLOR_ATTACHMENT0, gbuffer_.position);
+  framebuffer_.attach(GL_COLOR_ATTACHMENT1, gbuffer_.normal);
+  framebuffer_.attach(GL_COLOR_ATTACHMENT2, gbuffer_.albedo);
+  framebuffer_.attach(GL_COLOR_ATTACHMENT3, gbuffer_.emission);
+  framebuffer_.attach(GL_DEPTH_ATTACHMENT, gbuffer_.depth);
+  framebuffer_.checkComplete("G-buffer");
+}
+
+glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
+  const glm::mat4 viewFromWorld =
+      glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
+  const glm::mat4 clipFromView =
+      glm::perspective(camera.verticalFov, float(gbuffer_.width) / float(gbuffer_.height),
+                       camera.nearPlane, camera.farPlane);
+  return clipFromView * viewFromWorld;
+}
+
+void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
+  beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, 4);
+  program_.use();
+  const glm::mat4 clip = clipFromWorld(camera);
+  glUniformMatrix4fv(0, 1, GL_FALSE, &clip[0][0]);
+  glUniform3fv(2, 1, &camera.position[0]);
+  glUniform3fv(3, 1, &camera.forward[0]);
+  scene.draw();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
+                             int shadowResolution)
+    : shadowProgram_(shaders.graphics("raster/scene.vert", "raster/shadow.frag")),
+      rsmProgram_(shaders.graphics("raster/scene.vert", "raster/rsm.frag")) {
+  const int layers = int(views.views.size());
+  maps_.views = layers;
+  maps_.lightCount = int(views.lights.size());
+  maps_.rsmResolution = rsmResolution;
+  maps_.shadowResolution = shadowResolution;
+  for (const GpuView& view : views.views) clipFromWorld_.push_back(view.clipFromWorld);
+  const int r = rsmResolution, s = shadowResolution;
+  maps_.rsmPosition = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm position");
+  maps_.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm normal");
+  maps_.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm flux");
+  maps_.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, layers, "rsm depth");
+  maps_.shadowDepth =
+      gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, s, s, layers, "shadow maps");
+  // Hardware depth comparison with bilinear filtering: each shadow tap is a 2x2 PCF.
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  maps_.lightRecords = gl::Buffer(std::max<size_t>(1, views.lights.size()) * sizeof(GpuLight),
+                                  "light records", nullptr);
+  if (!views.lights.empty())
+    maps_.lightRecords.upload(views.lights.data(), views.lights.size() * sizeof(GpuLight));
+  maps_.viewRecords = gl::Buffer(std::max<size_t>(1, views.views.size()) * sizeof(GpuView),
+                                 "view records", nullptr);
+  if (!views.views.empty())
+    maps_.viewRecords.upload(views.views.data(), views.views.size() * sizeof(GpuView));
+  for (int layer = 0; layer < layers; ++layer) {
+    gl::Framebuffer& shadow = shadowFramebuffers_.emplace_back();
+    shadow.attach(GL_DEPTH_ATTACHMENT, maps_.shadowDepth, layer);
+    glNamedFramebufferDrawBuffer(shadow.id(), GL_NONE);
+    glNamedFramebufferReadBuffer(shadow.id(), GL_NONE);
+    shadow.checkComplete("shadow map layer " + std::to_string(layer));
+    gl::Framebuffer& rsm = rsmFramebuffers_.emplace_back();
+    rsm.attach(GL_COLOR_ATTACHMENT0, maps_.rsmPosition, layer);
+    rsm.attach(GL_COLOR_ATTACHMENT1, maps_.rsmNormal, layer);
+    rsm.attach(GL_COLOR_ATTACHMENT2, maps_.rsmFlux, layer);
+    rsm.attach(GL_DEPTH_ATTACHMENT, maps_.rsmDepth, layer);
+    rsm.checkComplete("RSM layer " + std::to_string(layer));
+  }
+}
+
+void LightMapsPass::renderShadowMaps(const SceneGpu& scene) {
+  shadowProgram_.use();
+  for (int layer = 0; layer < maps_.views; ++layer) {
+    beginRaster(shadowFramebuffers_[layer], maps_.shadowResolution, maps_.shadowResolution, 0);
+    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    scene.draw();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void LightMapsPass::renderRsms(const SceneGpu& scene) {
+  rsmProgram_.use();
+  maps_.lightRecords.bindStorage(1);
+  maps_.viewRecords.bindStorage(2);
+  glUniform1i(3, maps_.rsmResolution);
+  for (int layer = 0; layer < maps_.views; ++layer) {
+    beginRaster(rsmFramebuffers_[layer], maps_.rsmResolution, maps_.rsmResolution, 3);
+    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    glUniform1i(2, layer);
+    scene.draw();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::size_t GBuffer::memoryBytes() const {
+  return position.bytes() + normal.bytes() + albedo.bytes() + emission.bytes() + depth.bytes();
+}
+
+std::size_t LightMaps::memoryBytes() const {
+  return rsmPosition.bytes() + rsmNormal.bytes() + rsmFlux.bytes() + rsmDepth.bytes() +
+         shadowDepth.bytes() + lightRecords.size() + viewRecords.size();
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,44 @@
+#pragma once
+// The rasterised stages every LPV variant stands on: the camera's G-buffer, and per light view
+// the shadow map and the reflective shadow map.
+
+#include <glm/glm.hpp>
+
+#include "framework/gl/resources.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/frame.h"
+#include "framework/pipeline/light_views.h"
+#include "framework/pipeline/scene_gpu.h"
+
+namespace lpvlab {
+
+class GBufferPass {
+public:
+  GBufferPass(ShaderCompiler& shaders, int width, int height);
+  // Renders the scene from the camera (vertical FOV, aspect = width / height).
+  void render(const SceneGpu& scene, const Camera& camera);
+  const GBuffer& gbuffer() const { return gbuffer_; }
+  glm::mat4 clipFromWorld(const Camera& camera) const;
+
+private:
+  Program program_;
+  GBuffer gbuffer_;
+  gl::Framebuffer framebuffer_;
+};
+
+class LightMapsPass {
+public:
+  LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
+                int shadowResolution);
+  void renderShadowMaps(const SceneGpu& scene);
+  void renderRsms(const SceneGpu& scene);
+  const LightMaps& lightMaps() const { return maps_; }
+
+private:
+  Program shadowProgram_, rsmProgram_;
+  std::vector<glm::mat4> clipFromWorld_;  // per view
+  LightMaps maps_;
+  std::vector<gl::Framebuffer> shadowFramebuffers_, rsmFramebuffers_;  // per view (layer)
+};
+
+}  // namespace lpvlab

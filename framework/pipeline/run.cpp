@@ -1,0 +1,117 @@
+#include "framework/pipeline/run.h"
+
+#include <assimp/version.h>
+#include <glslang/build_info.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "framework/core/error.h"
+#include "framework/io/atomic_file.h"
+#include "framework/io/provenance.h"
+#include "framework/scene/scene_loader.h"
+
+namespace lpvlab {
+
+namespace {
+
+void requireFiniteImages(const std::vector<NamedImage>& aovs) {
+  for (const NamedImage& aov : aovs) {
+    std::size_t bad = 0;
+    for (float v : aov.image.pixels) bad += !std::isfinite(v);
+    if (bad)
+      throw Error("output '" + aov.name + "': " + std::to_string(bad) +
+                  " values are NaN or Inf; nothing was written");
+  }
+}
+
+nlohmann::json versions(const GlContext& context) {
+  nlohmann::json v = libraryVersions();
+  v["assimp"] = std::to_string(aiGetVersionMajor()) + "." + std::to_string(aiGetVersionMinor()) +
+                "." + std::to_string(aiGetVersionPatch());
+  v["glslang"] = std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+                 std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH);
+  v["gl_backend"] = context.backend();
+  v["gl_renderer"] = context.renderer();
+  v["gl_version"] = context.version();
+  return v;
+}
+
+}  // namespace
+
+nlohmann::json TimingReport::toJson() const {
+  nlohmann::json out = {{"warmup_frames", warmupFrames}, {"repeats", repeats}};
+  for (const auto& [stage, summary] : gpuMs) out["gpu_ms"][stage] = summary.toJson();
+  for (const auto& [stage, summary] : wallMs) out["wall_ms"][stage] = summary.toJson();
+  return out;
+}
+
+TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
+  for (int i = 0; i < warmup; ++i) pipeline.renderFrame();
+  std::map<std::string, std::vector<double>> gpu, wall;
+  for (int i = 0; i < repeats; ++i) {
+    const FrameTimes times = pipeline.renderFrame();
+    double gpuTotal = 0.0, wallTotal = 0.0;
+    for (const auto& [stage, ms] : times.gpuMs) gpu[stage].push_back(ms), gpuTotal += ms;
+    for (const auto& [stage, ms] : times.wallMs) wall[stage].push_back(ms), wallTotal += ms;
+    gpu["total"].push_back(gpuTotal);
+    wall["total"].push_back(wallTotal);
+  }
+  TimingReport report;
+  report.warmupFrames = warmup;
+  report.repeats = repeats;
+  for (auto& [stage, samples] : gpu) report.gpuMs[stage] = summarize(samples);
+  for (auto& [stage, samples] : wall) report.wallMs[stage] = summarize(samples);
+  return report;
+}
+
+nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
+                             const std::string& outDir) {
+  ShaderCompiler shaders;
+  Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
+                    std::move(experiment.strategies), shaders);
+  const TimingReport timing = measureFrames(pipeline, experiment.warmupFrames, experiment.repeats);
+  std::vector<NamedImage> aovs = pipeline.readOutputs();
+  requireFiniteImages(aovs);
+  const InjectionBalance balance = pipeline.measureInjection();
+
+  const GridGeometry& grid = experiment.settings.grid;
+  const std::string hash = sceneHash(experiment.scene);
+  const double propagationMs = timing.gpuMs.at("propagation").median;
+  const int iterations = pipeline.strategies().propagation->iterations();
+  nlohmann::json manifest = {
+      {"lpvlab_version", LPVLAB_VERSION},
+      {"experiment", experiment.name},
+      {"experiment_file", experiment.file.empty() ? "(built-in default)" : experiment.file},
+      {"created_utc", utcTimestamp()},
+      {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+      {"configuration", experiment.configuration},
+      {"scene", {{"source", experiment.scene.source},
+                 {"hash", hash},
+                 {"triangles", experiment.scene.triangleCount()},
+                 {"lights", experiment.scene.lights.size()}}},
+      {"libraries", versions(context)},
+      {"host", hostInfo()},
+      {"timing", timing.toJson()},
+      {"timing_method", {{"gpu", "GL timestamp queries around each stage"},
+                         {"wall", "steady clock, each stage ended by glFinish"}}},
+      {"propagation_cell_iterations_per_second",
+       propagationMs > 0.0 ? double(grid.cellCount()) * iterations / (propagationMs * 1e-3) : 0.0},
+      {"memory_bytes", pipeline.memoryReport()},
+      {"injection_flux_W", {{"rsm", balance.rsmFlux},
+                            {"grid", balance.gridFlux},
+                            {"outside_grid", balance.rsmFlux - balance.gridFlux}}},
+      {"outputs", {{"exr", "images.exr"}, {"png", "combined.png"},
+                   {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
+                   {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
+
+  std::filesystem::create_directories(outDir);
+  const std::filesystem::path dir(outDir);
+  writeExr((dir / "images.exr").string(), aovs,
+           {{"lpvlab:experiment", experiment.name}, {"lpvlab:scene_hash", hash}});
+  writePng((dir / "combined.png").string(), aovs[2].image, experiment.exposureStops);
+  writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
+  return manifest;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,38 @@
+#pragma once
+// Running an experiment: warm-up frames (llvmpipe compiles shaders on first use), then timed
+// repeats, then the outputs of the last frame written into the run's own directory:
+//   images.exr     every AOV (direct, indirect, combined, albedo, normal, depth) as float channels
+//   combined.png   the combined image, tone-mapped, for looking
+//   manifest.json  the resolved configuration, scene hash, library versions, git revision, host,
+//                  GL renderer, per-stage timings (median and spread over repeats), memory, and
+//                  the injection flux balance
+// Every file is written to a temporary name and renamed; the manifest is written last, so a
+// directory without one is an interrupted run.
+
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/core/stats.h"
+#include "framework/gl/context.h"
+#include "framework/pipeline/experiment.h"
+
+namespace lpvlab {
+
+struct TimingReport {
+  int warmupFrames = 0;
+  int repeats = 0;
+  std::map<std::string, Summary> gpuMs, wallMs;  // per stage, plus "total"
+  nlohmann::json toJson() const;
+};
+
+// Renders `warmup` untimed frames and `repeats` timed ones.
+TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
+
+// Builds the pipeline for `experiment` (on the current GL context) and runs it into `outDir`;
+// returns the manifest. Throws an Error if any output holds NaN or Inf.
+nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
+                             const std::string& outDir);
+
+}  // namespace lpvlab

@@ -1,0 +1,111 @@
+#include "framework/pipeline/scene_gpu.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lpvlab {
+
+namespace {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+
+gl::Texture uploadTexture(const TextureImage& source) {
+  const int levels =
+      1 + int(std::floor(std::log2(double(std::max(source.width, source.height)))));
+  gl::Texture texture(GL_TEXTURE_2D, GL_SRGB8_ALPHA8, source.width, source.height, 1, source.path,
+                  levels);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, source.width, source.height, GL_RGBA,
+                      GL_UNSIGNED_BYTE, source.rgba8.data());
+  glGenerateTextureMipmap(texture.id());
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return texture;
+}
+
+}  // namespace
+
+SceneGpu::SceneGpu(const Scene& scene) {
+  // Group meshes by material so each material is one draw call.
+  std::vector<int> order(scene.meshes.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return scene.meshes[a].material < scene.meshes[b].material;
+  });
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+  for (int meshIndex : order) {
+    const Mesh& mesh = scene.meshes[meshIndex];
+    const auto base = static_cast<std::uint32_t>(vertices.size());
+    for (size_t v = 0; v < mesh.positions.size(); ++v)
+      vertices.push_back({mesh.positions[v], mesh.normals[v],
+                          v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f)});
+    const std::size_t first = indices.size();
+    for (std::uint32_t index : mesh.indices) indices.push_back(base + index);
+    if (!draws_.empty() && draws_.back().material == mesh.material)
+      draws_.back().indexCount += mesh.indices.size();
+    else
+      draws_.push_back({mesh.material, first, mesh.indices.size()});
+  }
+  vertices_ = gl::Buffer(vertices.size() * sizeof(Vertex), "scene vertices", vertices.data());
+  indices_ = gl::Buffer(indices.size() * sizeof(std::uint32_t), "scene indices", indices.data());
+
+  std::vector<GpuMaterial> materials;
+  for (const Material& m : scene.materials) {
+    const float cutoff = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : -1.0f;
+    materials.push_back({glm::vec4(m.baseColor, cutoff),
+                         glm::vec4(m.emission, m.baseColorTexture >= 0 ? 1.0f : 0.0f)});
+    textureOfMaterial_.push_back(m.baseColorTexture);
+  }
+  if (materials.empty()) materials.push_back({glm::vec4(0.8f, 0.8f, 0.8f, -1.0f), glm::vec4(0.0f)});
+  materials_ = gl::Buffer(materials.size() * sizeof(GpuMaterial), "scene materials", materials.data());
+
+  for (const TextureImage& t : scene.textures) textures_.push_back(uploadTexture(t));
+  white_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA8, 1, 1, 1, "white");
+  const std::uint8_t white[4] = {255, 255, 255, 255};
+  glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+
+  glCreateVertexArrays(1, &vertexArray_);
+  glVertexArrayVertexBuffer(vertexArray_, 0, vertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vertexArray_, indices_.id());
+  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal),
+                             offsetof(Vertex, uv)};
+  const GLint sizes[3] = {3, 3, 2};
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glEnableVertexArrayAttrib(vertexArray_, attribute);
+    glVertexArrayAttribFormat(vertexArray_, attribute, sizes[attribute], GL_FLOAT, GL_FALSE,
+                              offsets[attribute]);
+    glVertexArrayAttribBinding(vertexArray_, attribute, 0);
+  }
+}
+
+SceneGpu::~SceneGpu() {
+  if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
+}
+
+void SceneGpu::draw() const {
+  glBindVertexArray(vertexArray_);
+  materials_.bindStorage(0);
+  for (const DrawRange& range : draws_) {
+    glUniform1i(1, range.material);
+    const int texture = range.material < int(textureOfMaterial_.size())
+                            ? textureOfMaterial_[range.material] : -1;
+    glBindTextureUnit(0, texture >= 0 ? textures_[texture].id() : white_.id());
+    glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)));
+  }
+  glBindVertexArray(0);
+}
+
+std::size_t SceneGpu::memoryBytes() const {
+  std::size_t bytes = vertices_.size() + indices_.size() + materials_.size();
+  for (const gl::Texture& t : textures_) bytes += t.bytes() * 4 / 3;  // with mip chain
+  return bytes;
+}
+
+}  // namespace lpvlab

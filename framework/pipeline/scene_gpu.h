@@ -1,0 +1,46 @@
+#pragma once
+// The scene uploaded for rasterisation: one interleaved vertex buffer and one index buffer for
+// all meshes, sorted into one draw range per material, the materials in a storage buffer
+// (binding 0) and each base colour texture as an sRGB, mip-mapped GL texture (unit 0).
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/gl/resources.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+
+struct GpuMaterial {  // std430 mirror of shaders/raster/material.glsl
+  glm::vec4 baseColorCutoff;
+  glm::vec4 emissionTextured;
+};
+
+class SceneGpu {
+public:
+  explicit SceneGpu(const Scene& scene);
+  ~SceneGpu();
+  SceneGpu(const SceneGpu&) = delete;
+  SceneGpu& operator=(const SceneGpu&) = delete;
+
+  // Draws every triangle with the currently bound program, setting uniform location 1
+  // (materialIndex) and texture unit 0 per material.
+  void draw() const;
+  std::size_t memoryBytes() const;
+
+private:
+  struct DrawRange {
+    int material;
+    std::size_t firstIndex;
+    std::size_t indexCount;
+  };
+  GLuint vertexArray_ = 0;
+  gl::Buffer vertices_, indices_, materials_;
+  std::vector<gl::Texture> textures_;     // one per Scene::textures entry
+  gl::Texture white_;                      // bound for untextured materials
+  std::vector<int> textureOfMaterial_;
+  std::vector<DrawRange> draws_;
+};
+
+}  // namespace lpvlab

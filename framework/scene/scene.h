@@ -1,0 +1,86 @@
+#pragma once
+// The scene as every renderer in lpvlab sees it: the LPV pipeline (GL) and the reference path
+// tracer (Embree) read this one description, so they agree on geometry, materials, lights and
+// cameras by construction.
+//
+// Conventions: metres; right-handed, +y up; radiometric units. All geometry is in world space:
+// node transforms are applied and instanced meshes are flattened at load time.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/math/bounds.h"
+
+namespace lpvlab {
+
+// A decoded image (the GL texture made from it is a gl::Texture).
+struct TextureImage {
+  std::string path;               // where it was read from (for messages; the scene hash uses the pixels)
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba8;  // row-major, top row first, sRGB-encoded colour, linear alpha
+};
+
+enum class AlphaMode { Opaque, Mask };
+
+struct Material {
+  std::string name;
+  glm::vec3 baseColor{0.8f};       // linear Lambertian reflectance (albedo), each channel in [0,1]
+  int baseColorTexture = -1;       // index into Scene::textures, multiplied with baseColor; -1: none
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;        // Mask: texels with alpha below this are cut out
+  glm::vec3 emission{0.0f};        // emitted radiance, W/(m^2 sr) (OBJ Ke, glTF emissiveFactor)
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<glm::vec3> positions;  // world space, metres
+  std::vector<glm::vec3> normals;    // world space, unit length, one per position
+  std::vector<glm::vec2> uvs;        // one per position (zero when the file has none); (0,0) is the
+                                     // top-left corner of a texture (glTF's convention)
+  std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from the normal side
+  int material = 0;                  // index into Scene::materials
+};
+
+enum class LightType { Point, Spot, Directional };
+
+struct Light {
+  std::string name;
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f};        // Point, Spot: world space, metres
+  glm::vec3 direction{0, -1, 0};   // Spot, Directional: unit vector the light travels along
+  glm::vec3 color{1.0f};           // linear RGB, multiplied with intensity
+  // Point, Spot: radiant intensity, W/sr. Directional: irradiance on a surface facing the
+  // light, W/m^2. (glTF's KHR_lights_punctual candela and lux are read as these.)
+  float intensity = 1.0f;
+  float innerConeAngle = 0.0f;     // Spot: half-angles in radians, glTF smooth falloff between
+  float outerConeAngle = 0.7853982f;
+};
+
+struct Camera {
+  std::string name;
+  glm::vec3 position{0.0f};
+  glm::vec3 forward{0, 0, -1};     // unit view direction
+  glm::vec3 up{0, 1, 0};           // unit, orthogonal to forward
+  float verticalFov = 0.6861f;     // radians, full angle
+  float nearPlane = 0.01f;         // metres
+  float farPlane = 100.0f;
+};
+
+struct Scene {
+  std::string source;              // file path, or "builtin:cornell_box"
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<TextureImage> textures;
+  std::vector<Light> lights;
+  std::vector<Camera> cameras;
+
+  std::size_t triangleCount() const;
+  Bounds bounds() const;           // of all triangles
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs lpvlab's build, test and analysis dependencies from Debian 12 packages, skipping what
+# is already installed. Needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libglm-dev                       # vectors and matrices (GLSL-compatible)
+  glslang-dev glslang-tools        # GLSL -> SPIR-V at run time
+  libosmesa6-dev libegl-dev        # offscreen GL 4.5 (llvmpipe); EGL for GPUs
+  python3-glad                     # generates the GL loader at build time
+  libopenimageio-dev openimageio-tools  # EXR/PNG images, image metrics
+  libassimp-dev                    # glTF and OBJ scenes
+  libembree-dev libtbb-dev         # reference path tracer ray queries
+  libceres-dev libeigen3-dev       # fitting constants
+  libtomlplusplus-dev              # experiment files
+  nlohmann-json3-dev               # manifests
+  libcli11-dev                     # command line
+  libgtest-dev                     # tests
+  python3-numpy                    # analysis scripts
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The two set-up commands of the README:
+#   scripts/lpvlab.sh run [ARGS...]   install what is missing, build, run `lpvlab run ARGS...`
+#   scripts/lpvlab.sh test            install what is missing, build, run every test (ctest)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+
+command="${1:-}"
+shift || true
+case "$command" in
+  run|test) ;;
+  *) echo "usage: scripts/lpvlab.sh run [ARGS...] | test" >&2; exit 2 ;;
+esac
+
+scripts/install-deps.sh
+jobs="$(nproc)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build -j "$jobs"
+
+if [ "$command" = run ]; then
+  exec build/lpvlab run "$@"
+fi
+cd build
+ctest --output-on-failure -j "$jobs"

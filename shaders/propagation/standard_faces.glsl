@@ -1,0 +1,39 @@
+// Standard LPV propagation between two face-adjacent cubic cells (thesis eq. 4.5-4.9, alg. 6.2),
+// shared by the GLSL kernels and the double-precision C++ reference.
+//
+// Normalisation (lpvlab's, stated because the thesis and public code differ): a cell's
+// coefficients are the radiant intensity I(w) (W/sr) of the light passing through it, as if
+// emitted from its centre. The flux that reaches face f of the neighbour is
+//     Phi_f = Omega_f * max(0, I(w_f))                                            [W]
+// with Omega_f the face's solid angle seen from the source centre and w_f the direction to the
+// face centre. The face re-emits Phi_f into the neighbour as a Lambertian emitter with normal n_f:
+//     I_f(w) = Phi_f / pi * max(0, n_f . w)   ->   coefficients  Phi_f / pi * shCosineLobe(n_f)
+// which integrates back to Phi_f, so the only losses are the SH's own approximation and the
+// clamp. (Thesis eq. 4.9 writes Omega_f / (4 pi): that factor would remove 3/4 of the light at
+// every step; Kaplanyan and Dachsbacher's Omega_f / pi is what conserves flux.) The 30 faces of
+// the 6 neighbours tile the sphere, so a cell's whole flux leaves it each iteration.
+#ifndef LPVLAB_STANDARD_FACES_GLSL
+#define LPVLAB_STANDARD_FACES_GLSL
+#include "../common/sh.glsl"
+
+// Coefficients added to the target by the source's coefficients `c` through one face.
+vec4 propagateThroughFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle) {
+  real flux = solidAngle * max(0.0, shEvaluate(c, toFaceCentre));
+  return (flux / PI) * shCosineLobe(faceNormal);
+}
+
+// Coefficients the source cell `c` sends into its neighbour one cell along the unit axis `d`,
+// through the neighbour's five faces other than the shared one: the far face (normal d, centre
+// at 1.5 d) and four side faces (normal +-s, centre at d + s / 2).
+vec4 propagateToNeighbour(vec4 c, vec3 d, real farSolidAngle, real sideSolidAngle) {
+  vec3 s1 = vec3(abs(d.y) + abs(d.z), abs(d.x), 0.0);
+  vec3 s2 = cross(d, s1);
+  vec4 sum = propagateThroughFace(c, d, d, farSolidAngle);
+  sum += propagateThroughFace(c, normalize(d + 0.5 * s1), s1, sideSolidAngle);
+  sum += propagateThroughFace(c, normalize(d - 0.5 * s1), -s1, sideSolidAngle);
+  sum += propagateThroughFace(c, normalize(d + 0.5 * s2), s2, sideSolidAngle);
+  sum += propagateThroughFace(c, normalize(d - 0.5 * s2), -s2, sideSolidAngle);
+  return sum;
+}
+
+#endif

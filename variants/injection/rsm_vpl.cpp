@@ -1,0 +1,54 @@
+// Injection "rsm_vpl": every reflective-shadow-map texel becomes a virtual point light in the
+// light grid (thesis 4.3, eq. 4.1-4.3; kernel shaders/injection/rsm_vpl.comp).
+//
+// | parameter | type  | default | meaning                                                       |
+// |-----------|-------|---------|---------------------------------------------------------------|
+// | shift     | float | 1.0     | move each VPL this many cells along its normal before         |
+// |           |       |         | choosing its cell (the thesis found half a cell too little)   |
+
+#include "framework/gl/shader_compiler.h"
+#include "framework/math/grid_geometry.h"
+#include "framework/pipeline/frame.h"
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+namespace {
+
+class RsmVplInjection final : public InjectionStrategy {
+public:
+  explicit RsmVplInjection(Params& params)
+      : shiftCells_(params.get<float>("shift", 1.0f, {.min = -4.0f, .max = 4.0f})) {}
+
+  void prepare(ShaderCompiler& shaders, const GridGeometry&, const Requirements&) override {
+    program_ = shaders.compute("injection/rsm_vpl.comp");
+  }
+
+  void inject(Frame& frame) override {
+    const LightMaps& maps = frame.lightMaps;
+    const GridGeometry& grid = frame.lightGrid.geometry;
+    program_.use();
+    glBindTextureUnit(0, maps.rsmPosition.id());
+    glBindTextureUnit(1, maps.rsmNormal.id());
+    glBindTextureUnit(2, maps.rsmFlux.id());
+    frame.lightGrid.current.bindStorage(0);
+    glUniform3fv(0, 1, &grid.origin[0]);
+    glUniform1f(1, grid.cellSize);
+    glUniform3iv(2, 1, &grid.resolution[0]);
+    glUniform1f(3, shiftCells_);
+    glUniform1i(4, maps.rsmResolution);
+    const GLuint groups = GLuint((maps.rsmResolution + 7) / 8);
+    glDispatchCompute(groups, groups, GLuint(maps.views));
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  }
+
+private:
+  float shiftCells_;
+  Program program_;
+};
+
+LPVLAB_REGISTER(InjectionStrategy, "rsm_vpl",
+                "RSM texels as Lambertian VPLs, shifted along their normals (thesis 4.3)",
+                RsmVplInjection);
+
+}  // namespace
+}  // namespace lpvlab
