@@ -18,5 +18,6 @@ struct Options {
 int runCommand(const Options& options);
 int benchCommand(const Options& options);
 int listCommand();
+int infoCommand(const Options& options);  // options.experiment holds the scene
 
 }  // namespace lpvlab::cli

@@ -1,4 +1,5 @@
-// lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`.
+// lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
+// `lpvlab info SCENE`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
 
@@ -30,6 +31,9 @@ int main(int argc, char** argv) {
   bench->add_option("--csv", options.csv, "Also write the table as CSV to this file");
 
   app.add_subcommand("list", "List the strategies of every stage");
+  CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
+  info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
+      ->required();
 
   try {
     app.parse(argc, argv);
@@ -39,6 +43,7 @@ int main(int argc, char** argv) {
   try {
     if (run->parsed()) return lpvlab::cli::runCommand(options);
     if (bench->parsed()) return lpvlab::cli::benchCommand(options);
+    if (info->parsed()) return lpvlab::cli::infoCommand(options);
     return lpvlab::cli::listCommand();
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";

@@ -143,4 +143,17 @@ void writePng(const std::string& path, const Image& rgb, float exposureStops, bo
                   [&](const std::string& file) { writeWithOiio(path, file, spec, bytes.data()); });
 }
 
+float middleGreyExposure(const Image& rgb) {
+  std::vector<float> luminance;
+  for (std::size_t i = 0; i + 2 < rgb.pixels.size(); i += std::size_t(rgb.channels)) {
+    // Rec. 709 luminance of linear RGB.
+    const float y = 0.2126f * rgb.pixels[i] + 0.7152f * rgb.pixels[i + 1] + 0.0722f * rgb.pixels[i + 2];
+    if (y > 0.0f && std::isfinite(y)) luminance.push_back(y);
+  }
+  if (luminance.empty()) return 0.0f;
+  auto middle = luminance.begin() + std::ptrdiff_t(luminance.size() / 2);
+  std::nth_element(luminance.begin(), middle, luminance.end());
+  return std::log2(0.18f / *middle);
+}
+
 }  // namespace lpvlab

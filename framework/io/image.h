@@ -42,4 +42,8 @@ std::vector<NamedImage> readExr(const std::string& path);
 void writePng(const std::string& path, const Image& rgb, float exposureStops = 0.0f,
               bool tonemap = true);
 
+// The exposure (stops) that brings the median luminance of the non-black pixels of an RGB image
+// to middle grey (0.18), so an image is readable whatever the light's units; 0 for a black image.
+float middleGreyExposure(const Image& rgb);
+
 }  // namespace lpvlab

@@ -1,16 +1,33 @@
 #pragma once
 // The GLSL files under shaders/common/ compiled as C++ in double precision. Tests and CPU
 // reference implementations call these, so they check the exact functions the kernels run.
+//
+// A variant's own shared GLSL (e.g. shaders/propagation/standard_faces.glsl) is compiled the
+// same way, after this header, between the same two macros:
+//   LPVLAB_SHARED_GLSL_BEGIN
+//   #include "shaders/propagation/standard_faces.glsl"
+//   LPVLAB_SHARED_GLSL_END
 
 #include <glm/glm.hpp>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wunused-variable"
+// Opens lpvlab::shared's anonymous namespace (one per translation unit, so the GLSL functions get
+// internal linkage) with the GLSL types and functions in scope, and silences the warnings about
+// shared functions a translation unit doesn't call.
+#define LPVLAB_SHARED_GLSL_BEGIN                                  \
+  _Pragma("GCC diagnostic push")                                  \
+  _Pragma("GCC diagnostic ignored \"-Wunused-function\"")         \
+  _Pragma("GCC diagnostic ignored \"-Wunused-variable\"")         \
+  namespace lpvlab::shared {                                      \
+  namespace {
+#define LPVLAB_SHARED_GLSL_END \
+  }                            \
+  }                            \
+  _Pragma("GCC diagnostic pop")
 
-namespace lpvlab::shared {
-namespace {
+// prelude.glsl leaves `real` to C++ when this is defined.
 #define LPVLAB_SHARED_CPP 1
+
+LPVLAB_SHARED_GLSL_BEGIN
 using real = double;
 using vec2 = glm::dvec2;
 using vec3 = glm::dvec3;
@@ -30,9 +47,4 @@ using glm::sqrt;
 #include "shaders/common/sh.glsl"
 #include "shaders/common/grid.glsl"
 #include "shaders/common/lights.glsl"
-
-#undef LPVLAB_SHARED_CPP
-}  // namespace
-}  // namespace lpvlab::shared
-
-#pragma GCC diagnostic pop
+LPVLAB_SHARED_GLSL_END

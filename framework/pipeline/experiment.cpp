@@ -103,7 +103,11 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
 
   Params sceneParams = params.table("scene");
   const std::string sceneRef = sceneParams.get<std::string>("file", "builtin:cornell_box");
-  e.scene = loadSceneByName(resolveScenePath(sceneRef, path));
+  try {
+    e.scene = loadSceneByName(resolveScenePath(sceneRef, path));
+  } catch (const Error& error) {
+    throw Error(sceneParams.where("file") + ": " + error.what());
+  }
   if (sceneParams.get<bool>("replace_lights", false)) e.scene.lights.clear();
   for (Params& lightParams : params.tables("lights")) e.scene.lights.push_back(readLight(lightParams));
 
@@ -113,6 +117,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   Params output = params.table("output");
   e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});
   e.settings.height = output.get<int>("height", 512, {.min = 1, .max = 16384});
+  e.autoExposure = output.get<bool>("auto_exposure", true);
   e.exposureStops = output.get<float>("exposure", 0.0f, {.min = -40.0f, .max = 40.0f});
 
   Params lightMaps = params.table("light_maps");

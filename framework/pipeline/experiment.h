@@ -36,7 +36,10 @@ struct Experiment {
   Strategies strategies;
   int warmupFrames = 2;
   int repeats = 5;
-  float exposureStops = 0.0f;   // for the PNG only
+  // The PNG only (data in the EXR is never scaled): with autoExposure the median lit pixel goes
+  // to middle grey and exposureStops is added to that; without, exposureStops alone.
+  bool autoExposure = true;
+  float exposureStops = 0.0f;
   std::string glBackend = "auto";
   nlohmann::json configuration; // every parameter as resolved (defaults included)
 };

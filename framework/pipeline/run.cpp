@@ -109,7 +109,10 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   const std::filesystem::path dir(outDir);
   writeExr((dir / "images.exr").string(), aovs,
            {{"lpvlab:experiment", experiment.name}, {"lpvlab:scene_hash", hash}});
-  writePng((dir / "combined.png").string(), aovs[2].image, experiment.exposureStops);
+  const float exposure = experiment.exposureStops +
+                         (experiment.autoExposure ? middleGreyExposure(aovs[2].image) : 0.0f);
+  manifest["outputs"]["png_exposure_stops"] = exposure;
+  writePng((dir / "combined.png").string(), aovs[2].image, exposure);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }

@@ -1,0 +1,182 @@
+// The lpvlab executable end to end, as a user runs it: a small run writes its three files (and
+// no temporaries) with a complete manifest; bad input exits non-zero with one error line that
+// names the problem, and writes nothing.
+// The executable is found next to this test binary's folder (build/tests/test_pipeline ->
+// build/lpvlab); build the `lpvlab` target too (a full build does).
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "io/temp_dir.h"
+
+namespace lpvlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path lpvlabExecutable() {
+  return fs::read_symlink("/proc/self/exe").parent_path().parent_path() / "lpvlab";
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+struct Result {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files beside it.
+Result runLpvlab(const std::string& args, const fs::path& workDir, const fs::path& logDir) {
+  const fs::path exe = lpvlabExecutable();
+  Result r;
+  if (!fs::exists(exe)) {
+    ADD_FAILURE() << exe << " does not exist: build the lpvlab target";
+    return r;
+  }
+  const fs::path out = logDir / "stdout.txt", err = logDir / "stderr.txt";
+  const std::string command = "cd " + quoted(workDir.string()) + " && " + quoted(exe.string()) +
+                              " " + args + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
+  const int status = std::system(command.c_str());
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readFile(out);
+  r.err = readFile(err);
+  return r;
+}
+
+const nlohmann::json* find(const nlohmann::json& j, const std::vector<std::string>& path) {
+  const nlohmann::json* node = &j;
+  for (const std::string& key : path) {
+    if (!node->is_object() || !node->contains(key)) return nullptr;
+    node = &(*node)[key];
+  }
+  return node;
+}
+
+std::vector<std::string> entries(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class Cli : public ::testing::Test {
+protected:
+  // work: the current directory of lpvlab (so stray default run directories would show);
+  // logs: its captured output.
+  void SetUp() override {
+    fs::create_directories(dir_.path() / "work");
+    fs::create_directories(dir_.path() / "logs");
+  }
+  fs::path work() const { return dir_.path() / "work"; }
+  fs::path logs() const { return dir_.path() / "logs"; }
+
+  // A failing invocation: exit code 1, one line on stderr, "lpvlab: error: ...", nothing written.
+  std::string expectOneErrorLine(const std::string& args) {
+    const Result r = runLpvlab(args, work(), logs());
+    EXPECT_NE(r.exitCode, 0) << args;
+    const std::vector<std::string> errLines = lines(r.err);
+    EXPECT_EQ(errLines.size(), 1u) << "stderr of lpvlab " << args << ":\n" << r.err;
+    EXPECT_EQ(r.err.rfind("lpvlab: error:", 0), 0u) << r.err;
+    EXPECT_TRUE(entries(work()).empty()) << "lpvlab " << args << " wrote into its directory";
+    return r.err;
+  }
+
+  test::TempDir dir_;
+};
+
+TEST_F(Cli, RunWritesImagesAndACompleteManifest) {
+  const fs::path out = dir_.path() / "run";
+  const Result r = runLpvlab("run --out " + quoted(out.string()) +
+                                 " -s output.width=64 -s output.height=64 -s timing.warmup=0"
+                                 " -s timing.repeats=1 -s grid.resolution=8"
+                                 " -s propagation.iterations=4",
+                             work(), logs());
+  ASSERT_EQ(r.exitCode, 0) << "stdout:\n" << r.out << "\nstderr:\n" << r.err;
+  EXPECT_TRUE(entries(work()).empty()) << "--out was given: nothing in the current directory";
+  EXPECT_EQ(entries(out), (std::vector<std::string>{"combined.png", "images.exr", "manifest.json"}));
+  for (const std::string& name : entries(out)) {
+    EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "leftover temporary " << name;
+    EXPECT_GT(fs::file_size(out / name), 0u) << name;
+  }
+  EXPECT_NE(r.out.find("propagation"), std::string::npos) << "the timing table is printed";
+
+  nlohmann::json manifest;
+  ASSERT_NO_THROW(manifest = nlohmann::json::parse(readFile(out / "manifest.json")));
+  const nlohmann::json* median = find(manifest, {"timing", "gpu_ms", "propagation", "median"});
+  ASSERT_TRUE(median && median->is_number());
+  EXPECT_GE(median->get<double>(), 0.0);
+  const nlohmann::json* iterations = find(manifest, {"configuration", "propagation", "iterations"});
+  ASSERT_TRUE(iterations);
+  EXPECT_EQ(*iterations, 4);
+  const nlohmann::json* resolution = find(manifest, {"configuration", "grid", "resolution"});
+  ASSERT_TRUE(resolution);
+  EXPECT_EQ(*resolution, 8);
+  const nlohmann::json* hash = find(manifest, {"scene", "hash"});
+  ASSERT_TRUE(hash && hash->is_string());
+  EXPECT_FALSE(hash->get<std::string>().empty());
+  const nlohmann::json* revision = find(manifest, {"git_revision"});
+  ASSERT_TRUE(revision && revision->is_string());
+  EXPECT_FALSE(revision->get<std::string>().empty());
+  const nlohmann::json* renderer = find(manifest, {"libraries", "gl_renderer"});
+  ASSERT_TRUE(renderer && renderer->is_string());
+  EXPECT_FALSE(renderer->get<std::string>().empty());
+  const nlohmann::json* memory = find(manifest, {"memory_bytes", "total"});
+  ASSERT_TRUE(memory && memory->is_number());
+  EXPECT_GT(memory->get<double>(), 0.0);
+  const nlohmann::json* rsm = find(manifest, {"injection_flux_W", "rsm"});
+  const nlohmann::json* grid = find(manifest, {"injection_flux_W", "grid"});
+  ASSERT_TRUE(rsm && grid);
+  EXPECT_GT(rsm->get<double>(), 0.0);
+  EXPECT_NEAR(grid->get<double>(), rsm->get<double>(), 1e-4 * rsm->get<double>());
+}
+
+TEST_F(Cli, MissingExperimentFileIsOneErrorLineAndNoOutput) {
+  const std::string err = expectOneErrorLine("run nonexistent.toml");
+  EXPECT_NE(err.find("nonexistent.toml"), std::string::npos) << err;
+  // With --out given, the directory is not created either.
+  const fs::path out = dir_.path() / "never";
+  expectOneErrorLine("run nonexistent.toml --out " + quoted(out.string()));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, UnknownOverrideKeyIsNamed) {
+  const std::string err = expectOneErrorLine("run -s propagation.bogus=1");
+  EXPECT_NE(err.find("propagation.bogus"), std::string::npos) << err;
+}
+
+TEST_F(Cli, UnknownStrategyIsNamedWithTheKnownOnes) {
+  const std::string err = expectOneErrorLine("run -s propagation.type=nope");
+  EXPECT_NE(err.find("nope"), std::string::npos) << err;
+  EXPECT_NE(err.find("standard"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace lpvlab

@@ -1,0 +1,215 @@
+// Experiment files that are wrong in each way loadExperiment must catch: every one throws an
+// lpvlab::Error whose message names the file (with the line where there is one) and the key, and
+// lists the valid choices where there are some. And a valid file using every kind of light loads.
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/core/error.h"
+#include "framework/pipeline/experiment.h"
+#include "io/temp_dir.h"
+
+namespace lpvlab {
+namespace {
+
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+class ExperimentErrors : public ::testing::Test {
+protected:
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = dir_.file(name);
+    std::ofstream(path) << text;
+    return path;
+  }
+  // The message of the Error loadExperiment throws (a failure if it throws nothing or another type).
+  static std::string errorOf(const std::string& path, const std::vector<std::string>& overrides = {}) {
+    try {
+      loadExperiment(path, overrides);
+    } catch (const Error& e) {
+      return e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "not an lpvlab::Error: " << e.what();
+      return "";
+    }
+    ADD_FAILURE() << "no error for " << path;
+    return "";
+  }
+  test::TempDir dir_;
+};
+
+TEST_F(ExperimentErrors, UnknownTopLevelKey) {
+  const std::string path = write("top.toml", "# a typo at the top\n[output]\nwidth = 64\n\nbogus_key = 1\n");
+  const std::string message = errorOf(path);
+  // bogus_key sits under [output] in TOML; a real top-level key must come before any table.
+  EXPECT_TRUE(contains(message, path + ":5"));
+  EXPECT_TRUE(contains(message, "output.bogus_key"));
+
+  const std::string top = write("top2.toml", "bogus_key = 1\n[output]\nwidth = 64\n");
+  const std::string topMessage = errorOf(top);
+  EXPECT_TRUE(contains(topMessage, top + ":1"));
+  EXPECT_TRUE(contains(topMessage, "'bogus_key'"));
+  EXPECT_TRUE(contains(topMessage, "propagation"));  // the valid top-level keys are listed
+  EXPECT_TRUE(contains(topMessage, "grid"));
+}
+
+TEST_F(ExperimentErrors, UnknownKeyInAStrategyTableListsTheValidKeys) {
+  const std::string path = write("typo.toml", "[propagation]\ntype = \"standard\"\niteratoins = 8\n");
+  const std::string message = errorOf(path);
+  EXPECT_TRUE(contains(message, path + ":3"));
+  EXPECT_TRUE(contains(message, "propagation.iteratoins"));
+  EXPECT_TRUE(contains(message, "iterations"));
+  EXPECT_TRUE(contains(message, "type"));
+}
+
+TEST_F(ExperimentErrors, UnknownStrategyListsTheKnownOnes) {
+  const std::string path = write("strategy.toml", "[propagation]\ntype = \"nope\"\n");
+  const std::string message = errorOf(path);
+  EXPECT_TRUE(contains(message, path + ":2"));
+  EXPECT_TRUE(contains(message, "propagation.type"));
+  EXPECT_TRUE(contains(message, "nope"));
+  EXPECT_TRUE(contains(message, "standard"));
+}
+
+TEST_F(ExperimentErrors, OutOfRangeValuesAreErrorsNotClamped) {
+  const std::string iterations = write("iterations.toml", "[propagation]\niterations = -1\n");
+  std::string message = errorOf(iterations);
+  EXPECT_TRUE(contains(message, iterations + ":2"));
+  EXPECT_TRUE(contains(message, "propagation.iterations"));
+  EXPECT_TRUE(contains(message, "-1"));
+
+  const std::string resolution = write("resolution.toml", "[grid]\n\nresolution = 0\n");
+  message = errorOf(resolution);
+  EXPECT_TRUE(contains(message, resolution + ":3"));
+  EXPECT_TRUE(contains(message, "grid.resolution"));
+
+  const std::string cells = write("cells.toml",
+                                  "[grid]\norigin = [0, 0, 0]\ncell_size = 0.1\ncells = [4, 0, 4]\n");
+  message = errorOf(cells);
+  EXPECT_TRUE(contains(message, cells + ":4"));
+  EXPECT_TRUE(contains(message, "grid.cells"));
+}
+
+TEST_F(ExperimentErrors, WrongTypeNamesTheExpectedType) {
+  const std::string path = write("type.toml", "[output]\nwidth = \"big\"\n");
+  const std::string message = errorOf(path);
+  EXPECT_TRUE(contains(message, path + ":2"));
+  EXPECT_TRUE(contains(message, "output.width"));
+  EXPECT_TRUE(contains(message, "integer"));
+}
+
+TEST_F(ExperimentErrors, SyntaxErrorNamesFileAndLine) {
+  const std::string path = write("syntax.toml", "# fine\n[output]\nwidth = 64\nheight = = 3\n");
+  const std::string message = errorOf(path);
+  EXPECT_TRUE(contains(message, path + ":4"));
+}
+
+TEST_F(ExperimentErrors, MissingFiles) {
+  const std::string missing = dir_.file("absent.toml");
+  EXPECT_TRUE(contains(errorOf(missing), missing));
+
+  const std::string path = write("scene.toml", "[scene]\nfile = \"no_such_scene.gltf\"\n");
+  const std::string message = errorOf(path);
+  // Scene paths are relative to the experiment file: the message names the resolved path.
+  EXPECT_TRUE(contains(message, dir_.file("no_such_scene.gltf")));
+  EXPECT_TRUE(contains(message, "no such file"));
+}
+
+TEST_F(ExperimentErrors, OverridesAreCheckedLikeTheFile) {
+  std::string message = errorOf("", {"propagation.bogus=1"});
+  EXPECT_TRUE(contains(message, "propagation.bogus"));
+  EXPECT_TRUE(contains(message, "iterations"));
+
+  message = errorOf("", {"propagation.iterations=-1"});
+  EXPECT_TRUE(contains(message, "propagation.iterations"));
+
+  message = errorOf("", {"propagation.type=nope"});
+  EXPECT_TRUE(contains(message, "nope"));
+  EXPECT_TRUE(contains(message, "standard"));
+
+  message = errorOf("", {"no_equals_sign"});
+  EXPECT_TRUE(contains(message, "no_equals_sign"));
+
+  // An override of a key the file has is checked with the file's name.
+  const std::string path = write("ok.toml", "[propagation]\niterations = 8\n");
+  message = errorOf(path, {"propagation.iterations=\"many\""});
+  EXPECT_TRUE(contains(message, path));
+  EXPECT_TRUE(contains(message, "propagation.iterations"));
+}
+
+TEST_F(ExperimentErrors, AValidFileWithEveryKindOfLightLoads) {
+  const std::string path = write("valid.toml", R"(# The Cornell box with three more lights.
+[scene]
+file = "builtin:cornell_box"   # trailing comments are fine
+
+[[lights]]
+type = "point"
+position = [0.2, 0.4, 0.3]
+intensity = 0.5
+
+[[lights]]
+type = "spot"
+name = "second spot"
+position = [0.3, 0.5, 0.3]
+direction = [0, -2, 0]
+color = [1.0, 0.5, 0.25]
+intensity = 1.5
+outer_cone_deg = 40.0
+inner_cone_deg = 30.0
+
+[[lights]]
+type = "directional"
+direction = [0.1, -1.0, 0.2]
+intensity = 3
+
+[propagation]
+type = "standard"
+iterations = 7
+
+[output]
+width = 96
+height = 80
+)");
+  Experiment e;
+  ASSERT_NO_THROW(e = loadExperiment(path, {"grid.resolution=12"}));
+  EXPECT_EQ(e.name, "valid");
+  EXPECT_EQ(e.file, path);
+  ASSERT_EQ(e.scene.lights.size(), 4u);  // the box's own spot, then the three above
+  const Light& point = e.scene.lights[1];
+  const Light& spot = e.scene.lights[2];
+  const Light& sun = e.scene.lights[3];
+  EXPECT_EQ(point.type, LightType::Point);
+  EXPECT_EQ(point.position, glm::vec3(0.2f, 0.4f, 0.3f));
+  EXPECT_FLOAT_EQ(point.intensity, 0.5f);
+  EXPECT_EQ(spot.type, LightType::Spot);
+  EXPECT_EQ(spot.name, "second spot");
+  EXPECT_EQ(spot.direction, glm::vec3(0, -1, 0));  // normalised
+  EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_NEAR(spot.outerConeAngle, 40.0 * M_PI / 180.0, 1e-6);
+  EXPECT_NEAR(spot.innerConeAngle, 30.0 * M_PI / 180.0, 1e-6);
+  EXPECT_EQ(sun.type, LightType::Directional);
+  EXPECT_NEAR(glm::length(sun.direction), 1.0, 1e-6);
+  EXPECT_FLOAT_EQ(sun.intensity, 3.0f);
+
+  EXPECT_EQ(e.settings.width, 96);
+  EXPECT_EQ(e.settings.height, 80);
+  const glm::ivec3 cells = e.settings.grid.resolution;  // the override, along the longest axis
+  EXPECT_EQ(std::max({cells.x, cells.y, cells.z}), 12);
+  ASSERT_TRUE(e.strategies.propagation);
+  EXPECT_EQ(e.strategies.propagation->iterations(), 7);
+  ASSERT_TRUE(e.strategies.injection);
+  ASSERT_TRUE(e.strategies.rendering);
+  EXPECT_EQ(e.configuration["propagation"]["iterations"], 7);
+  EXPECT_EQ(e.configuration["grid"]["resolution"], 12);
+  EXPECT_EQ(e.configuration["lights"].size(), 3u);
+}
+
+}  // namespace
+}  // namespace lpvlab
