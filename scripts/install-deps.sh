@@ -6,18 +6,15 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libglm-dev                       # vectors and matrices (GLSL-compatible)
-  glslang-dev glslang-tools        # GLSL -> SPIR-V at run time
+  glslang-dev                      # GLSL -> SPIR-V at run time
   libosmesa6-dev libegl-dev        # offscreen GL 4.5 (llvmpipe); EGL for GPUs
   python3-glad                     # generates the GL loader at build time
-  libopenimageio-dev openimageio-tools  # EXR/PNG images, image metrics
+  libopenimageio-dev               # textures, EXR and PNG images
   libassimp-dev                    # glTF and OBJ scenes
-  libembree-dev libtbb-dev         # reference path tracer ray queries
-  libceres-dev libeigen3-dev       # fitting constants
   libtomlplusplus-dev              # experiment files
   nlohmann-json3-dev               # manifests
   libcli11-dev                     # command line
   libgtest-dev                     # tests
-  python3-numpy                    # analysis scripts
 )
 
 missing=()
