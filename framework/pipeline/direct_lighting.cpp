@@ -1,11 +1,8 @@
 #include "framework/pipeline/direct_lighting.h"
 
-namespace lpvlab {
+#include "framework/gl/dispatch.h"
 
-void dispatch2d(int width, int height) {
-  glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
-}
+namespace lpvlab {
 
 DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings)
     : program_(shaders.compute("lighting/direct.comp")), settings_(settings) {}
@@ -24,7 +21,7 @@ void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::T
   glUniform1i(1, maps.shadowResolution);
   glUniform1f(2, settings_.normalOffsetTexels);
   glUniform1f(3, settings_.depthBias);
-  dispatch2d(gbuffer.width, gbuffer.height);
+  dispatchCovering({gbuffer.width, gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
 }
 
 }  // namespace lpvlab

@@ -22,7 +22,5 @@ private:
   ShadowSettings settings_;
 };
 
-// Dispatches enough 8x8 groups to cover width x height.
-void dispatch2d(int width, int height);
 
 }  // namespace lpvlab

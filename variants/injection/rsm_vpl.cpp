@@ -6,6 +6,7 @@
 // | shift     | float | 1.0     | move each VPL this many cells along its normal before         |
 // |           |       |         | choosing its cell (the thesis found half a cell too little)   |
 
+#include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/pipeline/frame.h"
@@ -36,9 +37,8 @@ public:
     glUniform3iv(2, 1, &grid.resolution[0]);
     glUniform1f(3, shiftCells_);
     glUniform1i(4, maps.rsmResolution);
-    const GLuint groups = GLuint((maps.rsmResolution + 7) / 8);
-    glDispatchCompute(groups, groups, GLuint(maps.views));
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views}, {8, 8, 1},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
 private:

@@ -11,6 +11,7 @@
 
 #include <utility>
 
+#include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/solid_angle.h"
@@ -41,12 +42,10 @@ public:
     program_.use();
     glUniform3iv(0, 1, &grid.geometry.resolution[0]);
     grid.accumulated.bindStorage(2);
-    const glm::ivec3 groups = (grid.geometry.resolution + 3) / 4;
     for (int i = 0; i < iterations_; ++i) {
       grid.current.bindStorage(0);
       scratch_.bindStorage(1);
-      glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
     }
   }

@@ -5,6 +5,7 @@
 // |---------------|-------|---------|----------------------------------------------------------|
 // | normal_offset | float | 0.0     | read the grid this many cells along the surface normal   |
 
+#include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/pipeline/frame.h"
@@ -34,8 +35,7 @@ public:
     glUniform1f(1, grid.cellSize);
     glUniform3iv(2, 1, &grid.resolution[0]);
     glUniform1f(3, normalOffsetCells_);
-    glDispatchCompute(GLuint((frame.gbuffer.width + 7) / 8), GLuint((frame.gbuffer.height + 7) / 8), 1);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
   }
 
 private:
