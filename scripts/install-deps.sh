@@ -11,6 +11,7 @@ packages=(
   python3-glad                     # generates the GL loader at build time
   libopenimageio-dev               # textures, EXR and PNG images
   libassimp-dev                    # glTF and OBJ scenes
+  libembree-dev                    # ray queries of the reference path tracer
   libtomlplusplus-dev              # experiment files
   nlohmann-json3-dev               # manifests
   libcli11-dev                     # command line

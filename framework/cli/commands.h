@@ -13,10 +13,15 @@ struct Options {
   std::vector<int> gridSizes{16, 32, 64};
   std::vector<int> iterationCounts{1, 4, 16, 64};
   std::string csv;
+  std::string cacheDir;                   // "" = the default reference cache
+  bool tracer = false;                    // bench the path tracer instead of the LPV pipeline
+  int tracerSamples = 4;                  // samples per pixel per timed pass
 };
 
 int runCommand(const Options& options);
 int benchCommand(const Options& options);
+int referenceCommand(const Options& options);
+int benchTracerCommand(const Options& options);
 int listCommand();
 int infoCommand(const Options& options);  // options.experiment holds the scene
 

@@ -1,7 +1,7 @@
 #include <iostream>
 
 #include "framework/cli/commands.h"
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab::cli {

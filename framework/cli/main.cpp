@@ -1,5 +1,5 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
-// `lpvlab info SCENE`.
+// `lpvlab info SCENE`, `lpvlab reference [FILE]`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
 
@@ -29,6 +29,17 @@ int main(int argc, char** argv) {
   bench->add_option("--grids", options.gridSizes, "Grid resolutions to measure")->delimiter(',');
   bench->add_option("--iterations", options.iterationCounts, "Iteration counts")->delimiter(',');
   bench->add_option("--csv", options.csv, "Also write the table as CSV to this file");
+  bench->add_flag("--tracer", options.tracer,
+                  "Measure the reference path tracer instead: paths/s and rays/s");
+  bench->add_option("--spp", options.tracerSamples, "With --tracer: samples per pixel per pass")
+      ->check(CLI::Range(1, 1 << 20));
+
+  CLI::App* reference = app.add_subcommand(
+      "reference", "Render (or reuse from the cache) the path-traced reference of an experiment");
+  reference->add_option("experiment", options.experiment, "Experiment file (default: the Cornell box)");
+  reference->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
+  reference->add_option("--cache", options.cacheDir,
+                        "Reference cache folder (default: $LPVLAB_CACHE_DIR or .cache/references)");
 
   app.add_subcommand("list", "List the strategies of every stage");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
@@ -42,8 +53,11 @@ int main(int argc, char** argv) {
   }
   try {
     if (run->parsed()) return lpvlab::cli::runCommand(options);
-    if (bench->parsed()) return lpvlab::cli::benchCommand(options);
+    if (bench->parsed())
+      return options.tracer ? lpvlab::cli::benchTracerCommand(options)
+                            : lpvlab::cli::benchCommand(options);
     if (info->parsed()) return lpvlab::cli::infoCommand(options);
+    if (reference->parsed()) return lpvlab::cli::referenceCommand(options);
     return lpvlab::cli::listCommand();
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "framework/cli/commands.h"
-#include "framework/pipeline/run.h"
+#include "framework/experiment/run.h"
 
 namespace lpvlab::cli {
 

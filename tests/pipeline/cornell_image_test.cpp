@@ -16,7 +16,7 @@
 #include <toml++/toml.h>
 
 #include "framework/core/parameters.h"
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"

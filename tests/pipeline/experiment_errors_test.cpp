@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 #include "io/temp_dir.h"
 
 namespace lpvlab {

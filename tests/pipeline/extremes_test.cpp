@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "pipeline_test_support.h"
 

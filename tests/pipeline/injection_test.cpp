@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/scene/scene_loader.h"
 #include "pipeline_test_support.h"

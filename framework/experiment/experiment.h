@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "framework/pipeline/pipeline.h"
+#include "framework/reference/reference_cache.h"
 #include "framework/scene/scene.h"
 
 namespace lpvlab {
@@ -41,6 +42,9 @@ struct Experiment {
   bool autoExposure = true;
   float exposureStops = 0.0f;
   std::string glBackend = "auto";
+  // The path-traced reference of the same scene, camera and output size ([reference] table);
+  // its tracer's sky is the experiment's [sky] radiance.
+  ReferenceRequest reference;
   nlohmann::json configuration; // every parameter as resolved (defaults included)
 };
 

@@ -16,7 +16,7 @@
 
 #include "framework/core/stats.h"
 #include "framework/gl/context.h"
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 
 namespace lpvlab {
 
@@ -26,6 +26,9 @@ struct TimingReport {
   std::map<std::string, Summary> gpuMs, wallMs;  // per stage, plus "total"
   nlohmann::json toJson() const;
 };
+
+// Throws an Error when the experiment asks for light the LPV pipeline cannot render (a sky).
+void requireLpvCanRender(const Experiment& experiment);
 
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);

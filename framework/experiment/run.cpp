@@ -1,4 +1,4 @@
-#include "framework/pipeline/run.h"
+#include "framework/experiment/run.h"
 
 #include <assimp/version.h>
 #include <glslang/build_info.h>
@@ -39,6 +39,12 @@ nlohmann::json versions(const GlContext& context) {
 
 }  // namespace
 
+void requireLpvCanRender(const Experiment& experiment) {
+  if (glm::any(glm::greaterThan(experiment.reference.tracer.skyRadiance, glm::vec3(0.0f))))
+    throw Error(experiment.file + ": key 'sky.radiance': the path tracer renders a sky, but no LPV "
+                "injection strategy injects sky light yet; remove it for LPV runs");
+}
+
 nlohmann::json TimingReport::toJson() const {
   nlohmann::json out = {{"warmup_frames", warmupFrames}, {"repeats", repeats}};
   for (const auto& [stage, summary] : gpuMs) out["gpu_ms"][stage] = summary.toJson();
@@ -67,6 +73,7 @@ TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
 
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir) {
+  requireLpvCanRender(experiment);
   ShaderCompiler shaders;
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
                     std::move(experiment.strategies), shaders);

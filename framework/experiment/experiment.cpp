@@ -1,4 +1,4 @@
-#include "framework/pipeline/experiment.h"
+#include "framework/experiment/experiment.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -142,6 +142,22 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
   e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
+
+  Params sky = params.table("sky");
+  e.reference.tracer.skyRadiance = sky.get<glm::vec3>("radiance", glm::vec3(0.0f), {.min = glm::vec3(0.0f)});
+  Params reference = params.table("reference");
+  e.reference.width = e.settings.width;
+  e.reference.height = e.settings.height;
+  e.reference.target.samples = reference.get<int>("samples", 256, {.min = 0, .max = 1 << 24});
+  e.reference.target.seconds = reference.get<double>("seconds", 0.0, {.min = 0.0});
+  e.reference.target.relativeError = reference.get<double>("relative_error", 0.0, {.min = 0.0, .max = 1.0});
+  if (!e.reference.target.any())
+    throw Error(params.where("reference") + ": no sample budget: set samples, seconds or "
+                "relative_error above 0");
+  e.reference.tracer.seed = std::uint64_t(reference.get<int>("seed", 1, {.min = 0}));
+  e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
+  e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
+  e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
 
   Params injection = params.table("injection");
   e.strategies.injection = Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl");

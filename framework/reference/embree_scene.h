@@ -1,0 +1,78 @@
+#pragma once
+// The scene's triangles in Embree 3: one device, one triangle geometry per non-empty mesh (its
+// geomID indexes the records below), built with high quality for fast traversal. Alpha-masked
+// textured materials get an intersection filter and an occlusion filter that reject hits where
+// the base colour texture's alpha is below the cutoff, so camera, continuation and shadow rays
+// all pass through the cut-out parts.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "framework/reference/material_sampling.h"
+#include "framework/reference/ray_packets.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+
+// Per triangle, precomputed so that a hit needs no square root for its normals.
+struct TriangleFrame {
+  glm::vec3 unitNormal;  // geometric, as wound
+  bool flat;             // all vertex normals are +-unitNormal: the shading normal is geometric
+};
+
+// What a hit on geometry geomID needs; the pointers are into the Scene and the materials, which
+// must outlive the EmbreeScene, and into the EmbreeScene's own triangle frames.
+struct GeometryRecord {
+  const glm::vec3* normals;
+  const glm::vec2* uvs;
+  const std::uint32_t* indices;
+  const TriangleFrame* triangles;
+  const SurfaceMaterial* material;
+  int meshIndex;  // into Scene::meshes
+};
+
+class EmbreeScene {
+public:
+  // Throws an Error for a scene without triangles or with a mesh whose attributes don't match
+  // its positions or whose indices or material are out of range.
+  EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials);
+
+  const GeometryRecord& geometry(unsigned geomID) const { return records_[geomID]; }
+  // Scene-scaled distance for ray offsets and shadow-ray ends: far above float rounding of the
+  // scene's coordinates, far below any feature size (1e-4 of the largest coordinate or extent).
+  float epsilon() const { return epsilon_; }
+
+  // Nearest hits of the packet's active rays (each along origin + t direction, t in
+  // (tnear, tfar)); `coherent` tells Embree the rays are similar (camera rays).
+  void intersect(RayPacket& packet, bool coherent) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect16(packet.valid, scene_.get(), &context, &packet.query);
+  }
+  // Whether anything blocks each active ray of the packet.
+  void occluded(ShadowPacket& packet) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded16(packet.valid, scene_.get(), &context, &packet.query);
+  }
+
+private:
+  struct ReleaseDevice {
+    void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
+  };
+  struct ReleaseScene {
+    void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
+  };
+  std::unique_ptr<RTCDeviceTy, ReleaseDevice> device_;  // declared first: released last
+  std::unique_ptr<RTCSceneTy, ReleaseScene> scene_;
+  std::vector<GeometryRecord> records_;                // by geomID
+  std::vector<std::vector<TriangleFrame>> triangles_;  // by geomID, then primID
+  float epsilon_ = 0.0f;
+};
+
+}  // namespace lpvlab

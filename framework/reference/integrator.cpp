@@ -1,0 +1,240 @@
+#include "framework/reference/integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+#include "framework/reference/hemisphere_sampling.h"
+
+namespace lpvlab {
+
+namespace {
+
+constexpr float kInvPi = float(1.0 / M_PI);
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Adds a contribution with `scatterings` scatterings to the AOVs it belongs to.
+void attribute(PathSample& sample, int scatterings, const glm::vec3& radiance) {
+  if (scatterings <= 1) {
+    sample.direct += radiance;
+    return;
+  }
+  sample.indirect += radiance;
+  if (scatterings == 2) sample.indirect1 += radiance;
+}
+
+float largestChannel(const glm::vec3& c) { return std::max({c.r, c.g, c.b}); }
+
+}  // namespace
+
+Integrator::Integrator(const EmbreeScene& scene, const LightSampler& lights,
+                       const CameraRays& camera, const TracerSettings& settings)
+    : scene_(scene),
+      lights_(lights),
+      camera_(camera),
+      sky_(settings.skyRadiance),
+      hasSky_(glm::any(glm::greaterThan(settings.skyRadiance, glm::vec3(0.0f)))),
+      maxBounces_(settings.maxBounces),
+      rouletteAfter_(settings.rouletteAfter) {
+  if (settings.maxBounces < 0 || settings.rouletteAfter < 0)
+    throw Error("path tracer: maxBounces and rouletteAfter must not be negative");
+  for (int i = 0; i < 3; ++i) {
+    requireFinite(sky_[i], "path tracer", "sky radiance");
+    if (sky_[i] < 0.0f) throw Error("path tracer: sky radiance is negative");
+  }
+}
+
+Integrator::SurfacePoint Integrator::surfaceAt(const RayHit& hit, const glm::vec3& origin,
+                                               const glm::vec3& direction) const {
+  const GeometryRecord& geometry = scene_.geometry(hit.geomID);
+  const TriangleFrame& frame = geometry.triangles[hit.primID];
+  SurfacePoint x;
+  x.geometry = &geometry;
+  // Along the ray: its rounding (~1e-7 of the distance) is far below the offsets of new rays.
+  x.position = origin + hit.distance * direction;
+  x.geometricNormal = frame.unitNormal;
+  x.shadingNormal = frame.unitNormal;
+  x.uv = glm::vec2(0.0f);  // never read for untextured materials
+  if (!frame.flat || geometry.material->texture) {
+    const std::uint32_t* corner = geometry.indices + 3 * std::size_t(hit.primID);
+    const float w = 1.0f - hit.u - hit.v;
+    if (!frame.flat) {
+      const glm::vec3 interpolated = w * geometry.normals[corner[0]] +
+                                     hit.u * geometry.normals[corner[1]] +
+                                     hit.v * geometry.normals[corner[2]];
+      const float length2 = glm::dot(interpolated, interpolated);
+      // Vertex normals that cancel out (or are missing as zeros) leave the geometric normal.
+      if (length2 > 1e-12f && std::isfinite(length2))
+        x.shadingNormal = interpolated / std::sqrt(length2);
+    }
+    if (geometry.material->texture)
+      x.uv = w * geometry.uvs[corner[0]] + hit.u * geometry.uvs[corner[1]] +
+             hit.v * geometry.uvs[corner[2]];
+  }
+  if (glm::dot(x.shadingNormal, direction) > 0.0f) x.shadingNormal = -x.shadingNormal;
+  return x;
+}
+
+void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflectance, int lane,
+                                 int scatterings, SampleRandom& random,
+                                 std::vector<ShadowQuery>& shadows) const {
+  const glm::vec3 n = x.shadingNormal;
+  const float epsilon = scene_.epsilon();
+  auto queue = [&](const glm::vec3& direction, float tFar, const glm::vec3& irradiance) {
+    shadows.push_back(
+        {lane, scatterings, offsetOrigin(x, direction), direction, tFar, reflectance * irradiance});
+  };
+
+  // Every punctual light: E = I falloff cos / r^2 (point, spot) or E_perp cos (directional).
+  for (const PunctualLight& light : lights_.punctual()) {
+    glm::vec3 toLight, arriving;
+    float distance;
+    if (light.type == LightType::Directional) {
+      toLight = -light.direction;
+      distance = kInfinity;
+      arriving = light.radiant;
+    } else {
+      const glm::vec3 offset = light.position - x.position;
+      const float distance2 = glm::dot(offset, offset);
+      if (!(distance2 > 0.0f)) continue;
+      distance = std::sqrt(distance2);
+      toLight = offset / distance;
+      const float falloff = light.type == LightType::Spot
+                                ? float(shared::spotFalloff(glm::dot(light.direction, -toLight),
+                                                            light.cosInner, light.cosOuter))
+                                : 1.0f;
+      arriving = light.radiant * (falloff / distance2);
+    }
+    const float cosine = glm::dot(n, toLight);
+    if (cosine > 0.0f && glm::any(glm::greaterThan(arriving, glm::vec3(0.0f))))
+      queue(toLight, distance, arriving * cosine);
+  }
+
+  // One point on one emissive triangle, MIS-weighted against the BRDF-sampled continuation; the
+  // shadow ray stops short of the light's own triangle.
+  if (lights_.hasEmitters()) {
+    const float pick = random.uniform();
+    const float s = random.uniform();
+    const float t = random.uniform();
+    EmitterSample light;
+    if (lights_.sampleEmitter(x.position, pick, s, t, light)) {
+      const float cosine = glm::dot(n, light.direction);
+      if (cosine > 0.0f)
+        queue(light.direction, light.distance - 2.0f * epsilon,
+              light.radiance * (cosine / light.pdf * powerHeuristic(light.pdf, cosine * kInvPi)));
+    }
+  }
+
+  // The sky from a cosine-weighted direction: L cos / pdf = pi L, MIS weight 1/2 (see the header).
+  if (hasSky_) {
+    const float u1 = random.uniform();
+    const float u2 = random.uniform();
+    const glm::vec3 direction = cosineHemisphere(n, u1, u2);
+    const float pdf = glm::dot(n, direction) * kInvPi;
+    if (pdf > 0.0f) queue(direction, kInfinity, sky_ * (float(M_PI) * powerHeuristic(pdf, pdf)));
+  }
+}
+
+float Integrator::emissionWeight(const SurfacePoint& x, const RayHit& hit,
+                                 const glm::vec3& direction, float brdfPdf) const {
+  if (!lights_.hasEmitters()) return 1.0f;  // emitters of zero area: BRDF sampling only
+  const int emitter = lights_.firstEmitterOfMesh(x.geometry->meshIndex) + int(hit.primID);
+  const float cosAtEmitter = std::abs(glm::dot(x.geometricNormal, direction));
+  return powerHeuristic(brdfPdf, lights_.emitterPdf(emitter, hit.distance, cosAtEmitter));
+}
+
+bool Integrator::scatter(const RayHit& hit, int lane, PathState& path, PathSample& sample,
+                         SampleRandom& random, std::vector<ShadowQuery>& shadows) const {
+  const SurfacePoint x = surfaceAt(hit, path.origin, path.direction);
+  const SurfaceMaterial& material = *x.geometry->material;
+  if (material.emissive) {
+    const float weight =
+        path.scatterings == 0 ? 1.0f : emissionWeight(x, hit, path.direction, path.brdfPdf);
+    attribute(sample, path.scatterings, path.throughput * material.emission * weight);
+  }
+  const glm::vec3 albedo = albedoAt(material, x.uv);
+  if (path.scatterings == 0) {
+    sample.albedo = albedo;
+    sample.normal = x.shadingNormal;
+    sample.depth = camera_.viewDepth(x.position);
+  }
+  const int scatterings = ++path.scatterings;  // light leaving x towards the camera scatters here
+  if (scatterings > maxBounces_ || largestChannel(albedo) <= 0.0f) return false;
+
+  queueNextEvents(x, path.throughput * albedo * kInvPi, lane, scatterings, random, shadows);
+
+  // At the last permitted vertex only emission or sky can still be found by the continuation.
+  if (scatterings == maxBounces_ && !lights_.hasEmitters() && !hasSky_) return false;
+  if (scatterings > rouletteAfter_) {
+    const float survival = std::min(0.95f, largestChannel(albedo));
+    if (random.uniform() >= survival) return false;
+    path.throughput /= survival;
+  }
+  path.throughput *= albedo;  // Lambertian: BRDF cos / pdf = albedo for cosine-weighted directions
+
+  const float u1 = random.uniform();
+  const float u2 = random.uniform();
+  path.direction = cosineHemisphere(x.shadingNormal, u1, u2);
+  path.brdfPdf = glm::dot(x.shadingNormal, path.direction) * kInvPi;
+  path.origin = offsetOrigin(x, path.direction);
+  return true;
+}
+
+void Integrator::resolveShadows(const std::vector<ShadowQuery>& shadows,
+                                PathSample* samples) const {
+  for (std::size_t first = 0; first < shadows.size(); first += kPacketWidth) {
+    const int count = int(std::min<std::size_t>(kPacketWidth, shadows.size() - first));
+    ShadowPacket packet;
+    for (int i = 0; i < count; ++i) {
+      const ShadowQuery& query = shadows[first + i];
+      packet.set(i, query.origin, query.direction, scene_.epsilon(), query.tFar);
+    }
+    scene_.occluded(packet);
+    for (int i = 0; i < count; ++i) {
+      const ShadowQuery& query = shadows[first + i];
+      ++samples[query.lane].rays;
+      if (!packet.occluded(i)) attribute(samples[query.lane], query.scatterings, query.radiance);
+    }
+  }
+}
+
+void Integrator::trace(int lanes, const glm::vec2* positions, SampleRandom* randoms,
+                       PathSample* samples, std::vector<ShadowQuery>& shadows) const {
+  PathState paths[kPacketWidth];
+  RayPacket rays;
+  for (int lane = 0; lane < lanes; ++lane) {
+    const glm::vec3 direction = camera_.direction(positions[lane].x, positions[lane].y);
+    paths[lane] = {camera_.origin(), direction, glm::vec3(1.0f), 0.0f, 0};
+    samples[lane] = PathSample{};
+    rays.set(lane, camera_.origin(), direction, camera_.nearDistance(direction),
+             camera_.farDistance(direction));
+  }
+  // Bounce by bounce: a lane stays active while its path goes on, and gets its next ray in place.
+  for (bool cameraRays = true; rays.any(); cameraRays = false) {
+    scene_.intersect(rays, cameraRays);
+    shadows.clear();
+    for (int lane = 0; lane < lanes; ++lane) {
+      if (!rays.active(lane)) continue;
+      PathState& path = paths[lane];
+      PathSample& sample = samples[lane];
+      ++sample.rays;
+      bool goesOn = false;
+      if (rays.hit(lane)) {
+        goesOn = scatter(rays.hitAt(lane), lane, path, sample, randoms[lane], shadows);
+      } else if (hasSky_ && path.scatterings > 0) {
+        // The camera's own misses are background (zero); later ones see the sky.
+        attribute(sample, path.scatterings,
+                  path.throughput * sky_ * powerHeuristic(path.brdfPdf, path.brdfPdf));
+      }
+      if (goesOn)
+        rays.set(lane, path.origin, path.direction, scene_.epsilon(), kInfinity);
+      else
+        rays.valid[lane] = 0;
+    }
+    resolveShadows(shadows, samples);
+  }
+}
+
+}  // namespace lpvlab

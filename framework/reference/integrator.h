@@ -1,0 +1,116 @@
+#pragma once
+// Paths from the camera through Lambertian surfaces, with next-event estimation at every surface
+// vertex, cosine-weighted BRDF sampling to continue, and Russian roulette. Up to kPacketWidth
+// paths are traced together, bounce by bounce, so their rays go to Embree as packets; each path
+// draws only from its own random stream.
+//
+// Scattering count. A contribution has k scatterings when light changed direction at k surface
+// vertices on its way to the camera: emission seen at the first hit has 0; next-event estimation
+// at vertex k, and emission (or sky) found by the ray leaving vertex k, have k. AOVs:
+//   direct     k = 0 or 1      indirect   k >= 2      indirect1  k = 2
+// Area lights and the sky are reached by two strategies (next-event estimation and the BRDF-sampled
+// continuation), combined with the power heuristic; emission seen from the camera (k = 0) has one
+// strategy only and counts in full. Punctual lights are found by next-event estimation alone.
+//
+// Sky (TracerSettings::skyRadiance, a constant environment): next-event estimation draws a
+// cosine-weighted direction, the same density as BRDF sampling, so the power heuristic weighs
+// each strategy 1/2: two independent visibility samples of the sky per vertex. A camera ray that
+// hits nothing returns zero in every AOV (the LPV pipeline's background is 0), sky or not.
+//
+// Russian roulette: from vertex rouletteAfter + 1 on, a path continues with probability
+// min(0.95, largest albedo channel) and its throughput is divided by that probability (unbiased).
+// maxBounces caps k: vertices beyond it are not lit, and their emission is not counted.
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/reference/camera_rays.h"
+#include "framework/reference/embree_scene.h"
+#include "framework/reference/light_sampler.h"
+#include "framework/reference/path_tracer.h"
+#include "framework/reference/random.h"
+#include "framework/reference/ray_packets.h"
+
+namespace lpvlab {
+
+// One path's estimates (radiance in W/(m^2 sr)) and what its camera ray hit.
+struct PathSample {
+  glm::vec3 direct{0.0f}, indirect{0.0f}, indirect1{0.0f};
+  glm::vec3 albedo{0.0f};  // first hit's; all first-hit values are zero when the camera ray misses
+  glm::vec3 normal{0.0f};  // first hit's shading normal, facing the camera
+  float depth = 0.0f;      // first hit's view depth, m
+  int rays = 0;            // camera, continuation and shadow rays traced
+};
+
+// A shadow ray queued by next-event estimation: its radiance counts if nothing blocks it.
+struct ShadowQuery {
+  int lane;
+  int scatterings;
+  glm::vec3 origin, direction;
+  float tFar;
+  glm::vec3 radiance;  // W/(m^2 sr) towards the camera, throughput and MIS weight included
+};
+
+class Integrator {
+public:
+  // Throws an Error for settings out of range (negative bounce counts, a negative or non-finite
+  // sky). Keeps references to its arguments.
+  Integrator(const EmbreeScene& scene, const LightSampler& lights, const CameraRays& camera,
+             const TracerSettings& settings);
+
+  // Traces `lanes` (<= kPacketWidth) paths, path i through image position positions[i] in pixels
+  // ((0, 0) the image's top-left corner) drawing from randoms[i], into samples[i]. `shadows` is
+  // scratch space, kept by the caller so that tracing allocates nothing once it has grown.
+  void trace(int lanes, const glm::vec2* positions, SampleRandom* randoms, PathSample* samples,
+             std::vector<ShadowQuery>& shadows) const;
+
+private:
+  struct SurfacePoint {
+    glm::vec3 position;
+    glm::vec3 geometricNormal;  // unit, as wound (either side)
+    glm::vec3 shadingNormal;    // unit, turned to the side the ray came from
+    glm::vec2 uv;               // zero for untextured materials (never read)
+    const GeometryRecord* geometry;
+  };
+
+  // A path between bounces.
+  struct PathState {
+    glm::vec3 origin, direction;  // the ray being traced
+    glm::vec3 throughput;         // product of albedo / survival probability so far
+    float brdfPdf;                // density of `direction` (after the camera ray), 1/sr
+    int scatterings;              // surface vertices so far
+  };
+
+  SurfacePoint surfaceAt(const RayHit& hit, const glm::vec3& origin,
+                         const glm::vec3& direction) const;
+  // Start of a ray leaving x along `direction`: moved off the surface along the geometric normal,
+  // to the side the ray leaves on, so it cannot hit x's own triangle again.
+  glm::vec3 offsetOrigin(const SurfacePoint& x, const glm::vec3& direction) const {
+    const float side = glm::dot(x.geometricNormal, direction) > 0.0f ? 1.0f : -1.0f;
+    return x.position + (side * scene_.epsilon()) * x.geometricNormal;
+  }
+  // Everything at the vertex `hit`: emission, first-hit values, next-event shadow rays (queued),
+  // roulette and the continuation direction. False when the path ends there.
+  bool scatter(const RayHit& hit, int lane, PathState& path, PathSample& sample,
+               SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
+  // Queues next-event estimation at x, which reflects `reflectance` = throughput * albedo / pi of
+  // the irradiance it receives towards the camera (area lights and sky MIS-weighted).
+  void queueNextEvents(const SurfacePoint& x, const glm::vec3& reflectance, int lane,
+                       int scatterings, SampleRandom& random,
+                       std::vector<ShadowQuery>& shadows) const;
+  // MIS weight of emission found by a BRDF-sampled ray with direction density `brdfPdf`.
+  float emissionWeight(const SurfacePoint& x, const RayHit& hit, const glm::vec3& direction,
+                       float brdfPdf) const;
+  // Traces the queued shadow rays as packets and adds the unblocked ones' radiance.
+  void resolveShadows(const std::vector<ShadowQuery>& shadows, PathSample* samples) const;
+
+  const EmbreeScene& scene_;
+  const LightSampler& lights_;
+  const CameraRays& camera_;
+  glm::vec3 sky_;
+  bool hasSky_;
+  int maxBounces_, rouletteAfter_;
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,219 @@
+#include "framework/reference/reference_cache.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "framework/core/error.h"
+#include "framework/core/hash.h"
+#include "framework/core/progress.h"
+#include "framework/io/atomic_file.h"
+#include "framework/io/provenance.h"
+#include "framework/scene/scene_loader.h"
+
+namespace lpvlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Bumped whenever the tracer's estimator changes, so old references are not reused.
+constexpr int kTracerVersion = 1;
+constexpr char kStateMagic[8] = {'L', 'P', 'V', 'A', 'C', 'C', '1', '\0'};
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+bool targetMet(const ReferenceTarget& t, std::int64_t samples, double seconds, double error) {
+  return (t.samples > 0 && samples >= t.samples) || (t.seconds > 0.0 && seconds >= t.seconds) ||
+         (t.relativeError > 0.0 && samples > 1 && error <= t.relativeError);
+}
+
+// The fraction of the work done, for the progress bar: the nearest criterion wins. Relative error
+// falls as 1/sqrt(samples), so the samples it needs are samples * (error / target)^2.
+double progressFraction(const ReferenceTarget& t, std::int64_t samples, double seconds, double error) {
+  double f = 0.0;
+  if (t.samples > 0) f = std::max(f, double(samples) / double(t.samples));
+  if (t.seconds > 0.0) f = std::max(f, seconds / t.seconds);
+  if (t.relativeError > 0.0 && samples > 1 && error > 0.0)
+    f = std::max(f, std::min(1.0, (t.relativeError * t.relativeError) / (error * error)));
+  return std::min(f, 1.0);
+}
+
+template <class T>
+void writeRaw(std::ostream& out, const T& v) {
+  out.write(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <class T>
+void readRaw(std::istream& in, T& v) {
+  in.read(reinterpret_cast<char*>(&v), sizeof(T));
+}
+
+void writeDoubles(std::ostream& out, const std::vector<double>& v) {
+  const std::uint64_t n = v.size();
+  writeRaw(out, n);
+  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(n * sizeof(double)));
+}
+void readDoubles(std::istream& in, std::vector<double>& v, std::size_t expected, const std::string& path) {
+  std::uint64_t n = 0;
+  readRaw(in, n);
+  if (!in || n != expected) throw Error(path + ": corrupt reference state (array size)");
+  v.resize(n);
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(double)));
+}
+
+}  // namespace
+
+std::string defaultCacheDir() {
+  if (const char* env = std::getenv("LPVLAB_CACHE_DIR")) return env;
+  return (fs::path(LPVLAB_SOURCE_DIR) / ".cache" / "references").string();
+}
+
+std::string referenceKey(const Scene& scene, const Camera& camera, const ReferenceRequest& r) {
+  Hasher h;
+  h.value(kTracerVersion).text(sceneHash(scene));
+  for (const glm::vec3& v : {camera.position, camera.forward, camera.up}) h.value(v.x).value(v.y).value(v.z);
+  h.value(camera.verticalFov).value(r.width).value(r.height);
+  h.value(r.tracer.seed).value(r.tracer.maxBounces).value(r.tracer.rouletteAfter);
+  h.value(r.tracer.skyRadiance.x).value(r.tracer.skyRadiance.y).value(r.tracer.skyRadiance.z);
+  return h.hex();
+}
+
+void saveAccumulator(const std::string& path, const Accumulator& acc, double seconds) {
+  writeAtomically(path, [&](const std::string& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out.write(kStateMagic, sizeof kStateMagic);
+    writeRaw(out, acc.width);
+    writeRaw(out, acc.height);
+    writeRaw(out, acc.samples);
+    writeRaw(out, seconds);
+    writeDoubles(out, acc.sum);
+    writeDoubles(out, acc.sumSquares);
+    writeDoubles(out, acc.firstHit);
+    if (!out) throw Error(temp + ": cannot write the reference state");
+  });
+}
+
+Accumulator loadAccumulator(const std::string& path, double* seconds) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path + ": cannot open the reference state");
+  char magic[sizeof kStateMagic];
+  in.read(magic, sizeof magic);
+  if (!in || std::memcmp(magic, kStateMagic, sizeof magic) != 0)
+    throw Error(path + ": not an lpvlab reference state");
+  int width = 0, height = 0;
+  std::int64_t samples = 0;
+  double spent = 0.0;
+  readRaw(in, width);
+  readRaw(in, height);
+  readRaw(in, samples);
+  readRaw(in, spent);
+  if (!in || width < 1 || height < 1 || samples < 0)
+    throw Error(path + ": corrupt reference state (header)");
+  Accumulator acc(width, height);
+  acc.samples = samples;
+  readDoubles(in, acc.sum, acc.sum.size(), path);
+  readDoubles(in, acc.sumSquares, acc.sumSquares.size(), path);
+  readDoubles(in, acc.firstHit, acc.firstHit.size(), path);
+  if (!in) throw Error(path + ": corrupt reference state (truncated)");
+  if (seconds) *seconds = spent;
+  return acc;
+}
+
+Reference ensureReference(const Scene& scene, const Camera& camera, const ReferenceRequest& request) {
+  if (!request.target.any())
+    throw Error("reference: no sample budget: set samples, seconds or relative_error above 0");
+  Reference ref;
+  ref.key = referenceKey(scene, camera, request);
+  const fs::path dir = fs::path(request.cacheDir.empty() ? defaultCacheDir() : request.cacheDir) / ref.key;
+  ref.directory = dir.string();
+  fs::create_directories(dir);
+  const std::string statePath = (dir / "state.bin").string();
+
+  Accumulator acc(request.width, request.height);
+  double spent = 0.0;
+  if (fs::exists(statePath)) acc = loadAccumulator(statePath, &spent);
+  const bool complete = fs::exists(dir / "images.exr") && fs::exists(dir / "manifest.json");
+  ref.reused = complete && targetMet(request.target, acc.samples, spent, acc.meanRelativeError());
+
+  std::int64_t paths = 0, rays = 0;
+  double renderSeconds = 0.0;
+  if (!ref.reused) {
+    const PathTracer tracer(scene, camera, request.width, request.height, request.tracer);
+    ProgressBar progress("reference " + ref.key);
+    auto lastCheckpoint = std::chrono::steady_clock::now();
+    double secondsPerSample = 0.0;
+    while (!targetMet(request.target, acc.samples, spent, acc.meanRelativeError())) {
+      // Passes of about a second keep the progress bar and checkpoints current.
+      int count = secondsPerSample > 0.0 ? int(std::clamp(1.0 / secondsPerSample, 1.0, 1024.0)) : 1;
+      if (request.target.samples > 0)
+        count = int(std::min<std::int64_t>(count, std::max<std::int64_t>(1, request.target.samples - acc.samples)));
+      const auto start = std::chrono::steady_clock::now();
+      std::int64_t passRays = 0;
+      paths += tracer.render(acc, count, request.threads, &passRays);
+      rays += passRays;
+      const double passSeconds = secondsSince(start);
+      secondsPerSample = passSeconds / count;
+      spent += passSeconds;
+      renderSeconds += passSeconds;
+      const double error = acc.meanRelativeError();
+      if (request.showProgress) {
+        std::ostringstream detail;
+        detail << acc.samples << " spp, rel. error " << error;
+        progress.update(progressFraction(request.target, acc.samples, spent, error), detail.str());
+      }
+      if (secondsSince(lastCheckpoint) >= request.checkpointSeconds) {
+        saveAccumulator(statePath, acc, spent);
+        lastCheckpoint = std::chrono::steady_clock::now();
+      }
+    }
+    saveAccumulator(statePath, acc, spent);
+    if (request.showProgress)
+      progress.finish(std::to_string(acc.samples) + " spp");
+  }
+
+  ref.aovs = acc.images();
+  ref.samples = acc.samples;
+  ref.seconds = spent;
+  ref.relativeError = acc.meanRelativeError();
+  if (ref.reused) {
+    std::ifstream in(dir / "manifest.json");
+    ref.manifest = nlohmann::json::parse(in, nullptr, false);
+    if (ref.manifest.is_discarded()) throw Error((dir / "manifest.json").string() + ": not valid JSON");
+    return ref;
+  }
+  ref.manifest = {
+      {"key", ref.key},
+      {"scene", {{"source", scene.source}, {"hash", sceneHash(scene)}, {"triangles", scene.triangleCount()}}},
+      {"camera", {{"name", camera.name},
+                  {"position", {camera.position.x, camera.position.y, camera.position.z}},
+                  {"forward", {camera.forward.x, camera.forward.y, camera.forward.z}},
+                  {"vertical_fov_rad", camera.verticalFov}}},
+      {"width", request.width},
+      {"height", request.height},
+      {"tracer", {{"version", kTracerVersion}, {"seed", request.tracer.seed},
+                  {"max_bounces", request.tracer.maxBounces}, {"roulette_after", request.tracer.rouletteAfter},
+                  {"sky_radiance", {request.tracer.skyRadiance.x, request.tracer.skyRadiance.y, request.tracer.skyRadiance.z}}}},
+      {"samples_per_pixel", acc.samples},
+      {"seconds_total", spent},
+      {"relative_error", ref.relativeError},
+      {"last_session", {{"seconds", renderSeconds}, {"paths", paths}, {"rays", rays},
+                        {"paths_per_second", renderSeconds > 0 ? paths / renderSeconds : 0.0},
+                        {"rays_per_second", renderSeconds > 0 ? rays / renderSeconds : 0.0},
+                        {"threads", request.threads > 0 ? request.threads : int(std::thread::hardware_concurrency())}}},
+      {"created_utc", utcTimestamp()},
+      {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+      {"host", hostInfo()}};
+  writeExr((dir / "images.exr").string(), ref.aovs, {{"lpvlab:reference_key", ref.key}});
+  writeTextAtomically((dir / "manifest.json").string(), ref.manifest.dump(2) + "\n");
+  return ref;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,68 @@
+// The statistical image test on a real scene: an independent, noisy rendering of the Cornell box
+// (another seed) against a stored low-noise reference read back from the reference cache, both
+// with their variances. With nothing wrong, the rejections at a Sidak-corrected family level are
+// as few as chance allows; biases of 10% (in the mean z) and 50% (per pixel) are caught.
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "framework/io/image.h"
+#include "framework/reference/reference_cache.h"
+#include "framework/reference/statistical_compare.h"
+#include "framework/scene/scene_loader.h"
+
+namespace lpvlab {
+namespace {
+
+const Image& find(const std::vector<NamedImage>& aovs, const std::string& name) {
+  for (const NamedImage& a : aovs)
+    if (a.name == name) return a.image;
+  throw std::runtime_error("no AOV " + name);
+}
+
+TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
+  const auto cache = std::filesystem::temp_directory_path() / "lpvlab_statistical_image";
+  std::filesystem::remove_all(cache);
+  const Scene scene = makeCornellBox();
+  const Camera& camera = scene.cameras.front();
+  ReferenceRequest request;
+  request.width = request.height = 24;
+  request.target.samples = 4096;
+  request.cacheDir = cache.string();
+  request.showProgress = false;
+  const Reference reference = ensureReference(scene, camera, request);
+  const std::vector<NamedImage> stored = readExr(reference.directory + "/images.exr");
+
+  const PathTracer tracer(scene, camera, 24, 24, TracerSettings{.seed = 2});
+  Accumulator noisy(24, 24);
+  tracer.render(noisy, 512, 0);
+  const std::vector<NamedImage> test = noisy.images();
+
+  for (const char* name : {"combined", "direct", "indirect", "indirect1"}) {
+    const std::string variance = std::string(name) + "_variance";
+    const ComparisonResult result = compareImages(find(test, name), find(test, variance),
+                                                  find(stored, name), find(stored, variance));
+    EXPECT_GT(result.tests, 24 * 24);
+    // Chance alone rejects about alpha = 0.01 tests in all; the spot's cone edge, where few
+    // samples see the lit sliver, lets sample variances run low, so allow a couple.
+    EXPECT_LE(result.rejected, 2) << name << ": expected " << result.expectedRejected
+                                  << ", threshold " << result.threshold << ", max |z| " << result.maxAbsZ;
+    EXPECT_LT(std::abs(result.meanZ), 0.2) << name;
+
+    // Negative controls: a 10% bias is too small for one pixel's noise but shifts the mean z over
+    // the image; a 50% bias is rejected pixel by pixel.
+    for (float bias : {1.1f, 1.5f}) {
+      Image biased = find(test, name);
+      for (float& v : biased.pixels) v *= bias;
+      const ComparisonResult control = compareImages(biased, find(test, variance),
+                                                     find(stored, name), find(stored, variance));
+      if (bias < 1.2f) EXPECT_GT(control.meanZ, 0.2) << name << ": a 10% bias must shift the mean z";
+      else EXPECT_GT(control.rejected, 20) << name << ": a 50% bias must be rejected per pixel";
+    }
+  }
+  std::filesystem::remove_all(cache);
+}
+
+}  // namespace
+}  // namespace lpvlab
