@@ -158,6 +158,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
+  e.compareWithReference = reference.get<bool>("compare", false);
 
   Params injection = params.table("injection");
   e.strategies.injection = Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl");

@@ -45,6 +45,7 @@ struct Experiment {
   // The path-traced reference of the same scene, camera and output size ([reference] table);
   // its tracer's sky is the experiment's [sky] radiance.
   ReferenceRequest reference;
+  bool compareWithReference = false;  // [reference] compare: runs measure their error against it
   nlohmann::json configuration; // every parameter as resolved (defaults included)
 };
 

@@ -4,11 +4,13 @@
 #include <glslang/build_info.h>
 
 #include <cmath>
+#include <optional>
 #include <filesystem>
 
 #include "framework/core/error.h"
 #include "framework/io/atomic_file.h"
 #include "framework/io/provenance.h"
+#include "framework/reference/statistical_compare.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
@@ -35,6 +37,38 @@ nlohmann::json versions(const GlContext& context) {
   v["gl_renderer"] = context.renderer();
   v["gl_version"] = context.version();
   return v;
+}
+
+const Image& aovNamed(const std::vector<NamedImage>& aovs, const std::string& name) {
+  for (const NamedImage& aov : aovs)
+    if (aov.name == name) return aov.image;
+  throw Error("no output named '" + name + "'");
+}
+
+double mean(const Image& image) {
+  double sum = 0.0;
+  for (float v : image.pixels) sum += v;
+  return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
+}
+
+// How the run's outputs compare with the reference's, per pair (LPV output, reference output):
+// the means and their ratio, and a per-pixel z-test against the reference's variance at a
+// Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
+nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref) {
+  nlohmann::json out = {{"key", ref.key}, {"directory", ref.directory}, {"samples", ref.samples},
+                        {"relative_error", ref.relativeError}};
+  for (const auto& [mine, theirs] : {std::pair<std::string, std::string>{"direct", "direct"},
+                                     {"indirect", "indirect1"}}) {
+    const Image& a = aovNamed(run, mine);
+    const Image& b = aovNamed(ref.aovs, theirs);
+    const ComparisonResult z = compareToExact(b, aovNamed(ref.aovs, theirs + "_variance"), a);
+    out["comparison"][mine + "_vs_" + theirs] = {
+        {"mean_run", mean(a)}, {"mean_reference", mean(b)},
+        {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},
+        {"z_tests", z.tests}, {"z_rejected", z.rejected}, {"z_threshold", z.threshold},
+        {"mean_z", z.meanZ}};
+  }
+  return out;
 }
 
 }  // namespace
@@ -74,6 +108,9 @@ TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir) {
   requireLpvCanRender(experiment);
+  std::optional<Reference> reference;
+  if (experiment.compareWithReference)
+    reference = ensureReference(experiment.scene, experiment.camera, experiment.reference);
   ShaderCompiler shaders;
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
                     std::move(experiment.strategies), shaders);
@@ -111,6 +148,8 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"outputs", {{"exr", "images.exr"}, {"png", "combined.png"},
                    {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
                    {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
+
+  if (reference) manifest["reference"] = compareWithReference(aovs, *reference);
 
   std::filesystem::create_directories(outDir);
   const std::filesystem::path dir(outDir);
