@@ -39,12 +39,6 @@ nlohmann::json versions(const GlContext& context) {
   return v;
 }
 
-const Image& aovNamed(const std::vector<NamedImage>& aovs, const std::string& name) {
-  for (const NamedImage& aov : aovs)
-    if (aov.name == name) return aov.image;
-  throw Error("no output named '" + name + "'");
-}
-
 double mean(const Image& image) {
   double sum = 0.0;
   for (float v : image.pixels) sum += v;
@@ -59,9 +53,9 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
                         {"relative_error", ref.relativeError}};
   for (const auto& [mine, theirs] : {std::pair<std::string, std::string>{"direct", "direct"},
                                      {"indirect", "indirect1"}}) {
-    const Image& a = aovNamed(run, mine);
-    const Image& b = aovNamed(ref.aovs, theirs);
-    const ComparisonResult z = compareToExact(b, aovNamed(ref.aovs, theirs + "_variance"), a);
+    const Image& a = findAov(run, mine);
+    const Image& b = findAov(ref.aovs, theirs);
+    const ComparisonResult z = compareToExact(b, findAov(ref.aovs, theirs + "_variance"), a);
     out["comparison"][mine + "_vs_" + theirs] = {
         {"mean_run", mean(a)}, {"mean_reference", mean(b)},
         {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},

@@ -156,4 +156,13 @@ float middleGreyExposure(const Image& rgb) {
   return std::log2(0.18f / *middle);
 }
 
+const Image& findAov(const std::vector<NamedImage>& aovs, const std::string& name) {
+  std::string names;
+  for (const NamedImage& aov : aovs) {
+    if (aov.name == name) return aov.image;
+    names += (names.empty() ? "" : ", ") + aov.name;
+  }
+  throw Error("no output named '" + name + "' (there are: " + names + ")");
+}
+
 }  // namespace lpvlab

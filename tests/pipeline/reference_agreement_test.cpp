@@ -19,12 +19,6 @@
 namespace lpvlab {
 namespace {
 
-const Image& find(const std::vector<NamedImage>& aovs, const std::string& name) {
-  for (const NamedImage& a : aovs)
-    if (a.name == name) return a.image;
-  throw std::runtime_error("no AOV " + name);
-}
-
 double luminance(const Image& image, int x, int y) {
   return 0.2126 * image.at(x, y, 0) + 0.7152 * image.at(x, y, 1) + 0.0722 * image.at(x, y, 2);
 }
@@ -64,10 +58,10 @@ TEST(ReferenceAgreement, RasterisedDirectLightMatchesThePathTracerAwayFromEdges)
 
   // Float rasterisation against a double-precision tracer: allow 1e-4 relative rounding.
   const ComparisonResult result =
-      compareToExact(find(pt, "direct"), find(pt, "direct_variance"), find(lpv, "direct"), 0.01, 1e-4);
-  const Image& depth = find(lpv, "depth");
-  const Image& normal = find(lpv, "normal");
-  const Image& direct = find(lpv, "direct");
+      compareToExact(findAov(pt, "direct"), findAov(pt, "direct_variance"), findAov(lpv, "direct"), 0.01, 1e-4);
+  const Image& depth = findAov(lpv, "depth");
+  const Image& normal = findAov(lpv, "normal");
+  const Image& direct = findAov(lpv, "direct");
 
   int rejectedPixels = 0, rejectedAwayFromEdges = 0;
   for (int y = 0; y < direct.height; ++y)

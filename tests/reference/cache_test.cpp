@@ -31,12 +31,6 @@ protected:
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  const Image& aov(const Reference& r, const std::string& name) {
-    for (const NamedImage& a : r.aovs)
-      if (a.name == name) return a.image;
-    throw std::runtime_error("no AOV " + name);
-  }
-
   fs::path dir_;
   Scene scene_;
   Camera camera_;
@@ -85,7 +79,7 @@ TEST_F(ReferenceCache, ReuseContinuationAndResumeAreDeterministic) {
   const Reference again = ensureReference(scene_, camera_, request_);
   EXPECT_TRUE(again.reused);
   EXPECT_EQ(again.samples, 4);
-  EXPECT_EQ(aov(again, "combined").pixels, aov(first, "combined").pixels);
+  EXPECT_EQ(findAov(again.aovs, "combined").pixels, findAov(first.aovs, "combined").pixels);
 
   // Too few: continued from the cached sums to 8, equal bit for bit to 8 rendered at once.
   request_.target.samples = 8;
@@ -96,14 +90,14 @@ TEST_F(ReferenceCache, ReuseContinuationAndResumeAreDeterministic) {
   fresh.cacheDir = (dir_ / "fresh").string();
   const Reference direct = ensureReference(scene_, camera_, fresh);
   for (const char* name : {"direct", "indirect", "indirect1", "combined", "combined_variance"})
-    EXPECT_EQ(aov(continued, name).pixels, aov(direct, name).pixels) << name;
+    EXPECT_EQ(findAov(continued.aovs, name).pixels, findAov(direct.aovs, name).pixels) << name;
 
   // A saved state without images (an interrupted rendering) is resumed, not restarted.
   fs::remove(fs::path(continued.directory) / "images.exr");
   request_.target.samples = 8;
   const Reference resumed = ensureReference(scene_, camera_, request_);
   EXPECT_EQ(resumed.samples, 8);
-  EXPECT_EQ(aov(resumed, "combined").pixels, aov(direct, "combined").pixels);
+  EXPECT_EQ(findAov(resumed.aovs, "combined").pixels, findAov(direct.aovs, "combined").pixels);
 }
 
 TEST_F(ReferenceCache, StateRoundTripsAndCorruptStateIsNamed) {

@@ -15,12 +15,6 @@
 namespace lpvlab {
 namespace {
 
-const Image& find(const std::vector<NamedImage>& aovs, const std::string& name) {
-  for (const NamedImage& a : aovs)
-    if (a.name == name) return a.image;
-  throw std::runtime_error("no AOV " + name);
-}
-
 TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
   const auto cache = std::filesystem::temp_directory_path() / "lpvlab_statistical_image";
   std::filesystem::remove_all(cache);
@@ -41,8 +35,8 @@ TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
 
   for (const char* name : {"combined", "direct", "indirect", "indirect1"}) {
     const std::string variance = std::string(name) + "_variance";
-    const ComparisonResult result = compareImages(find(test, name), find(test, variance),
-                                                  find(stored, name), find(stored, variance));
+    const ComparisonResult result = compareImages(findAov(test, name), findAov(test, variance),
+                                                  findAov(stored, name), findAov(stored, variance));
     EXPECT_GT(result.tests, 24 * 24);
     // Chance alone rejects about alpha = 0.01 tests in all; the spot's cone edge, where few
     // samples see the lit sliver, lets sample variances run low, so allow a couple.
@@ -53,10 +47,10 @@ TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
     // Negative controls: a 10% bias is too small for one pixel's noise but shifts the mean z over
     // the image; a 50% bias is rejected pixel by pixel.
     for (float bias : {1.1f, 1.5f}) {
-      Image biased = find(test, name);
+      Image biased = findAov(test, name);
       for (float& v : biased.pixels) v *= bias;
-      const ComparisonResult control = compareImages(biased, find(test, variance),
-                                                     find(stored, name), find(stored, variance));
+      const ComparisonResult control = compareImages(biased, findAov(test, variance),
+                                                     findAov(stored, name), findAov(stored, variance));
       if (bias < 1.2f) EXPECT_GT(control.meanZ, 0.2) << name << ": a 10% bias must shift the mean z";
       else EXPECT_GT(control.rejected, 20) << name << ": a 50% bias must be rejected per pixel";
     }
