@@ -45,7 +45,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     : settings_(settings), camera_(camera), strategies_(std::move(strategies)) {
   if (scene.lights.empty())
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
-                "directional); add one under [[lights]] in the experiment");
+                "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
+                "under [[lights]] in the experiment");
   Requirements requirements;
   strategies_.injection->declare(requirements);
   strategies_.propagation->declare(requirements);
