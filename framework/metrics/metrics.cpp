@@ -1,0 +1,71 @@
+#include "framework/metrics/metrics.h"
+
+#include <cmath>
+
+#include "framework/metrics/display.h"
+#include "framework/metrics/flip.h"
+#include "framework/metrics/mask.h"
+#include "framework/metrics/pixel_errors.h"
+#include "framework/metrics/ssim.h"
+
+namespace lpvlab {
+
+namespace {
+
+// Both display images, at the exposure the options choose or the reference implies.
+struct DisplayPair {
+  Image test, reference;
+};
+
+DisplayPair displayPair(const Image& test, const Image& reference, const PixelMask& mask,
+                        const MetricOptions& options) {
+  const double stops = displayExposure(reference, mask, options.exposureStops);
+  return {toDisplay(test, stops), toDisplay(reference, stops)};
+}
+
+Image toImage(const Plane& plane) {
+  Image image(plane.width, plane.height, 1);
+  for (std::size_t p = 0; p < plane.values.size(); ++p) image.pixels[p] = float(plane[p]);
+  return image;
+}
+
+}  // namespace
+
+nlohmann::json MetricSet::toJson() const {
+  return {{"mae", mae},
+          {"rmse", rmse},
+          {"rel_mse", relMse},
+          {"psnr", std::isinf(psnr) ? nlohmann::json("inf") : nlohmann::json(psnr)},
+          {"ssim", ssim},
+          {"flip", flip},
+          {"pixels", pixels}};
+}
+
+MetricSet computeMetrics(const Image& test, const Image& reference, const Image* mask,
+                         const MetricOptions& options) {
+  const PixelMask covered = checkInputs("computeMetrics", test, reference, mask);
+  const PixelErrors errors = pixelErrors(test, reference, covered, options);
+  const DisplayPair display = displayPair(test, reference, covered, options);
+
+  MetricSet metrics;
+  metrics.mae = errors.mae;
+  metrics.rmse = errors.rmse;
+  metrics.relMse = errors.relMse;
+  metrics.psnr = errors.psnr;
+  metrics.ssim = meanSsim(display.test, display.reference, covered);
+  const Plane flip = ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree);
+  double flipSum = 0.0;
+  for (std::size_t p = 0; p < flip.values.size(); ++p) flipSum += flip[p];  // 0 at background
+  metrics.flip = flipSum / double(covered.count);
+  metrics.pixels = covered.count;
+  return metrics;
+}
+
+Image flipErrorMap(const Image& test, const Image& reference, const Image* mask,
+                   const MetricOptions& options) {
+  const PixelMask covered = checkInputs("flipErrorMap", test, reference, mask);
+  const DisplayPair display = displayPair(test, reference, covered, options);
+  return toImage(ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree));
+}
+
+}  // namespace lpvlab
