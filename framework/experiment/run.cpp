@@ -10,6 +10,7 @@
 #include "framework/core/error.h"
 #include "framework/io/atomic_file.h"
 #include "framework/io/provenance.h"
+#include "framework/metrics/metrics.h"
 #include "framework/reference/statistical_compare.h"
 #include "framework/scene/scene_loader.h"
 
@@ -45,10 +46,19 @@ double mean(const Image& image) {
   return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
 }
 
-// How the run's outputs compare with the reference's, per pair (LPV output, reference output):
-// the means and their ratio, and a per-pixel z-test against the reference's variance at a
-// Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
-nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref) {
+// The pixels where the camera sees a surface (depth 0 marks the background).
+Image coverageMask(const Image& depth) {
+  Image mask(depth.width, depth.height, 1);
+  for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = depth.pixels[i] > 0.0f;
+  return mask;
+}
+
+// How the run's outputs compare with the reference's, per pair (LPV output, reference output),
+// over the pixels the camera sees: the metrics (framework/metrics/metrics.h), the means and their
+// ratio, and a per-pixel z-test against the reference's variance at a Sidak-corrected 1% family
+// level (how many pixel channels the reference's noise can't explain).
+nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref,
+                                    const Image& mask) {
   nlohmann::json out = {{"key", ref.key}, {"directory", ref.directory}, {"samples", ref.samples},
                         {"relative_error", ref.relativeError}};
   for (const auto& [mine, theirs] : {std::pair<std::string, std::string>{"direct", "direct"},
@@ -60,7 +70,7 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
         {"mean_run", mean(a)}, {"mean_reference", mean(b)},
         {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},
         {"z_tests", z.tests}, {"z_rejected", z.rejected}, {"z_threshold", z.threshold},
-        {"mean_z", z.meanZ}};
+        {"mean_z", z.meanZ}, {"metrics", computeMetrics(a, b, &mask).toJson()}};
   }
   return out;
 }
@@ -143,7 +153,13 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                    {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
                    {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
 
-  if (reference) manifest["reference"] = compareWithReference(aovs, *reference);
+  std::optional<Image> heatMap;
+  if (reference) {
+    const Image mask = coverageMask(findAov(aovs, "depth"));
+    manifest["reference"] = compareWithReference(aovs, *reference, mask);
+    heatMap = errorHeatMap(findAov(aovs, "indirect"), findAov(reference->aovs, "indirect1"), &mask);
+    manifest["outputs"]["error_map"] = "error_indirect.png (FLIP of indirect against the reference's indirect1)";
+  }
 
   std::filesystem::create_directories(outDir);
   const std::filesystem::path dir(outDir);
@@ -153,6 +169,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                          (experiment.autoExposure ? middleGreyExposure(aovs[2].image) : 0.0f);
   manifest["outputs"]["png_exposure_stops"] = exposure;
   writePng((dir / "combined.png").string(), aovs[2].image, exposure);
+  if (heatMap) writePng((dir / "error_indirect.png").string(), *heatMap, 0.0f, false);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }
