@@ -87,6 +87,7 @@ nlohmann::json TimingReport::toJson() const {
   nlohmann::json out = {{"warmup_frames", warmupFrames}, {"repeats", repeats}};
   for (const auto& [stage, summary] : gpuMs) out["gpu_ms"][stage] = summary.toJson();
   for (const auto& [stage, summary] : wallMs) out["wall_ms"][stage] = summary.toJson();
+  out["samples"] = {{"gpu_ms", gpuSamples}, {"wall_ms", wallSamples}};
   return out;
 }
 
@@ -106,6 +107,8 @@ TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
   report.repeats = repeats;
   for (auto& [stage, samples] : gpu) report.gpuMs[stage] = summarize(samples);
   for (auto& [stage, samples] : wall) report.wallMs[stage] = summarize(samples);
+  report.gpuSamples = std::move(gpu);
+  report.wallSamples = std::move(wall);
   return report;
 }
 

@@ -24,6 +24,7 @@ struct TimingReport {
   int warmupFrames = 0;
   int repeats = 0;
   std::map<std::string, Summary> gpuMs, wallMs;  // per stage, plus "total"
+  std::map<std::string, std::vector<double>> gpuSamples, wallSamples;  // per repeat, in order
   nlohmann::json toJson() const;
 };
 
