@@ -16,6 +16,7 @@ packages=(
   nlohmann-json3-dev               # manifests
   libcli11-dev                     # command line
   libgtest-dev                     # tests
+  python3-numpy python3-pandas python3-matplotlib python3-openimageio  # analysis/ and reports
 )
 
 missing=()

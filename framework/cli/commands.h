@@ -16,12 +16,18 @@ struct Options {
   std::string cacheDir;                   // "" = the default reference cache
   bool tracer = false;                    // bench the path tracer instead of the LPV pipeline
   int tracerSamples = 4;                  // samples per pixel per timed pass
+  int jobs = 1;                           // sweep: configurations run in parallel
+  std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
+  std::string metric;                     // report: the error metric of the speed/accuracy plot
 };
 
 int runCommand(const Options& options);
 int benchCommand(const Options& options);
 int referenceCommand(const Options& options);
 int benchTracerCommand(const Options& options);
+int sweepCommand(const Options& options);    // options.out: the sweep directory
+int summaryCommand(const Options& options);  // options.out: the sweep directory
+int reportCommand(const Options& options);   // options.out: the sweep directory
 int listCommand();
 int infoCommand(const Options& options);  // options.experiment holds the scene
 

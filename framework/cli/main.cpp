@@ -1,5 +1,6 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
-// `lpvlab info SCENE`, `lpvlab reference [FILE]`.
+// `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
+// `lpvlab report DIR`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
 
@@ -41,6 +42,30 @@ int main(int argc, char** argv) {
   reference->add_option("--cache", options.cacheDir,
                         "Reference cache folder (default: $LPVLAB_CACHE_DIR or .cache/references)");
 
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "Run every configuration of an experiment's [sweep] table, each into DIR/<id>/ "
+               "(resumable: complete configurations are skipped), then write DIR/summary.csv");
+  sweep->add_option("experiment", options.experiment, "Experiment file (TOML) with a [sweep] table")
+      ->required();
+  sweep->add_option("-o,--out", options.out, "Sweep directory (default: runs/<file stem>-sweep)");
+  sweep->add_option("-j,--jobs", options.jobs, "Configurations run in parallel (child processes)")
+      ->check(CLI::Range(1, 1024));
+  sweep->add_option("-s,--set", options.overrides,
+                    "Override one parameter of every configuration (repeatable)");
+  sweep->add_option("--emit", options.emit,
+                    "slurm: write DIR/sweep.slurm (a job array) and the configurations, run nothing")
+      ->check(CLI::IsMember({"slurm"}));
+
+  CLI::App* summary = app.add_subcommand(
+      "summary", "Rebuild DIR/summary.csv from the manifests of a sweep directory");
+  summary->add_option("dir", options.out, "Sweep directory")->required();
+
+  CLI::App* report = app.add_subcommand(
+      "report", "Build DIR/report/index.html: speed/accuracy plots, ablation table, images");
+  report->add_option("dir", options.out, "Sweep directory (with summary.csv)")->required();
+  report->add_option("--metric", options.metric,
+                     "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
+
   app.add_subcommand("list", "List the strategies of every stage");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
   info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
@@ -58,6 +83,9 @@ int main(int argc, char** argv) {
                             : lpvlab::cli::benchCommand(options);
     if (info->parsed()) return lpvlab::cli::infoCommand(options);
     if (reference->parsed()) return lpvlab::cli::referenceCommand(options);
+    if (sweep->parsed()) return lpvlab::cli::sweepCommand(options);
+    if (summary->parsed()) return lpvlab::cli::summaryCommand(options);
+    if (report->parsed()) return lpvlab::cli::reportCommand(options);
     return lpvlab::cli::listCommand();
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";

@@ -6,6 +6,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
+#include "framework/experiment/sweep.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
@@ -92,8 +93,14 @@ std::string resolveScenePath(const std::string& reference, const std::string& ex
 }
 
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root = path.empty() ? toml::table{} : readTomlFile(path);
+  // `extends` chains are merged here; a [sweep] table is checked and left to `lpvlab sweep`:
+  // read on its own, a sweep file is its base configuration.
+  toml::table root = path.empty() ? toml::table{} : readExperimentTable(path);
   for (const std::string& assignment : overrides) applyOverride(root, assignment);
+  if (root.contains("sweep")) {
+    expandSweep(root, path.empty() ? "built-in default experiment" : path);
+    root.erase("sweep");
+  }
   const std::string file = path.empty() ? "built-in default experiment" : path;
   Params params(root, file);
 

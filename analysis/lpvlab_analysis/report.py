@@ -1,0 +1,250 @@
+"""Build <out>/index.html for a sweep directory.
+
+The page is self-contained HTML+CSS; images are PNG files referenced by
+relative paths (plots and tone-mapped images in <out>/img/, error maps and
+combined.png linked from the run directories). Sections: sweep overview,
+speed/accuracy plot with Pareto front, ablation table, time per stage and
+error against each swept numeric parameter, trends against the thesis's
+tables (when the sweep varies their parameter), then per configuration the
+reference, result and error map side by side.
+
+Errors the user can fix (missing directory, missing/empty summary.csv)
+raise summary.SummaryError with a message naming the file.
+"""
+import datetime
+import html
+import json
+import os
+import sys
+
+import numpy as np
+
+from . import fsutil
+from . import images
+from . import plots
+from . import summary as S
+from . import tables
+from . import thesis_tables as T
+
+CSS = """
+body{font-family:sans-serif;margin:1.5em;max-width:1400px;color:#222}
+table{border-collapse:collapse;font-size:13px;margin:.5em 0}
+th,td{border:1px solid #ccc;padding:3px 6px}th{background:#f0f0f0}
+td.num{text-align:right;font-variant-numeric:tabular-nums}
+img.plot{max-width:100%;border:1px solid #ddd;margin:4px}
+.trio{display:flex;gap:8px;flex-wrap:wrap}.trio figure{margin:0}
+.trio img{width:256px;image-rendering:pixelated;border:1px solid #ddd}
+figcaption{font-size:12px;color:#555}.note{font-size:12px;color:#666}
+"""
+
+
+def _log(msg):
+    print(f"[report] {msg}", file=sys.stderr, flush=True)
+
+
+def _rel(path, out_dir):
+    return os.path.relpath(path, out_dir).replace(os.sep, "/")
+
+
+def _safe(name):
+    return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in str(name))
+
+
+def resolve_run_dir(sweep_dir, row):
+    """The run directory of a configuration: run_dir from the summary when it
+    exists (absolute, or relative to the sweep dir), else <sweep>/<config_id>."""
+    rd = str(row.get("run_dir", "") or "")
+    cands = []
+    if rd and rd != "nan":
+        cands += [rd] if os.path.isabs(rd) else [os.path.join(sweep_dir, rd), rd]
+    cands.append(os.path.join(sweep_dir, str(row["config_id"])))
+    for c in cands:
+        if os.path.isdir(c):
+            return c
+    return cands[-1]
+
+
+def _read_manifest(run_dir):
+    p = os.path.join(run_dir, "manifest.json")
+    try:
+        with open(p, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def _config_images(agg, sweep_dir, out_dir, use_exr):
+    """Per configuration: list of (caption, relative image path or None, note)."""
+    img_dir = os.path.join(out_dir, "img")
+    ref_cache = {}
+    result = {}
+    n = len(agg)
+    for k, (_, row) in enumerate(agg.iterrows(), 1):
+        _log(f"images {k}/{n}: {row['config_name']}")
+        run_dir = resolve_run_dir(sweep_dir, row)
+        man = _read_manifest(run_dir)
+        trio = []
+        done = False
+        ref_dir = ((man or {}).get("reference") or {}).get("directory")
+        if use_exr and images.have_oiio() and ref_dir:
+            ref_exr = os.path.join(ref_dir, "images.exr")
+            key = os.path.abspath(ref_dir)
+            out_ref = ref_cache.get(key) or os.path.join(img_dir, f"reference_{len(ref_cache)}.png")
+            out_run = os.path.join(img_dir, f"result_{_safe(row['config_id'])}.png")
+            if key not in ref_cache and os.path.exists(out_ref):
+                os.unlink(out_ref)  # stale from an earlier report
+            r = images.tonemapped_pair(os.path.join(run_dir, "images.exr"), ref_exr, out_ref, out_run)
+            if r is not None:
+                ref_cache[key] = out_ref
+                trio.append(("reference indirect1 (path traced)", _rel(out_ref, out_dir)))
+                trio.append(("LPV indirect (same exposure)", _rel(out_run, out_dir)))
+                done = True
+        if not done:
+            comb = os.path.join(run_dir, "combined.png")
+            trio.append(("reference", None))
+            trio.append(("result combined.png", _rel(comb, out_dir) if os.path.isfile(comb) else None))
+        err = os.path.join(run_dir, "error_indirect.png")
+        trio.append(("error map (FLIP, indirect)", _rel(err, out_dir) if os.path.isfile(err) else None))
+        result[row["config_id"]] = (trio, done, run_dir)
+    return result
+
+
+def _thesis_section(agg, img_dir, out_dir):
+    parts = []
+    for tab, rows in T.applicable_tables(agg):
+        measured = T.measured_series(tab, rows)
+        if not measured:
+            continue
+        _log(f"thesis trend table {tab.number}")
+        path, x_ref = plots.trend_vs_thesis(tab, measured, os.path.join(img_dir, f"thesis_{tab.number}.png"))
+        if path is None:
+            continue
+        h = [f"<h3>{html.escape(tab.caption_en)}</h3>",
+             f"<p class='note'>{html.escape(tab.caption)} &mdash; stage <code>{tab.stage}</code>, "
+             f"every series divided by its value at x={x_ref:g}.</p>",
+             f"<img class='plot' src='{_rel(path, out_dir)}'>"]
+        xs = sorted(set(tab.x) | {x for v in measured.values() for x in v[0]})
+        head = "".join(f"<th>{x:g}</th>" for x in xs)
+        h.append(f"<table><thead><tr><th>series (ms; normalised in brackets)</th>{head}</tr></thead><tbody>")
+        allseries = [(f"thesis {k}", tab.x, v) for k, v in tab.columns.items()]
+        allseries += [(k, v[0], v[1]) for k, v in measured.items()]
+        for name, sx, sy in allseries:
+            norm = T.normalise(sx, sy, x_ref) or [float("nan")] * len(sy)
+            d = {x: (y, nv) for x, y, nv in zip(sx, sy, norm)}
+            cells = "".join(
+                f"<td class='num'>{tables.fmt(d[x][0])} ({tables.fmt(d[x][1])})</td>" if x in d else "<td></td>"
+                for x in xs)
+            style = " style='font-weight:bold'" if name.startswith("lpvlab") else ""
+            h.append(f"<tr{style}><td>{html.escape(name)}</td>{cells}</tr>")
+        h.append("</tbody></table>")
+        parts.append("\n".join(h))
+    return parts
+
+
+def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True):
+    """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path."""
+    if not os.path.isdir(sweep_dir):
+        raise S.SummaryError(f"{sweep_dir}: no such sweep directory")
+    summary_path = os.path.join(sweep_dir, "summary.csv")
+    df = S.load_summary(summary_path)
+    out_dir = out_dir or os.path.join(sweep_dir, "report")
+    img_dir = os.path.join(out_dir, "img")
+    os.makedirs(img_dir, exist_ok=True)
+    _log(f"{len(df)} rows from {summary_path}")
+    agg = S.aggregate(df)
+    metric = S.resolve_metric(agg, metric)
+    _log(f"{len(agg)} configurations")
+    swept = S.swept_params(agg)
+    numeric = [p for p in swept if S.is_numeric_param(agg, p)]
+    body = [f"<h1>lpvlab sweep report</h1>",
+            f"<p class='note'>Sweep <code>{html.escape(os.path.abspath(sweep_dir))}</code>; "
+            f"{len(agg)} configurations, {len(df)} runs; generated "
+            f"{datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}. "
+            f"Times are medians over repeats of GPU timestamp-query times.</p>"]
+    if swept:
+        body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
+
+    _log("plot: speed vs accuracy")
+    body.append("<h2>Speed vs accuracy</h2>")
+    p = plots.speed_accuracy(agg, os.path.join(img_dir, "speed_accuracy.png"), metric=metric)
+    if p:
+        body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        body.append("<p class='note'>Circled points and dashed line: Pareto front (no other configuration is both "
+                    f"faster and better in <code>{html.escape(metric)}</code>).</p>")
+    else:
+        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs gpu_ms.total "
+                    "(no reference comparison in this sweep?).</p>")
+
+    body.append("<h2>Ablation table</h2>")
+    body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")
+    body.append(tables.to_html(agg))
+    fsutil.write_text(os.path.join(out_dir, "ablation.md"), tables.to_markdown(agg))
+    body.append("<p class='note'>Markdown version: <a href='ablation.md'>ablation.md</a></p>")
+
+    if numeric:
+        body.append("<h2>Parameters</h2>")
+        body.append("<p class='note'>Each plot varies one parameter; other swept numeric parameters are held at "
+                    "their most common value.</p>")
+    for prm in numeric:
+        _log(f"plot: stages/error vs {prm[6:]}")
+        body.append(f"<h3>{html.escape(prm[6:])}</h3>")
+        p = plots.stage_times(agg, prm, os.path.join(img_dir, f"stages_{_safe(prm[6:])}.png"))
+        if p:
+            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        if prm in ("param.propagation.iterations", "param.grid.resolution") or S.metric_columns(agg):
+            p = plots.error_vs_param(agg, prm, os.path.join(img_dir, f"error_{_safe(prm[6:])}.png"))
+            if p:
+                body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+
+    thesis = _thesis_section(agg, img_dir, out_dir)
+    if thesis:
+        body.append("<h2>Trends vs the thesis</h2>")
+        body.append("<p class='note'>Thesis numbers: ms on the thesis's Intel/AMD machines (tables 8.2-8.7); "
+                    "absolute values are not comparable, shapes are.</p>")
+        body.extend(thesis)
+
+    body.append("<h2>Images per configuration</h2>")
+    imgs = _config_images(agg, sweep_dir, out_dir, use_exr)
+    if not images.have_oiio() or not use_exr:
+        body.append("<p class='note'>OpenImageIO Python binding unavailable: showing each run's combined.png "
+                    "and error map only (no tone-mapped reference).</p>")
+    else:
+        body.append("<p class='note'>Reference (path-traced indirect1) and result (LPV indirect) are tone-mapped "
+                    "from the EXRs with the same exposure, set by the reference.</p>")
+    for _, row in agg.iterrows():
+        trio, _, run_dir = imgs[row["config_id"]]
+        body.append(f"<h3>{html.escape(str(row['config_name']))} <span class='note'>"
+                    f"{html.escape(str(row['variant']))}; {html.escape(str(row['label']))}"
+                    + (f"; <a href='{_rel(run_dir, out_dir)}/manifest.json'>manifest</a>"
+                       if os.path.isfile(os.path.join(run_dir, 'manifest.json')) else "")
+                    + "</span></h3>")
+        figs = []
+        for cap, src in trio:
+            inner = f"<img src='{html.escape(src)}' alt='{html.escape(cap)}'>" if src else "<p class='note'>(not available)</p>"
+            figs.append(f"<figure>{inner}<figcaption>{html.escape(cap)}</figcaption></figure>")
+        body.append("<div class='trio'>" + "".join(figs) + "</div>")
+
+    page = ("<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>lpvlab sweep report</title>"
+            f"<style>{CSS}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
+    index = os.path.join(out_dir, "index.html")
+    fsutil.write_text(index, page)
+    _log(f"wrote {index}")
+    return index
+
+
+def main(argv=None):
+    """CLI: report.py DIR [--metric NAME] [--out DIR/report] [--no-exr]. Exit 2 on unusable input."""
+    import argparse
+    ap = argparse.ArgumentParser(description="Build an HTML report (plots, ablation table, images) of an lpvlab sweep.")
+    ap.add_argument("dir", help="sweep directory containing summary.csv and one run directory per configuration")
+    ap.add_argument("--metric", default=S.DEFAULT_METRIC, help=f"error metric column (default {S.DEFAULT_METRIC})")
+    ap.add_argument("--out", default=None, help="output directory (default DIR/report)")
+    ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")
+    a = ap.parse_args(argv)
+    try:
+        idx = build_report(a.dir, a.out, a.metric, use_exr=not a.no_exr)
+    except S.SummaryError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(idx)
+    return 0

@@ -1,0 +1,190 @@
+"""Load a sweep's summary.csv and aggregate its repeats per configuration.
+
+summary.csv (written by `lpvlab sweep`) has one row per configuration and
+repeat: config_id, config_name, repeat, run_dir, param.<key>..., gpu_ms.<stage>,
+wall_ms.<stage>, memory_bytes, cells, metric.<pair>.<metric>. Timings vary
+between repeats, so they are summarised by their median (robust to the odd
+slow frame); parameters, memory and image metrics describe the configuration
+and are taken from its first row that has them.
+"""
+import math
+import os
+
+import numpy as np
+import pandas as pd
+
+STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "injection",
+          "propagation", "indirect", "total"]
+TYPE_PARAMS = ["param.injection.type", "param.propagation.type", "param.rendering.type"]
+HIGHER_IS_BETTER = {"psnr", "ssim"}
+DEFAULT_METRIC = "metric.indirect_vs_indirect1.rmse"
+
+
+class SummaryError(Exception):
+    """A sweep directory or its summary.csv cannot be used (message names the file)."""
+
+
+def _numeric_prefixes():
+    return ("gpu_ms.", "wall_ms.", "metric.")
+
+
+def load_summary(path):
+    """Read summary.csv into a DataFrame; numeric columns as floats ("inf" -> inf).
+
+    Raises SummaryError naming the file when it is missing, unreadable or has
+    no data rows.
+    """
+    if not os.path.isfile(path):
+        raise SummaryError(f"{path}: no such file (expected the sweep's summary.csv)")
+    try:
+        df = pd.read_csv(path, keep_default_na=True,
+                         dtype={"config_id": str, "config_name": str, "run_dir": str})
+    except pd.errors.EmptyDataError:
+        raise SummaryError(f"{path}: empty summary (no header, no rows)")
+    except Exception as exc:  # parser errors: report the file, not a traceback
+        raise SummaryError(f"{path}: cannot parse CSV: {exc}")
+    if df.empty:
+        raise SummaryError(f"{path}: empty summary (header but no rows)")
+    missing = [c for c in ("config_id", "config_name") if c not in df.columns]
+    if missing:
+        raise SummaryError(f"{path}: missing column(s) {', '.join(missing)}")
+    for c in df.columns:
+        if c.startswith(_numeric_prefixes()) or c in ("memory_bytes", "cells", "repeat"):
+            df[c] = to_float(df[c])
+    # Parameters: numeric where every value is numeric, otherwise strings.
+    for c in param_columns(df):
+        conv = pd.to_numeric(df[c], errors="coerce")
+        if conv.notna().sum() == df[c].notna().sum():
+            df[c] = conv
+        else:
+            df[c] = df[c].astype(str)
+    df["config_id"] = df["config_id"].astype(str)
+    return df
+
+
+def to_float(series):
+    """Convert a column to float, accepting "inf", "+inf", "-inf", "nan" and blanks."""
+    def conv(v):
+        if isinstance(v, (int, float, np.floating, np.integer)):
+            return float(v)
+        if v is None:
+            return math.nan
+        s = str(v).strip().lower()
+        if s in ("", "nan", "none", "null", "-"):
+            return math.nan
+        if s in ("inf", "+inf", "infinity", "+infinity"):
+            return math.inf
+        if s in ("-inf", "-infinity"):
+            return -math.inf
+        try:
+            return float(s)
+        except ValueError:
+            return math.nan
+    return series.map(conv).astype(float)
+
+
+def param_columns(df):
+    return [c for c in df.columns if c.startswith("param.")]
+
+
+def metric_columns(df):
+    """The error metric columns; metric.<pair>.pixels is a pixel count, not an error."""
+    return [c for c in df.columns if c.startswith("metric.") and metric_name(c) != "pixels"]
+
+
+def metric_name(col):
+    """'metric.indirect_vs_indirect1.rmse' -> 'rmse'."""
+    return col.rsplit(".", 1)[-1]
+
+
+def higher_is_better(col):
+    """PSNR and SSIM grow with quality; every other metric is an error."""
+    return metric_name(col) in HIGHER_IS_BETTER
+
+
+def swept_params(df):
+    """param.* columns that take more than one value in the sweep (in column order)."""
+    return [c for c in param_columns(df) if df[c].nunique(dropna=False) > 1]
+
+
+def is_numeric_param(df, col):
+    return pd.api.types.is_numeric_dtype(df[col])
+
+
+def variant_label(row, categorical_swept):
+    """Label of the algorithm variant of a configuration.
+
+    injection/propagation/rendering types joined by '/', followed by the
+    swept parameters that are categorical (strings), e.g.
+    'rsm_vpl/standard/trilinear scene.file=a.obj'. Swept *numeric* parameters
+    (iterations, grid resolution, ...) are left out on purpose: they are the
+    x axes of the plots, and points of one variant share a colour across them.
+    """
+    parts = [str(row.get(c, "?")) for c in TYPE_PARAMS if c in row.index]
+    label = "/".join(parts) if parts else "default"
+    extra = [f"{c[len('param.'):]}={row[c]}" for c in categorical_swept if c not in TYPE_PARAMS]
+    return " ".join([label] + extra)
+
+
+def config_label(row, swept):
+    """Short label naming all swept parameter values of a configuration."""
+    parts = [f"{c[len('param.'):]}={row[c]}" for c in swept]
+    return ", ".join(parts) if parts else str(row.get("config_name", row.get("config_id")))
+
+
+def aggregate(df):
+    """One row per configuration (ordered by first appearance).
+
+    Columns: config_id, config_name, run_dir, repeats, param.*, median
+    gpu_ms.*/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant' and
+    'label'. Timings are medians over repeats (NaN repeats ignored); other
+    columns take the first non-missing value of the configuration.
+    """
+    timing = [c for c in df.columns if c.startswith(("gpu_ms.", "wall_ms."))]
+    rows = []
+    for cid, g in df.groupby("config_id", sort=False):
+        r = {"config_id": cid, "repeats": len(g)}
+        for c in df.columns:
+            if c in ("config_id", "repeat"):
+                continue
+            if c in timing:
+                r[c] = float(np.nanmedian(g[c].values)) if g[c].notna().any() else math.nan
+            else:
+                nn = g[c].dropna()
+                r[c] = nn.iloc[0] if len(nn) else (math.nan if pd.api.types.is_numeric_dtype(g[c]) else "")
+        rows.append(r)
+    agg = pd.DataFrame(rows)
+    for c in param_columns(df):
+        if pd.api.types.is_numeric_dtype(df[c]):
+            agg[c] = pd.to_numeric(agg[c], errors="coerce")
+    swept = swept_params(agg)
+    categorical = [c for c in swept if not is_numeric_param(agg, c)]
+    agg["variant"] = [variant_label(row, categorical) for _, row in agg.iterrows()]
+    agg["label"] = [config_label(row, swept) for _, row in agg.iterrows()]
+    return agg
+
+
+def one_at_a_time(agg, param):
+    """Rows of agg in which every swept numeric parameter other than param sits
+    at its most common value, so that a plot against param is not a mixture
+    of unrelated settings (a one-factor-at-a-time slice of a grid sweep)."""
+    sel = agg
+    for c in swept_params(agg):
+        if c == param or not is_numeric_param(agg, c):
+            continue
+        mode = agg[c].mode(dropna=True)
+        if len(mode):
+            sel = sel[sel[c] == mode.iloc[0]]
+    return sel.sort_values(param)
+
+
+def resolve_metric(agg, name):
+    """Accept a full column name, 'pair.metric' or a bare metric ('rmse' ->
+    the indirect_vs_indirect1 column when present); unknown names are
+    returned unchanged (the plot then says there is no data)."""
+    if name in agg.columns:
+        return name
+    for cand in (f"metric.{name}", f"metric.indirect_vs_indirect1.{name}", f"metric.direct_vs_direct.{name}"):
+        if cand in agg.columns:
+            return cand
+    return name

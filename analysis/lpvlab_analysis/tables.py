@@ -1,0 +1,101 @@
+"""Ablation table: one row per configuration, best value of each metric in bold.
+
+Rows are sorted by median total GPU time (fastest first, ties by name), so
+the table reads as "what each extra millisecond buys". Columns: config_name,
+variant, median total ms, median propagation ms, memory MB, then every
+metric.* column present. For each metric column the best value (lowest
+error, or highest PSNR/SSIM) is bold; ties are all bold.
+"""
+import html
+import math
+
+import pandas as pd
+
+from . import summary as S
+
+
+def ablation_table(agg):
+    """Return (DataFrame of raw values, list of metric column names) in display order."""
+    t = pd.DataFrame({
+        "config_name": agg["config_name"].astype(str),
+        "variant": agg["variant"].astype(str),
+        "total ms": agg.get("gpu_ms.total", pd.Series([math.nan] * len(agg))).astype(float).values,
+        "propagation ms": agg.get("gpu_ms.propagation", pd.Series([math.nan] * len(agg))).astype(float).values,
+        "memory MB": (agg["memory_bytes"].astype(float) / 2**20).values if "memory_bytes" in agg else math.nan,
+    })
+    metrics = S.metric_columns(agg)
+    for m in metrics:
+        t[m] = agg[m].astype(float).values
+    t = t.sort_values(["total ms", "config_name"], na_position="last", kind="mergesort").reset_index(drop=True)
+    return t, metrics
+
+
+def best_mask(values, higher_better):
+    """Booleans marking the best finite-or-inf value(s) of a column (NaN never best)."""
+    vals = [float(v) for v in values]
+    cand = [v for v in vals if not math.isnan(v)]
+    if not cand:
+        return [False] * len(vals)
+    best = max(cand) if higher_better else min(cand)
+    return [(not math.isnan(v)) and v == best for v in vals]
+
+
+def fmt(v):
+    """Numbers with 4 significant digits; inf as 'inf'; NaN as '-'."""
+    if isinstance(v, str):
+        return v
+    v = float(v)
+    if math.isnan(v):
+        return "-"
+    if math.isinf(v):
+        return "inf" if v > 0 else "-inf"
+    return f"{v:.4g}"
+
+
+def short_metric(col):
+    """'metric.indirect_vs_indirect1.rmse' -> 'indirect rmse' for headers."""
+    parts = col.split(".")
+    pair = parts[1].split("_vs_")[0] if len(parts) > 2 else col
+    return f"{pair} {parts[-1]}"
+
+
+def _cells(t, metrics):
+    bold = {m: best_mask(t[m].values, S.higher_is_better(m)) for m in metrics}
+    for i in range(len(t)):
+        row = []
+        for c in t.columns:
+            s = fmt(t.iloc[i][c])
+            row.append((s, c in bold and bold[c][i]))
+        yield row
+
+
+def to_markdown(agg):
+    """Markdown ablation table (GitHub pipe syntax), best metric values in **bold**."""
+    t, metrics = ablation_table(agg)
+    headers = [short_metric(c) if c in metrics else c for c in t.columns]
+    lines = ["| " + " | ".join(headers) + " |",
+             "|" + "|".join("---" if c in ("config_name", "variant") else "---:" for c in t.columns) + "|"]
+    for row in _cells(t, metrics):
+        cells = [(f"**{s}**" if b else s).replace("|", "\\|") for s, b in row]
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def to_html(agg):
+    """The same table as an HTML <table>, best metric values in <b>."""
+    t, metrics = ablation_table(agg)
+    out = ['<table class="ablation">', "<thead><tr>"]
+    for c in t.columns:
+        name = short_metric(c) if c in metrics else c
+        arrow = (" &uarr;" if S.higher_is_better(c) else " &darr;") if c in metrics else ""
+        out.append(f"<th title=\"{html.escape(c)}\">{html.escape(name)}{arrow}</th>")
+    out.append("</tr></thead><tbody>")
+    for row in _cells(t, metrics):
+        tds = []
+        for (s, b), c in zip(row, t.columns):
+            s = html.escape(s)
+            cls = "" if c in ("config_name", "variant") else ' class="num"'
+            tds.append(f"<td{cls}>{'<b>' + s + '</b>' if b else s}</td>")
+        out.append("<tr>" + "".join(tds) + "</tr>")
+    out.append("</tbody></table>")
+    return "\n".join(out)

@@ -1,0 +1,86 @@
+"""End-to-end report on a synthetic sweep dir, and CLI errors (exit code 2)."""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from lpvlab_analysis import images, report
+from tests.fixtures import make_sweep
+
+CLI = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "report.py")
+
+
+def _srcs(index):
+    with open(index) as f:
+        page = f.read()
+    return page, re.findall(r"(?:src|href)='([^']+)'", page)
+
+
+class ReportTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = make_sweep(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def _check(self, index):
+        self.assertTrue(os.path.isfile(index))
+        page, refs = _srcs(index)
+        self.assertTrue(refs)
+        base = os.path.dirname(index)
+        for r in refs:
+            self.assertTrue(os.path.exists(os.path.join(base, r)), r)
+        self.assertIn("speed_accuracy.png", page)
+        self.assertIn("<table class=\"ablation\">", page)
+        self.assertIn("Trends vs the thesis", page)
+        self.assertIn("thesis_8.5.png", page)
+        self.assertIn("thesis_8.6.png", page)
+        self.assertIn("stages_propagation.iterations.png", page)
+        self.assertIn("error_propagation.iterations.png", page)
+        self.assertNotIn(".tmp", "".join(os.listdir(os.path.join(base, "img"))))
+        return page
+
+    def test_end_to_end(self):
+        index = report.build_report(self.dir)
+        page = self._check(index)
+        self.assertEqual(index, os.path.join(self.dir, "report", "index.html"))
+        if images.have_oiio():
+            self.assertIn("img/reference_0.png", page)
+            self.assertIn("img/result_000.png", page)
+        self.assertIn("../000/error_indirect.png", page)
+
+    def test_png_fallback_and_cli(self):
+        out = os.path.join(self.tmp.name, "elsewhere")
+        r = subprocess.run([sys.executable, CLI, self.dir, "--out", out, "--no-exr",
+                            "--metric", "metric.indirect_vs_indirect1.flip"], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("[report]", r.stderr)
+        page = self._check(os.path.join(out, "index.html"))
+        self.assertIn("combined.png", page)
+        self.assertNotIn("reference_0.png", page)
+
+    def test_cli_errors(self):
+        for d, needle in [(os.path.join(self.tmp.name, "missing"), "missing"),
+                          (os.path.join(self.tmp.name, "000"), "summary.csv")]:
+            r = subprocess.run([sys.executable, CLI, d], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertIn(needle, r.stderr)
+            self.assertNotIn("Traceback", r.stderr)
+        empty = os.path.join(self.tmp.name, "empty")
+        os.makedirs(empty)
+        open(os.path.join(empty, "summary.csv"), "w").close()
+        r = subprocess.run([sys.executable, CLI, empty], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn(os.path.join(empty, "summary.csv"), r.stderr)
+
+    def test_no_metrics(self):
+        d = make_sweep(os.path.join(self.tmp.name, "nometrics"), with_exr=False, with_metrics=False)
+        page, refs = _srcs(report.build_report(d))
+        self.assertIn("No data for", page)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,62 @@
+"""Loading summary.csv ("inf", errors) and per-configuration medians."""
+import math
+import os
+import tempfile
+import unittest
+
+from lpvlab_analysis import summary as S
+from tests.fixtures import make_sweep
+
+
+class SummaryTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = make_sweep(self.tmp.name, with_exr=False)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_load_inf(self):
+        df = S.load_summary(os.path.join(self.dir, "summary.csv"))
+        self.assertTrue(math.isinf(df["metric.direct_vs_direct.psnr"].iloc[0]))
+        self.assertEqual(df["param.propagation.iterations"].dtype.kind, "i")
+
+    def test_medians(self):
+        # three repeats with an outlier: median ignores it
+        p = os.path.join(self.dir, "s.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,param.propagation.type,gpu_ms.total,memory_bytes,metric.indirect_vs_indirect1.rmse\n")
+            f.write("a,A,0,a,standard,1.0,10,0.5\na,A,1,a,standard,100.0,10,0.5\na,A,2,a,standard,3.0,10,0.5\n")
+            f.write("b,B,0,b,occlusion,4.0,20,inf\nb,B,1,b,occlusion,6.0,20,inf\n")
+        agg = S.aggregate(S.load_summary(p))
+        self.assertEqual(list(agg["config_id"]), ["a", "b"])
+        self.assertEqual(list(agg["gpu_ms.total"]), [3.0, 5.0])
+        self.assertEqual(list(agg["repeats"]), [3, 2])
+        self.assertTrue(math.isinf(agg["metric.indirect_vs_indirect1.rmse"].iloc[1]))
+        self.assertEqual(list(agg["variant"]), ["standard", "occlusion"])
+
+    def test_fixture_aggregate(self):
+        agg = S.aggregate(S.load_summary(os.path.join(self.dir, "summary.csv")))
+        self.assertEqual(len(agg), 6)
+        # propagation at rep 0 = it*f, rep 1 = it*f+1 -> median it*f+0.5
+        self.assertAlmostEqual(agg["gpu_ms.propagation"].iloc[2], 16.5)
+        self.assertEqual(S.swept_params(agg), ["param.propagation.type", "param.propagation.iterations"])
+        self.assertEqual(agg["variant"].iloc[0], "rsm_vpl/standard/trilinear")
+        self.assertIn("propagation.iterations=4", agg["label"].iloc[1])
+
+    def test_errors(self):
+        with self.assertRaises(S.SummaryError) as cm:
+            S.load_summary(os.path.join(self.dir, "nope.csv"))
+        self.assertIn("nope.csv", str(cm.exception))
+        empty = os.path.join(self.dir, "empty.csv")
+        open(empty, "w").close()
+        with self.assertRaises(S.SummaryError):
+            S.load_summary(empty)
+        with open(empty, "w") as f:
+            f.write("config_id,config_name,repeat\n")
+        with self.assertRaisesRegex(S.SummaryError, "empty.csv"):
+            S.load_summary(empty)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,211 @@
+// `lpvlab sweep FILE`: every configuration of FILE's [sweep] table runs as `lpvlab run` in a child
+// process (its own GL context) into DIR/<id>/, from the resolved DIR/configs/<id>.toml; a
+// configuration whose directory holds a manifest.json is complete and skipped, one without is
+// removed and redone. `lpvlab summary DIR` rebuilds DIR/summary.csv.
+
+#include <fcntl.h>
+#include <cerrno>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/cli/commands.h"
+#include "framework/core/error.h"
+#include "framework/core/parameters.h"
+#include "framework/core/progress.h"
+#include "framework/experiment/experiment.h"
+#include "framework/experiment/sweep.h"
+#include "framework/io/atomic_file.h"
+
+namespace lpvlab::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string shellQuoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string lastLine(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+// Starts `exe run CONFIG --out RUNDIR` with stdout and stderr into RUNDIR/error.log; the child
+// dies with this process (so a killed sweep leaves no orphan writing into its directory).
+pid_t startRun(const std::string& exe, const std::string& config, const std::string& runDir) {
+  const std::string log = (fs::path(runDir) / "error.log").string();
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw Error("sweep: fork failed");
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, 1);
+      dup2(fd, 2);
+      close(fd);
+    }
+    const int devnull = open("/dev/null", O_RDONLY);
+    if (devnull >= 0) dup2(devnull, 0);
+    std::vector<std::string> args = {exe, "run", config, "--out", runDir};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(exe.c_str(), argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+void writeSlurm(const fs::path& dir, const std::string& exe, const std::string& stem,
+                const std::vector<SweepConfiguration>& configs) {
+  const std::string d = fs::absolute(dir).lexically_normal().string();
+  std::ostringstream s;
+  s << "#!/bin/bash\n"
+    << "# lpvlab sweep of " << stem << ": task i runs configuration i (unless complete).\n"
+    << "# Submit: sbatch " << d << "/sweep.slurm   then: lpvlab summary " << d << "\n"
+    << "#SBATCH --job-name=" << stem << "-sweep\n"
+    << "#SBATCH --array=0-" << configs.size() - 1 << "\n"
+    << "#SBATCH --output=" << d << "/logs/%A_%a.out\n"
+    << "set -euo pipefail\n"
+    << "DIR=" << shellQuoted(d) << "\n"
+    << "LPVLAB=" << shellQuoted(exe) << "\n"
+    << "IDS=(";
+  for (std::size_t i = 0; i < configs.size(); ++i) s << (i ? " " : "") << configs[i].id;
+  s << ")\n"
+    << "ID=${IDS[$SLURM_ARRAY_TASK_ID]}\n"
+    << "if [ -f \"$DIR/$ID/manifest.json\" ]; then echo \"$ID complete, skipped\"; exit 0; fi\n"
+    << "rm -rf \"$DIR/$ID\"\n"
+    << "exec \"$LPVLAB\" run \"$DIR/configs/$ID.toml\" --out \"$DIR/$ID\"\n";
+  writeTextAtomically((dir / "sweep.slurm").string(), s.str());
+  fs::create_directories(dir / "logs");
+}
+
+}  // namespace
+
+int sweepCommand(const Options& options) {
+  const std::string file = options.experiment;
+  const std::string stem = fs::path(file).stem().string();
+  const fs::path dir = options.out.empty() ? fs::path("runs") / (stem + "-sweep") : fs::path(options.out);
+  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+
+  toml::table root = readExperimentTable(file);
+  for (const std::string& o : options.overrides) applyOverride(root, o);
+  const std::vector<SweepConfiguration> configs = expandSweep(root, file, options.overrides);
+  const std::vector<std::string> keys = sweptKeys(root, file);
+
+  fs::create_directories(dir / "configs");
+  nlohmann::json index = {{"experiment_file", fs::absolute(file).lexically_normal().string()},
+                          {"overrides", options.overrides},
+                          {"swept_keys", keys},
+                          {"configurations", nlohmann::json::array()}};
+  for (const SweepConfiguration& c : configs) {
+    writeTextAtomically((dir / "configs" / (c.id + ".toml")).string(), configurationToml(file, c));
+    nlohmann::json values = nlohmann::json::object();
+    for (const auto& [k, v] : c.values) values[k] = v;
+    index["configurations"].push_back(
+        {{"id", c.id}, {"name", c.name}, {"overrides", c.overrides}, {"values", values}});
+  }
+  writeTextAtomically((dir / "sweep.json").string(), index.dump(2) + "\n");
+
+  if (options.emit == "slurm") {
+    writeSlurm(dir, exe, stem, configs);
+    std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size()
+              << " tasks) and " << (dir / "configs").string() << "/<id>.toml\n"
+              << "submit: sbatch " << (dir / "sweep.slurm").string() << "\n"
+              << "then:   lpvlab summary " << dir.string() << "\n";
+    return 0;
+  }
+
+  std::vector<const SweepConfiguration*> pending;
+  for (const SweepConfiguration& c : configs)
+    if (!fs::exists(dir / c.id / "manifest.json")) pending.push_back(&c);
+  std::cerr << "lpvlab: sweep " << stem << ": " << configs.size() << " configurations, "
+            << configs.size() - pending.size() << " complete, " << pending.size() << " to run, "
+            << options.jobs << " at a time, into " << dir.string() << "\n";
+  // Unknown keys and bad values of the base and of every swept key show in any configuration:
+  // check one before starting anything.
+  if (!pending.empty()) loadExperiment((dir / "configs" / (pending[0]->id + ".toml")).string());
+
+  ProgressBar progress("sweep");
+  std::map<pid_t, const SweepConfiguration*> running;
+  std::vector<const SweepConfiguration*> failed;
+  std::size_t next = 0, done = 0;
+  auto detail = [&] {
+    return std::to_string(done) + "/" + std::to_string(pending.size()) + " configurations" +
+           (failed.empty() ? "" : ", " + std::to_string(failed.size()) + " failed");
+  };
+  while (next < pending.size() || !running.empty()) {
+    while (next < pending.size() && int(running.size()) < options.jobs) {
+      const SweepConfiguration& c = *pending[next++];
+      const fs::path runDir = dir / c.id;
+      fs::remove_all(runDir);  // an interrupted run is redone from scratch
+      fs::create_directories(runDir);
+      running[startRun(exe, (dir / "configs" / (c.id + ".toml")).string(), runDir.string())] = &c;
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw Error("sweep: waitpid failed");
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const SweepConfiguration& c = *it->second;
+    running.erase(it);
+    ++done;
+    const fs::path runDir = dir / c.id;
+    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(runDir / "manifest.json");
+    if (ok) {
+      fs::remove(runDir / "error.log");
+    } else {
+      failed.push_back(&c);
+      std::cerr << "\nlpvlab: configuration " << c.id << " (" << c.name << ") failed: "
+                << lastLine(runDir / "error.log") << "\n  (see " << (runDir / "error.log").string()
+                << ")\n";
+    }
+    progress.update(double(done) / double(pending.size()), detail());
+  }
+  progress.finish(detail());
+
+  const SummaryResult summary = writeSweepSummary(dir.string());
+  std::cout << "wrote " << (dir / "summary.csv").string() << ": " << summary.rows << " rows from "
+            << summary.complete.size() << " runs\n";
+  if (!failed.empty()) {
+    std::cerr << "lpvlab: error: " << failed.size() << " of " << configs.size()
+              << " configurations failed:\n";
+    for (const SweepConfiguration* c : failed)
+      std::cerr << "  " << c->id << " (" << c->name << "): " << (dir / c->id / "error.log").string() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int summaryCommand(const Options& options) {
+  const SummaryResult summary = writeSweepSummary(options.out);
+  for (const std::string& id : summary.incomplete)
+    std::cerr << "lpvlab: " << (fs::path(options.out) / id).string()
+              << ": incomplete (no manifest.json), skipped\n";
+  std::cout << "wrote " << (fs::path(options.out) / "summary.csv").string() << ": " << summary.rows
+            << " rows from " << summary.complete.size() << " runs\n";
+  return 0;
+}
+
+}  // namespace lpvlab::cli

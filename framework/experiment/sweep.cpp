@@ -1,0 +1,399 @@
+#include "framework/experiment/sweep.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/core/error.h"
+#include "framework/core/hash.h"
+#include "framework/core/parameters.h"
+#include "framework/io/atomic_file.h"
+
+namespace lpvlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string canonicalName(const std::string& path) {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
+  return ec ? fs::absolute(path).lexically_normal().string() : p.string();
+}
+
+// A relative scene.file of `table` (read from `file`) made absolute, so that it keeps meaning
+// the same file wherever the table is written or merged.
+void absolutizeSceneFile(toml::table& table, const std::string& file) {
+  toml::table* scene = table["scene"].as_table();
+  if (!scene) return;
+  toml::node* node = scene->get("file");
+  if (!node || !node->is_string()) return;
+  const std::string ref = node->as_string()->get();
+  if (ref.rfind("builtin:", 0) == 0 || ref.rfind("shared:", 0) == 0) return;
+  const fs::path p(ref);
+  if (p.is_absolute()) return;
+  const std::string resolved =
+      fs::absolute(fs::path(file).parent_path() / p).lexically_normal().string();
+  scene->insert_or_assign("file", resolved);
+}
+
+toml::table readChain(const std::string& path, std::vector<std::string>& stack, bool isBase) {
+  const std::string canonical = canonicalName(path);
+  if (std::find(stack.begin(), stack.end(), canonical) != stack.end()) {
+    std::string chain;
+    for (const std::string& f : stack) chain += f + " -> ";
+    throw Error(path + ": key 'extends': cycle: " + chain + canonical);
+  }
+  stack.push_back(canonical);
+  toml::table table = readTomlFile(path);
+  if (toml::node* ext = table.get("extends")) {
+    if (!ext->is_string()) {
+      const auto& src = ext->source();
+      throw Error(path + (src.begin.line > 0 ? ":" + std::to_string(src.begin.line) : "") +
+                  ": key 'extends': expected a string (a file name relative to this file)");
+    }
+    const fs::path basePath = fs::path(path).parent_path() / ext->as_string()->get();
+    if (!fs::is_regular_file(basePath))
+      throw Error(path + ": key 'extends': base file " + basePath.string() + " not found");
+    toml::table merged = readChain(basePath.string(), stack, true);
+    table.erase("extends");
+    mergeTables(merged, table);
+    table = std::move(merged);
+  }
+  if (isBase) absolutizeSceneFile(table, path);
+  stack.pop_back();
+  return table;
+}
+
+// One swept list: its dotted key and values.
+struct SweptList {
+  std::string key;
+  std::vector<std::string> texts;   // TOML value text, for overrides
+  std::vector<std::string> plain;   // readable text, for names and the summary
+};
+
+std::string plainText(const toml::node& node) {
+  if (const auto* s = node.as_string()) return s->get();
+  return tomlValueText(node);
+}
+
+void collectLists(const toml::table& table, const std::string& prefix, const std::string& where,
+                  std::vector<SweptList>& out) {
+  for (const auto& [k, node] : table) {
+    const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (const toml::table* sub = node.as_table()) {
+      collectLists(*sub, key, where, out);
+      continue;
+    }
+    const toml::array* array = node.as_array();
+    if (!array)
+      throw Error(where + ": key '" + key + "': expected a list of values to sweep over");
+    if (array->empty())
+      throw Error(where + ": key '" + key + "': empty list: the sweep expands to nothing");
+    SweptList list{key, {}, {}};
+    for (const toml::node& v : *array) {
+      list.texts.push_back(tomlValueText(v));
+      list.plain.push_back(plainText(v));
+    }
+    out.push_back(std::move(list));
+  }
+}
+
+struct SweepSpec {
+  std::vector<SweptList> product, zip;
+};
+
+SweepSpec readSweep(const toml::table& root, const std::string& file) {
+  SweepSpec spec;
+  const toml::node* node = root.get("sweep");
+  if (!node) return spec;
+  const toml::table* sweep = node->as_table();
+  if (!sweep) throw Error(file + ": key 'sweep': expected a table with product and/or zip");
+  for (const auto& [k, value] : *sweep) {
+    const std::string name(k.str());
+    if (name != "product" && name != "zip")
+      throw Error(file + ": key 'sweep." + name + "': unknown (valid keys: product, zip)");
+    const toml::table* lists = value.as_table();
+    if (!lists)
+      throw Error(file + ": key 'sweep." + name + "': expected a table of \"key\" = [values]");
+    collectLists(*lists, "", file + ": sweep." + name, name == "product" ? spec.product : spec.zip);
+    if ((name == "product" ? spec.product : spec.zip).empty())
+      throw Error(file + ": key 'sweep." + name + "': empty: the sweep expands to nothing");
+  }
+  if (!spec.zip.empty()) {
+    bool equal = true;
+    for (const SweptList& l : spec.zip) equal = equal && l.texts.size() == spec.zip[0].texts.size();
+    if (!equal) {
+      std::string detail;
+      for (const SweptList& l : spec.zip)
+        detail += (detail.empty() ? "" : ", ") + l.key + " (" + std::to_string(l.texts.size()) + " values)";
+      throw Error(file + ": key 'sweep.zip': lists of unequal length: " + detail);
+    }
+  }
+  return spec;
+}
+
+// FNV-1a mixes its high bits poorly for inputs that differ in one character; a splitmix64
+// finaliser spreads every input bit before the first 10 hex digits are taken.
+std::string shortId(std::uint64_t x) {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ull;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebull;
+  x ^= x >> 31;
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(x));
+  return std::string(buffer, 10);
+}
+
+std::string leaf(const std::string& key) {
+  const auto dot = key.rfind('.');
+  return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+const nlohmann::json* findPath(const nlohmann::json& j, const std::string& dotted) {
+  const nlohmann::json* node = &j;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = dotted.find('.', start);
+    const std::string part = dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (!node->is_object() || !node->contains(part)) return nullptr;
+    node = &(*node)[part];
+    if (dot == std::string::npos) return node;
+    start = dot + 1;
+  }
+}
+
+std::string jsonText(const nlohmann::json* j) {
+  if (!j || j->is_null()) return "";
+  if (j->is_string()) return j->get<std::string>();
+  return j->dump();
+}
+
+nlohmann::json readJson(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path.string() + ": cannot open");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path.string() + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+void mergeTables(toml::table& base, const toml::table& over) {
+  for (const auto& [key, node] : over) {
+    toml::node* existing = base.get(key.str());
+    if (existing && existing->is_table() && node.is_table()) {
+      mergeTables(*existing->as_table(), *node.as_table());
+      continue;
+    }
+    base.insert_or_assign(key, node);
+  }
+}
+
+toml::table readExperimentTable(const std::string& path) {
+  std::vector<std::string> stack;
+  return readChain(path, stack, false);
+}
+
+std::string tomlValueText(const toml::node& node) {
+  toml::table wrapper;
+  wrapper.insert("v", node);
+  std::ostringstream s;
+  s << toml::toml_formatter(wrapper, toml::format_flags::none);
+  std::string text = s.str();
+  const auto eq = text.find('=');
+  text = text.substr(eq + 1);
+  const auto b = text.find_first_not_of(" \t\n");
+  const auto e = text.find_last_not_of(" \t\n");
+  return b == std::string::npos ? "" : text.substr(b, e - b + 1);
+}
+
+std::vector<std::string> sweptKeys(const toml::table& root, const std::string& file) {
+  const SweepSpec spec = readSweep(root, file);
+  std::set<std::string> keys;
+  for (const SweptList& l : spec.product) keys.insert(l.key);
+  for (const SweptList& l : spec.zip) keys.insert(l.key);
+  return {keys.begin(), keys.end()};
+}
+
+std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
+                                            const std::vector<std::string>& extraOverrides) {
+  const SweepSpec spec = readSweep(root, file);
+  std::set<std::string> seen;
+  for (const auto* group : {&spec.zip, &spec.product})
+    for (const SweptList& l : *group)
+      if (!seen.insert(l.key).second)
+        throw Error(file + ": key 'sweep': '" + l.key + "' is swept twice");
+  // Readable names use the last component of a key unless two swept keys share it.
+  std::map<std::string, int> leafCount;
+  for (const std::string& k : seen) ++leafCount[leaf(k)];
+  auto label = [&](const std::string& k) { return leafCount[leaf(k)] > 1 ? k : leaf(k); };
+
+  // Choices: one per zip index, times every combination of the product lists (last fastest).
+  const std::size_t zipCount = spec.zip.empty() ? 1 : spec.zip[0].texts.size();
+  std::size_t productCount = 1;
+  for (const SweptList& l : spec.product) productCount *= l.texts.size();
+
+  std::vector<SweepConfiguration> out;
+  for (std::size_t z = 0; z < zipCount; ++z) {
+    for (std::size_t p = 0; p < productCount; ++p) {
+      SweepConfiguration c;
+      c.overrides = extraOverrides;
+      std::vector<std::pair<const SweptList*, std::size_t>> picks;
+      for (const SweptList& l : spec.zip) picks.push_back({&l, z});
+      std::size_t rest = p;
+      std::vector<std::size_t> indices(spec.product.size());
+      for (std::size_t i = spec.product.size(); i-- > 0;) {
+        indices[i] = rest % spec.product[i].texts.size();
+        rest /= spec.product[i].texts.size();
+      }
+      for (std::size_t i = 0; i < spec.product.size(); ++i) picks.push_back({&spec.product[i], indices[i]});
+      for (const auto& [list, index] : picks) {
+        c.overrides.push_back(list->key + "=" + list->texts[index]);
+        c.values.push_back({list->key, list->plain[index]});
+        c.name += (c.name.empty() ? "" : ",") + label(list->key) + "=" + list->plain[index];
+      }
+      if (c.name.empty()) c.name = "base";
+      Hasher h;
+      for (const std::string& o : c.overrides) h.text(o).text("\n");
+      c.id = shortId(h.digest());
+      out.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
+std::vector<SweepConfiguration> expandSweep(const std::string& file,
+                                            const std::vector<std::string>& extraOverrides) {
+  toml::table root = readExperimentTable(file);
+  for (const std::string& o : extraOverrides) applyOverride(root, o);
+  return expandSweep(root, file, extraOverrides);
+}
+
+std::string configurationToml(const std::string& file, const SweepConfiguration& configuration) {
+  toml::table root = readExperimentTable(file);
+  root.erase("sweep");
+  for (const std::string& o : configuration.overrides) applyOverride(root, o);
+  absolutizeSceneFile(root, file);
+  std::ostringstream s;
+  s << "# lpvlab sweep configuration " << configuration.id << " (" << configuration.name
+    << ") of " << fs::absolute(file).lexically_normal().string() << "\n";
+  for (const std::string& o : configuration.overrides) s << "# override: " << o << "\n";
+  s << "\n" << toml::toml_formatter(root) << "\n";
+  return s.str();
+}
+
+SummaryResult writeSweepSummary(const std::string& dir) {
+  const fs::path root(dir);
+  if (!fs::is_directory(root)) throw Error(dir + ": not a directory");
+  std::vector<std::string> swept;
+  std::map<std::string, std::string> names;
+  if (fs::exists(root / "sweep.json")) {
+    const nlohmann::json index = readJson(root / "sweep.json");
+    for (const auto& k : index.value("swept_keys", nlohmann::json::array())) swept.push_back(k.get<std::string>());
+    for (const auto& c : index.value("configurations", nlohmann::json::array()))
+      names[c.value("id", "")] = c.value("name", "");
+  }
+  const std::vector<std::string> fixed = {"injection.type", "propagation.type", "rendering.type",
+                                          "grid.resolution", "propagation.iterations", "scene.file"};
+  std::vector<std::string> params = swept;
+  for (const std::string& k : fixed)
+    if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
+
+  SummaryResult result;
+  std::vector<std::pair<std::string, nlohmann::json>> manifests;
+  std::vector<fs::path> subdirs;
+  for (const auto& entry : fs::directory_iterator(root))
+    if (entry.is_directory() && entry.path().filename() != "configs" && entry.path().filename() != "logs")
+      subdirs.push_back(entry.path());
+  std::sort(subdirs.begin(), subdirs.end());
+  for (const fs::path& sub : subdirs) {
+    const std::string id = sub.filename().string();
+    if (!fs::exists(sub / "manifest.json")) {
+      result.incomplete.push_back(id);
+      continue;
+    }
+    manifests.push_back({id, readJson(sub / "manifest.json")});
+    result.complete.push_back(id);
+  }
+  std::set<std::string> stages;
+  std::set<std::pair<std::string, std::string>> metrics;
+  for (const auto& [id, m] : manifests) {
+    if (const auto* s = findPath(m, "timing.samples.gpu_ms"); s && s->is_object())
+      for (const auto& [stage, _] : s->items()) stages.insert(stage);
+    if (const auto* s = findPath(m, "timing.samples.wall_ms"); s && s->is_object())
+      for (const auto& [stage, _] : s->items()) stages.insert(stage);
+    if (const auto* c = findPath(m, "reference.comparison"); c && c->is_object())
+      for (const auto& [pair, value] : c->items())
+        if (value.is_object() && value.contains("metrics") && value["metrics"].is_object())
+          for (const auto& [metric, _] : value["metrics"].items()) metrics.insert({pair, metric});
+  }
+
+  std::ostringstream csv;
+  std::vector<std::string> header = {"config_id", "config_name", "repeat", "run_dir"};
+  for (const std::string& k : params) header.push_back("param." + k);
+  for (const std::string& s : stages) header.push_back("gpu_ms." + s);
+  for (const std::string& s : stages) header.push_back("wall_ms." + s);
+  header.push_back("memory_bytes");
+  header.push_back("cells");
+  for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
+  for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
+  csv << "\n";
+
+  for (const auto& [id, m] : manifests) {
+    const nlohmann::json config = m.value("configuration", nlohmann::json::object());
+    std::size_t repeats = 0;
+    if (const auto* s = findPath(m, "timing.samples.gpu_ms.total"); s && s->is_array()) repeats = s->size();
+    std::string cells;
+    if (const auto* c = findPath(config, "grid.resolved.cells"); c && c->is_array()) {
+      long long product = 1;
+      for (const auto& v : *c) product *= v.get<long long>();
+      cells = std::to_string(product);
+    }
+    for (std::size_t r = 0; r < repeats; ++r) {
+      std::vector<std::string> row = {id, names.count(id) ? names[id] : "", std::to_string(r), id};
+      for (const std::string& k : params) row.push_back(jsonText(findPath(config, k)));
+      for (const char* kind : {"gpu_ms", "wall_ms"})
+        for (const std::string& s : stages) {
+          const auto* samples = findPath(m, std::string("timing.samples.") + kind);
+          const nlohmann::json* v = nullptr;
+          if (samples && samples->contains(s) && (*samples)[s].is_array() && r < (*samples)[s].size())
+            v = &(*samples)[s][r];
+          row.push_back(jsonText(v));
+        }
+      row.push_back(jsonText(findPath(m, "memory_bytes.total")));
+      row.push_back(cells);
+      for (const auto& [pair, metric] : metrics) {
+        const nlohmann::json* v = nullptr;
+        if (const auto* c = findPath(m, "reference.comparison"); c && c->contains(pair)) {
+          const nlohmann::json& entry = (*c)[pair];
+          if (entry.contains("metrics") && entry["metrics"].contains(metric)) v = &entry["metrics"][metric];
+        }
+        row.push_back(jsonText(v));
+      }
+      for (std::size_t i = 0; i < row.size(); ++i) csv << (i ? "," : "") << csvField(row[i]);
+      csv << "\n";
+      ++result.rows;
+    }
+  }
+  writeTextAtomically((root / "summary.csv").string(), csv.str());
+  return result;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,69 @@
+#pragma once
+// Experiment inheritance and parameter sweeps (see docs/experiments.md).
+//
+//   extends = "base.toml"   at the top of an experiment file: the base (itself possibly extending
+//                           another) is loaded and this file's tables are merged over it: a key in
+//                           the child replaces the base's, sub-tables merge, arrays (of tables,
+//                           e.g. [[lights]]) replace whole. A relative scene.file stays relative to
+//                           the file that wrote it. A cycle is an error naming the files.
+//   [sweep]                 product = { "a.b" = [..], ... }   Cartesian product
+//                           zip     = { "c.d" = [..], ... }   lists of equal length, together
+//                           Both: every zip entry times every product entry. Each configuration
+//                           is a list of overrides "key=value" applied like `-s key=value`, so
+//                           unknown keys are errors of loadExperiment as usual.
+//
+// A sweep's outputs live in one directory DIR: DIR/configs/<id>.toml (the resolved configuration
+// of each), DIR/<id>/ (its run, as `lpvlab run` writes it), DIR/sweep.json (the expansion),
+// DIR/summary.csv (rebuilt from the run directories' manifests by writeSweepSummary).
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace lpvlab {
+
+struct SweepConfiguration {
+  std::string id;                       // short hash of the overrides (stable across runs)
+  std::string name;                     // readable: "iterations=4,resolution=32" ("base": none)
+  std::vector<std::string> overrides;   // "propagation.iterations=4" (TOML value text)
+  std::vector<std::pair<std::string, std::string>> values;  // swept key -> value as text
+};
+
+// Reads an experiment file with its `extends` chain resolved and merged; the result has no
+// `extends` key. Relative scene.file values of base files are made absolute.
+toml::table readExperimentTable(const std::string& path);
+
+// Merges `over` into `base` (sub-tables recursively; anything else replaces).
+void mergeTables(toml::table& base, const toml::table& over);
+
+// The configurations of `file`'s [sweep] table (one with no overrides when it has none).
+// `extraOverrides` (command-line -s) are applied before expansion and are part of every
+// configuration's overrides (first), hence of its id. Throws an Error naming the file and key.
+std::vector<SweepConfiguration> expandSweep(const std::string& file,
+                                            const std::vector<std::string>& extraOverrides = {});
+std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
+                                            const std::vector<std::string>& extraOverrides = {});
+
+// The swept keys, in column order (sorted, unique).
+std::vector<std::string> sweptKeys(const toml::table& root, const std::string& file);
+
+// The resolved TOML text of one configuration of `file` (extends merged, [sweep] removed,
+// overrides applied, relative scene.file made absolute): a file `lpvlab run` reads on its own.
+std::string configurationToml(const std::string& file, const SweepConfiguration& configuration);
+
+// The value of a TOML node as TOML text ("4", "\"standard\"", "[1, 2]").
+std::string tomlValueText(const toml::node& node);
+
+struct SummaryResult {
+  int rows = 0;
+  std::vector<std::string> complete;     // config ids with a manifest
+  std::vector<std::string> incomplete;   // run directories without one
+};
+
+// Rebuilds DIR/summary.csv from DIR/*/manifest.json (atomically); the swept keys and names come
+// from DIR/sweep.json when present. Directories without a manifest are skipped and returned.
+SummaryResult writeSweepSummary(const std::string& dir);
+
+}  // namespace lpvlab
