@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "executable_support.h"
 #include "io/temp_dir.h"
 
 namespace lpvlab {
@@ -24,22 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path lpvlabExecutable() {
-  return fs::read_symlink("/proc/self/exe").parent_path().parent_path() / "lpvlab";
-}
-
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::lpvlabExecutable;
+using test::quoted;
+using test::readFile;
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
