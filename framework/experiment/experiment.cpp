@@ -1,5 +1,6 @@
 #include "framework/experiment/experiment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -166,6 +167,38 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
   e.compareWithReference = reference.get<bool>("compare", false);
+
+  Params metrics = params.table("metrics");
+  const std::vector<std::string> runOutputs = {"direct", "indirect", "combined"};
+  const std::vector<std::string> referenceOutputs = {"direct", "indirect", "indirect1", "combined"};
+  if (metrics.has("pairs")) {
+    e.comparison.pairs.clear();
+    for (const std::string& pair : metrics.get<std::vector<std::string>>("pairs", {})) {
+      const auto colon = pair.find(':');
+      const std::string mine = pair.substr(0, colon);
+      const std::string theirs = colon == std::string::npos ? "" : pair.substr(colon + 1);
+      const auto known = [](const std::vector<std::string>& names, const std::string& name) {
+        return std::find(names.begin(), names.end(), name) != names.end();
+      };
+      if (!known(runOutputs, mine) || !known(referenceOutputs, theirs))
+        throw Error(metrics.where("pairs") + ": '" + pair + "' is not RUN:REFERENCE with RUN one "
+                    "of direct, indirect, combined and REFERENCE one of direct, indirect, "
+                    "indirect1, combined");
+      e.comparison.pairs.emplace_back(mine, theirs);
+    }
+    if (e.comparison.pairs.empty()) throw Error(metrics.where("pairs") + ": names no pair");
+  }
+  for (Params& region : metrics.tables("regions")) {
+    ComparisonSettings::Region r;
+    r.name = region.require<std::string>("name");
+    const Range<float> unit{.min = 0.0f, .max = 1.0f};
+    r.rect = glm::vec4(region.get<float>("left", 0.0f, unit), region.get<float>("top", 0.0f, unit),
+                       region.get<float>("right", 1.0f, unit), region.get<float>("bottom", 1.0f, unit));
+    if (!(r.rect.x < r.rect.z && r.rect.y < r.rect.w))
+      throw Error(region.where("right") + ": region '" + r.name + "' is empty (left < right and "
+                  "top < bottom are required)");
+    e.comparison.regions.push_back(r);
+  }
 
   Params injection = params.table("injection");
   e.strategies.injection = Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl");

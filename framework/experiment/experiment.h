@@ -28,6 +28,20 @@ struct GridPlacement {
   GridGeometry resolve(const Bounds& sceneBounds) const;
 };
 
+// What a run that compares with its reference measures ([metrics] table).
+struct ComparisonSettings {
+  // (run output, reference output) pairs; the first pair's FLIP heat map is written per run.
+  std::vector<std::pair<std::string, std::string>> pairs{{"indirect", "indirect1"},
+                                                         {"direct", "direct"}};
+  // Image regions with figures of their own: (left, top, right, bottom) as fractions of the
+  // image's width and height, (0, 0) the top-left corner.
+  struct Region {
+    std::string name;
+    glm::vec4 rect{0, 0, 1, 1};
+  };
+  std::vector<Region> regions;
+};
+
 struct Experiment {
   std::string name;             // the file's stem, or "cornell_box" for the built-in default
   std::string file;             // the experiment file, or "" for the built-in default
@@ -46,6 +60,7 @@ struct Experiment {
   // its tracer's sky is the experiment's [sky] radiance.
   ReferenceRequest reference;
   bool compareWithReference = false;  // [reference] compare: runs measure their error against it
+  ComparisonSettings comparison;
   nlohmann::json configuration; // every parameter as resolved (defaults included)
 };
 

@@ -53,24 +53,42 @@ Image coverageMask(const Image& depth) {
   return mask;
 }
 
-// How the run's outputs compare with the reference's, per pair (LPV output, reference output),
-// over the pixels the camera sees: the metrics (framework/metrics/metrics.h), the means and their
-// ratio, and a per-pixel z-test against the reference's variance at a Sidak-corrected 1% family
-// level (how many pixel channels the reference's noise can't explain).
+// `mask` restricted to a region of the image (ComparisonSettings::Region).
+Image regionMask(const Image& mask, const glm::vec4& rect) {
+  Image out = mask;
+  for (int y = 0; y < mask.height; ++y)
+    for (int x = 0; x < mask.width; ++x) {
+      const float u = (x + 0.5f) / float(mask.width), v = (y + 0.5f) / float(mask.height);
+      if (u < rect.x || u >= rect.z || v < rect.y || v >= rect.w) out.at(x, y, 0) = 0.0f;
+    }
+  return out;
+}
+
+// How the run's outputs compare with the reference's, per configured pair (run output, reference
+// output), over the pixels the camera sees: the metrics (framework/metrics/metrics.h), per region
+// too, the means and their ratio, and a per-pixel z-test against the reference's variance at a
+// Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
 nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref,
-                                    const Image& mask) {
+                                    const Image& mask, const ComparisonSettings& settings) {
   nlohmann::json out = {{"key", ref.key}, {"directory", ref.directory}, {"samples", ref.samples},
                         {"relative_error", ref.relativeError}};
-  for (const auto& [mine, theirs] : {std::pair<std::string, std::string>{"direct", "direct"},
-                                     {"indirect", "indirect1"}}) {
+  for (const auto& [mine, theirs] : settings.pairs) {
     const Image& a = findAov(run, mine);
     const Image& b = findAov(ref.aovs, theirs);
     const ComparisonResult z = compareToExact(b, findAov(ref.aovs, theirs + "_variance"), a);
-    out["comparison"][mine + "_vs_" + theirs] = {
-        {"mean_run", mean(a)}, {"mean_reference", mean(b)},
-        {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},
-        {"z_tests", z.tests}, {"z_rejected", z.rejected}, {"z_threshold", z.threshold},
-        {"mean_z", z.meanZ}, {"metrics", computeMetrics(a, b, &mask).toJson()}};
+    nlohmann::json& pair = out["comparison"][mine + "_vs_" + theirs];
+    pair = {{"mean_run", mean(a)}, {"mean_reference", mean(b)},
+            {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},
+            {"z_tests", z.tests}, {"z_rejected", z.rejected}, {"z_threshold", z.threshold},
+            {"mean_z", z.meanZ}, {"metrics", computeMetrics(a, b, &mask).toJson()}};
+    for (const ComparisonSettings::Region& region : settings.regions) {
+      const Image inside = regionMask(mask, region.rect);
+      double covered = 0.0;
+      for (float m : inside.pixels) covered += m;
+      // A region that sees only background has no figures (rather than failing the run).
+      pair["regions"][region.name] =
+          covered > 0.0 ? computeMetrics(a, b, &inside).toJson() : nlohmann::json(nullptr);
+    }
   }
   return out;
 }
@@ -157,11 +175,15 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                    {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
 
   std::optional<Image> heatMap;
+  std::string heatMapName;
   if (reference) {
     const Image mask = coverageMask(findAov(aovs, "depth"));
-    manifest["reference"] = compareWithReference(aovs, *reference, mask);
-    heatMap = errorHeatMap(findAov(aovs, "indirect"), findAov(reference->aovs, "indirect1"), &mask);
-    manifest["outputs"]["error_map"] = "error_indirect.png (FLIP of indirect against the reference's indirect1)";
+    manifest["reference"] = compareWithReference(aovs, *reference, mask, experiment.comparison);
+    const auto& [mine, theirs] = experiment.comparison.pairs.front();
+    heatMap = errorHeatMap(findAov(aovs, mine), findAov(reference->aovs, theirs), &mask);
+    heatMapName = "error_" + mine + ".png";
+    manifest["outputs"]["error_map"] =
+        heatMapName + " (FLIP of " + mine + " against the reference's " + theirs + ")";
   }
 
   std::filesystem::create_directories(outDir);
@@ -172,7 +194,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                          (experiment.autoExposure ? middleGreyExposure(aovs[2].image) : 0.0f);
   manifest["outputs"]["png_exposure_stops"] = exposure;
   writePng((dir / "combined.png").string(), aovs[2].image, exposure);
-  if (heatMap) writePng((dir / "error_indirect.png").string(), *heatMap, 0.0f, false);
+  if (heatMap) writePng((dir / heatMapName).string(), *heatMap, 0.0f, false);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }

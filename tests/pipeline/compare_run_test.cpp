@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "framework/core/error.h"
 #include "framework/experiment/run.h"
 #include "pipeline_test_support.h"
 
@@ -44,6 +45,53 @@ TEST(CompareRun, RendersTheMissingReferenceAndRecordsMetricsAndAHeatMap) {
   std::ifstream written(dir / "run" / "manifest.json");
   EXPECT_EQ(nlohmann::json::parse(written)["reference"]["key"], manifest["reference"]["key"]);
   fs::remove_all(dir);
+}
+
+TEST(CompareRun, PairsAndRegionsAreConfigurable) {
+  const GlContext& context = test::glTestContext();
+  const fs::path dir = fs::temp_directory_path() / "lpvlab_compare_pairs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "e.toml") << "[output]\nwidth = 32\nheight = 32\n"
+                                   "[grid]\nresolution = 8\n[propagation]\niterations = 4\n"
+                                   "[timing]\nwarmup = 0\nrepeats = 1\n"
+                                   "[reference]\ncompare = true\nsamples = 16\n"
+                                   "[metrics]\npairs = [\"combined:combined\"]\n"
+                                   "[[metrics.regions]]\nname = \"left\"\nright = 0.5\n"
+                                   "[[metrics.regions]]\nname = \"top strip\"\nbottom = 0.01\n";
+  Experiment e = loadExperiment((dir / "e.toml").string());
+  e.reference.cacheDir = (dir / "cache").string();
+  e.reference.showProgress = false;
+  const nlohmann::json manifest = runExperiment(e, context, (dir / "run").string());
+  const auto& comparison = manifest["reference"]["comparison"];
+  ASSERT_EQ(comparison.size(), 1u);
+  const auto& pair = comparison["combined_vs_combined"];
+  const int all = pair["metrics"]["pixels"].get<int>();
+  const int left = pair["regions"]["left"]["pixels"].get<int>();
+  EXPECT_GT(left, 0);
+  EXPECT_LT(left, all);
+  // A strip thinner than a pixel holds no pixel centre: no figures, and the run still succeeds.
+  EXPECT_TRUE(pair["regions"]["top strip"].is_null());
+  EXPECT_TRUE(fs::exists(dir / "run" / "error_combined.png"));
+  fs::remove_all(dir);
+}
+
+TEST(CompareRun, BadPairsAndRegionsAreNamed) {
+  const auto message = [](const std::vector<std::string>& overrides) {
+    try {
+      loadExperiment("", overrides);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(message({"metrics.pairs=[\"indirect:indirect2\"]"}).find("metrics.pairs"),
+            std::string::npos);
+  EXPECT_NE(message({"metrics.pairs=[]"}).find("names no pair"), std::string::npos);
+  EXPECT_NE(message({"metrics.regions=[{name = \"r\", left = 0.6, right = 0.4}]"}).find("is empty"),
+            std::string::npos);
+  EXPECT_NE(message({"metrics.regions=[{name = \"r\", left = 1.5}]"}).find("metrics.regions[0].left"),
+            std::string::npos);
 }
 
 }  // namespace
