@@ -76,9 +76,10 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
     const Image& a = findAov(run, mine);
     const Image& b = findAov(ref.aovs, theirs);
     const ComparisonResult z = compareToExact(b, findAov(ref.aovs, theirs + "_variance"), a);
+    const double meanRun = mean(a), meanReference = mean(b);
     nlohmann::json& pair = out["comparison"][mine + "_vs_" + theirs];
-    pair = {{"mean_run", mean(a)}, {"mean_reference", mean(b)},
-            {"ratio_of_means", mean(b) > 0.0 ? mean(a) / mean(b) : 0.0},
+    pair = {{"mean_run", meanRun}, {"mean_reference", meanReference},
+            {"ratio_of_means", meanReference > 0.0 ? meanRun / meanReference : 0.0},
             {"z_tests", z.tests}, {"z_rejected", z.rejected}, {"z_threshold", z.threshold},
             {"mean_z", z.meanZ}, {"metrics", computeMetrics(a, b, &mask).toJson()}};
     for (const ComparisonSettings::Region& region : settings.regions) {

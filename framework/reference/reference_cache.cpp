@@ -76,14 +76,24 @@ std::string defaultCacheDir() {
   return (fs::path(LPVLAB_SOURCE_DIR) / ".cache" / "references").string();
 }
 
-std::string referenceKey(const Scene& scene, const Camera& camera, const ReferenceRequest& r) {
+namespace {
+
+// The key from the scene's hash (which reads every texel, so callers compute it once).
+std::string keyFromSceneHash(const std::string& sceneContentHash, const Camera& camera,
+                             const ReferenceRequest& r) {
   Hasher h;
-  h.value(kTracerVersion).text(sceneHash(scene));
+  h.value(kTracerVersion).text(sceneContentHash);
   for (const glm::vec3& v : {camera.position, camera.forward, camera.up}) h.value(v.x).value(v.y).value(v.z);
   h.value(camera.verticalFov).value(r.width).value(r.height);
   h.value(r.tracer.seed).value(r.tracer.maxBounces).value(r.tracer.rouletteAfter);
   h.value(r.tracer.skyRadiance.x).value(r.tracer.skyRadiance.y).value(r.tracer.skyRadiance.z);
   return h.hex();
+}
+
+}  // namespace
+
+std::string referenceKey(const Scene& scene, const Camera& camera, const ReferenceRequest& r) {
+  return keyFromSceneHash(sceneHash(scene), camera, r);
 }
 
 void saveAccumulator(const std::string& path, const Accumulator& acc, double seconds) {
@@ -131,7 +141,8 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   if (!request.target.any())
     throw Error("reference: no sample budget: set samples, seconds or relative_error above 0");
   Reference ref;
-  ref.key = referenceKey(scene, camera, request);
+  const std::string contentHash = sceneHash(scene);
+  ref.key = keyFromSceneHash(contentHash, camera, request);
   const fs::path dir = fs::path(request.cacheDir.empty() ? defaultCacheDir() : request.cacheDir) / ref.key;
   ref.directory = dir.string();
   fs::create_directories(dir);
@@ -191,7 +202,7 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   }
   ref.manifest = {
       {"key", ref.key},
-      {"scene", {{"source", scene.source}, {"hash", sceneHash(scene)}, {"triangles", scene.triangleCount()}}},
+      {"scene", {{"source", scene.source}, {"hash", contentHash}, {"triangles", scene.triangleCount()}}},
       {"camera", {{"name", camera.name},
                   {"position", {camera.position.x, camera.position.y, camera.position.z}},
                   {"forward", {camera.forward.x, camera.forward.y, camera.forward.z}},

@@ -6,6 +6,8 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+
+#include "error_support.h"
 #include <nlohmann/json.hpp>
 
 #include "framework/core/error.h"
@@ -78,12 +80,7 @@ TEST(CompareRun, PairsAndRegionsAreConfigurable) {
 
 TEST(CompareRun, BadPairsAndRegionsAreNamed) {
   const auto message = [](const std::vector<std::string>& overrides) {
-    try {
-      loadExperiment("", overrides);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
+    return test::errorOf([&] { loadExperiment("", overrides); });
   };
   EXPECT_NE(message({"metrics.pairs=[\"indirect:indirect2\"]"}).find("metrics.pairs"),
             std::string::npos);

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "error_support.h"
+
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
 #include "io/temp_dir.h"
@@ -17,10 +19,7 @@
 namespace lpvlab {
 namespace {
 
-::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
+using test::contains;
 
 class ExperimentErrors : public ::testing::Test {
 protected:
@@ -31,16 +30,7 @@ protected:
   }
   // The message of the Error loadExperiment throws (a failure if it throws nothing or another type).
   static std::string errorOf(const std::string& path, const std::vector<std::string>& overrides = {}) {
-    try {
-      loadExperiment(path, overrides);
-    } catch (const Error& e) {
-      return e.what();
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "not an lpvlab::Error: " << e.what();
-      return "";
-    }
-    ADD_FAILURE() << "no error for " << path;
-    return "";
+    return test::errorOf([&] { loadExperiment(path, overrides); });
   }
   test::TempDir dir_;
 };

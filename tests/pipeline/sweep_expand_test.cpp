@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "error_support.h"
+
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/sweep.h"
@@ -20,10 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-::testing::AssertionResult contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
+using test::contains;
+using test::errorOf;
 
 class SweepExpand : public ::testing::Test {
 protected:
@@ -32,19 +32,6 @@ protected:
     fs::create_directories(fs::path(path).parent_path());
     std::ofstream(path) << text;
     return path;
-  }
-  template <class F>
-  static std::string errorOf(F&& f) {
-    try {
-      f();
-    } catch (const Error& e) {
-      return e.what();
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "not an lpvlab::Error: " << e.what();
-      return "";
-    }
-    ADD_FAILURE() << "no error thrown";
-    return "";
   }
   test::TempDir dir_;
 };
