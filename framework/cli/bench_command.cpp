@@ -25,7 +25,6 @@ int benchCommand(const Options& options) {
       overrides.push_back("grid.margin=0");
       overrides.push_back("propagation.iterations=" + std::to_string(iterations));
       Experiment e = loadExperiment(options.experiment, overrides);
-      requireLpvCanRender(e);
       if (!context) {
         context = GlContext::create(e.glBackend);
         std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "

@@ -35,10 +35,12 @@ public:
   }
 
   // Creates the strategy named by `params`'s `type` key (or `defaultName`), reading its
-  // parameters from the same table.
+  // parameters from the same table. Interface must have setRegisteredName(std::string).
   std::unique_ptr<Interface> create(Params& params, const std::string& defaultName) const {
     const std::string name = params.getChoice("type", defaultName, names());
-    return entries_.at(name).factory(params);
+    std::unique_ptr<Interface> strategy = entries_.at(name).factory(params);
+    strategy->setRegisteredName(name);
+    return strategy;
   }
 
   std::vector<std::string> names() const {

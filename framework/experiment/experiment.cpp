@@ -145,6 +145,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
     placement.cells = gridParams.require<glm::ivec3>("cells", {.min = glm::ivec3(1), .max = glm::ivec3(1024)});
   }
   e.settings.grid = placement.resolve(e.scene.bounds());
+  e.settings.shOrder = gridParams.get<int>("sh_order", 1, {.min = 1, .max = 3});
 
   Params timing = params.table("timing");
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
@@ -153,6 +154,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
 
   Params sky = params.table("sky");
   e.reference.tracer.skyRadiance = sky.get<glm::vec3>("radiance", glm::vec3(0.0f), {.min = glm::vec3(0.0f)});
+  e.settings.skyRadiance = e.reference.tracer.skyRadiance;
   Params reference = params.table("reference");
   e.reference.width = e.settings.width;
   e.reference.height = e.settings.height;
@@ -200,14 +202,26 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
     e.comparison.regions.push_back(r);
   }
 
+  // [injection] is the main injection; [[injection.also]] tables add more (e.g. sky light), each
+  // with its own type and parameters.
   Params injection = params.table("injection");
-  e.strategies.injection = Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl");
+  for (Params& also : injection.tables("also"))
+    e.strategies.injection.push_back(Registry<InjectionStrategy>::instance().create(also, "rsm_vpl"));
+  e.strategies.injection.insert(e.strategies.injection.begin(),
+                                Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl"));
+  Params occlusion = params.table("occlusion");
+  e.strategies.occlusion = Registry<OcclusionStrategy>::instance().create(occlusion, "none");
   Params propagation = params.table("propagation");
   e.strategies.propagation = Registry<PropagationStrategy>::instance().create(propagation, "standard");
   Params rendering = params.table("rendering");
   e.strategies.rendering = Registry<RenderingStrategy>::instance().create(rendering, "trilinear");
 
   params.finish();
+  try {
+    resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance);
+  } catch (const Error& error) {
+    throw Error(file + ": " + error.what());
+  }
   e.configuration = params.resolved();
   e.configuration["scene"]["resolved_path"] = e.scene.source;
   e.configuration["camera"]["resolved"] = {

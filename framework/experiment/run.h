@@ -28,9 +28,6 @@ struct TimingReport {
   nlohmann::json toJson() const;
 };
 
-// Throws an Error when the experiment asks for light the LPV pipeline cannot render (a sky).
-void requireLpvCanRender(const Experiment& experiment);
-
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
 

@@ -47,4 +47,5 @@ using glm::sqrt;
 #include "shaders/common/sh.glsl"
 #include "shaders/common/grid.glsl"
 #include "shaders/common/lights.glsl"
+#include "shaders/common/geometry_volume.glsl"
 LPVLAB_SHARED_GLSL_END

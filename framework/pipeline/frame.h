@@ -1,7 +1,10 @@
 #pragma once
 // What one frame's stages read and write. The pipeline owns all of it; strategies get a Frame.
 
+#include <glm/glm.hpp>
+
 #include "framework/gl/resources.h"
+#include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/light_grid.h"
 
 namespace lpvlab {
@@ -37,11 +40,19 @@ struct LightMaps {
   std::size_t memoryBytes() const;
 };
 
+class SceneGpu;
+struct Camera;
+
 struct Frame {
+  const SceneGpu* scene = nullptr;      // for strategies that rasterise the scene themselves
+  const Camera* camera = nullptr;
   const GBuffer& gbuffer;
   const LightMaps& lightMaps;
   LightGrid& lightGrid;
-  gl::Texture& indirect;    // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
+  gl::Texture& indirect;                // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
+  GeometryVolume* geometryVolume = nullptr;  // only if a strategy declared Requirements::geometryVolume
+  NormalGrid* normalGrid = nullptr;          // only if a strategy declared Requirements::normalGrid
+  glm::vec3 skyRadiance{0.0f};               // constant sky, W/(m^2 sr) ([sky] radiance)
 };
 
 }  // namespace lpvlab

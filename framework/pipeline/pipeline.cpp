@@ -35,10 +35,12 @@ double gridFlux(const std::vector<float>& coefficients, int cells, int coefficie
 }  // namespace
 
 const std::vector<std::string>& Pipeline::stageNames() {
-  static const std::vector<std::string> names = {
-      "shadow_maps", "rsm", "gbuffer", "direct", "clear", "injection", "propagation", "indirect"};
+  static const std::vector<std::string> names = {"shadow_maps", "rsm",       "gbuffer",
+                                                 "direct",      "clear",     "occlusion",
+                                                 "injection",   "propagation", "indirect"};
   return names;
 }
+
 
 Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
                    Strategies strategies, ShaderCompiler& shaders)
@@ -47,10 +49,7 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
                 "under [[lights]] in the experiment");
-  Requirements requirements;
-  strategies_.injection->declare(requirements);
-  strategies_.propagation->declare(requirements);
-  strategies_.rendering->declare(requirements);
+  requirements_ = resolveRequirements(strategies_, settings.shOrder, settings.skyRadiance);
 
   scene_ = std::make_unique<SceneGpu>(scene);
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height);
@@ -58,13 +57,15 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
       shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,
       settings.shadowResolution);
   direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow);
-  lightGrid_ = LightGrid(settings.grid, requirements.shOrder);
+  lightGrid_ = LightGrid(settings.grid, requirements_.shOrder);
+  if (requirements_.geometryVolume)
+    geometryVolume_ = std::make_unique<GeometryVolume>(settings.grid, requirements_.surfaceAlbedo);
+  if (requirements_.normalGrid) normalGrid_ = std::make_unique<NormalGrid>(settings.grid);
   directImage_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "direct");
   indirectImage_ =
       gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "indirect");
-  strategies_.injection->prepare(shaders, settings.grid, requirements);
-  strategies_.propagation->prepare(shaders, settings.grid, requirements);
-  strategies_.rendering->prepare(shaders, settings.grid, requirements);
+  for (const auto& [table, strategy] : strategies_.all())
+    strategy->prepare(shaders, settings.grid, requirements_);
   checkGl("pipeline setup");
 }
 
@@ -81,18 +82,41 @@ void Pipeline::stage(const std::string& name, FrameTimes& times, F&& work) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+Frame Pipeline::frame() {
+  return Frame{.scene = scene_.get(),
+               .camera = &camera_,
+               .gbuffer = gbufferPass_->gbuffer(),
+               .lightMaps = lightMapsPass_->lightMaps(),
+               .lightGrid = lightGrid_,
+               .indirect = indirectImage_,
+               .geometryVolume = geometryVolume_.get(),
+               .normalGrid = normalGrid_.get(),
+               .skyRadiance = settings_.skyRadiance};
+}
+
+void Pipeline::clearGrids() {
+  lightGrid_.current.zero();
+  if (geometryVolume_) geometryVolume_->clear();
+  if (normalGrid_) normalGrid_->clear();
+}
+
+void Pipeline::injectAll(Frame& frame) {
+  for (const auto& injection : strategies_.injection) injection->inject(frame);
+}
+
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
-  Frame frame{gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), lightGrid_, indirectImage_};
+  Frame frame = this->frame();
   stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
   stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
   stage("direct", times, [&] {
     direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_);
   });
-  stage("clear", times, [&] { lightGrid_.current.zero(); });
+  stage("clear", times, [&] { clearGrids(); });
+  stage("occlusion", times, [&] { strategies_.occlusion->inject(frame); });
   stage("injection", times, [&] {
-    strategies_.injection->inject(frame);
+    injectAll(frame);
     // The accumulated light starts as the injected light (thesis 6.9.1).
     glCopyNamedBufferSubData(lightGrid_.current.id(), lightGrid_.accumulated.id(), 0, 0,
                              GLsizeiptr(lightGrid_.bytesPerGrid()));
@@ -126,9 +150,10 @@ std::vector<float> Pipeline::readGrid(bool accumulated) const {
 }
 
 InjectionBalance Pipeline::measureInjection() {
-  Frame frame{gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), lightGrid_, indirectImage_};
-  lightGrid_.current.zero();
-  strategies_.injection->inject(frame);
+  Frame frame = this->frame();
+  clearGrids();
+  strategies_.occlusion->inject(frame);
+  injectAll(frame);
   InjectionBalance balance;
   const LightMaps& maps = lightMapsPass_->lightMaps();
   std::vector<float> flux(std::size_t(maps.rsmResolution) * maps.rsmResolution * maps.views * 4);
@@ -146,10 +171,11 @@ nlohmann::json Pipeline::memoryReport() const {
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
       {"light_grid", lightGrid_.memoryBytes()},
-      {"output_images", directImage_.bytes() + indirectImage_.bytes()},
-      {"injection", strategies_.injection->memoryBytes()},
-      {"propagation", strategies_.propagation->memoryBytes()},
-      {"rendering", strategies_.rendering->memoryBytes()}};
+      {"geometry_volume", geometryVolume_ ? geometryVolume_->memoryBytes() : 0},
+      {"normal_grid", normalGrid_ ? normalGrid_->memoryBytes() : 0},
+      {"output_images", directImage_.bytes() + indirectImage_.bytes()}};
+  for (const auto& [table, strategy] : strategies_.all())
+    bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();
   std::size_t total = 0;
   for (const auto& [name, value] : bytes.items()) total += value.get<std::size_t>();
   bytes["total"] = total;

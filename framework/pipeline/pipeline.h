@@ -1,7 +1,8 @@
 #pragma once
 // The LPV pipeline: per frame, (1) shadow maps and RSMs per light view, (2) the camera's
-// G-buffer and direct light, (3) clearing the light grid, (4) injection, (5) propagation,
-// (6) rendering of indirect light. Stages 4-6 are the experiment's strategies. Every stage is
+// G-buffer and direct light, (3) clearing the grids, (4) occlusion (the GV's blocking
+// potential), (5) injection, (6) propagation, (7) rendering of indirect light. Stages 4-7 are the
+// experiment's strategies; the GV and the normal grid exist only if a strategy asks for them. Every stage is
 // timed on the GPU (timestamp queries) and on the wall clock (the stage ends with glFinish).
 
 #include <map>
@@ -16,7 +17,7 @@
 #include "framework/io/image.h"
 #include "framework/pipeline/direct_lighting.h"
 #include "framework/pipeline/raster_passes.h"
-#include "framework/pipeline/strategy.h"
+#include "framework/pipeline/composition.h"
 
 namespace lpvlab {
 
@@ -26,13 +27,9 @@ struct PipelineSettings {
   int rsmResolution = 256;     // RSM texels per side per light view
   int shadowResolution = 1024; // shadow-map texels per side per light view
   GridGeometry grid;           // where the light grid sits (resolved by the experiment)
+  int shOrder = 1;             // SH order of the light grid, 1..3
+  glm::vec3 skyRadiance{0.0f}; // constant sky, W/(m^2 sr): needs an injection strategy for it
   ShadowSettings shadow;
-};
-
-struct Strategies {
-  std::unique_ptr<InjectionStrategy> injection;
-  std::unique_ptr<PropagationStrategy> propagation;
-  std::unique_ptr<RenderingStrategy> rendering;
 };
 
 // Stage name -> milliseconds, for one frame.
@@ -68,6 +65,7 @@ public:
   std::vector<float> readGrid(bool accumulated) const;
 
   const LightGrid& lightGrid() const { return lightGrid_; }
+  const Requirements& requirements() const { return requirements_; }
   const Strategies& strategies() const { return strategies_; }
   // Bytes of GPU memory per resource group.
   nlohmann::json memoryReport() const;
@@ -75,6 +73,9 @@ public:
 private:
   template <class F>
   void stage(const std::string& name, FrameTimes& times, F&& work);
+  Frame frame();
+  void clearGrids();
+  void injectAll(Frame& frame);
 
   PipelineSettings settings_;
   Camera camera_;
@@ -83,7 +84,10 @@ private:
   std::unique_ptr<GBufferPass> gbufferPass_;
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   std::unique_ptr<DirectLighting> direct_;
+  Requirements requirements_;
   LightGrid lightGrid_;
+  std::unique_ptr<GeometryVolume> geometryVolume_;
+  std::unique_ptr<NormalGrid> normalGrid_;
   gl::Texture directImage_, indirectImage_;
   GpuTimer gpuTimer_;
 };

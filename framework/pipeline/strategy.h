@@ -3,9 +3,11 @@
 // variants/<stage>/<name>.cpp, reads its parameters in its constructor (from the experiment's
 // [<stage>] table: unread keys are errors), and registers itself:
 //   LPVLAB_REGISTER(PropagationStrategy, "standard", "one-line description", StandardPropagation);
-// The pipeline allocates what the strategies declare (Requirements) and calls them in order:
-//   injection -> propagation -> rendering.
+// The pipeline asks every strategy what it needs (declare), refuses compositions that cannot work
+// (maxShOrder, refusal), allocates only what was asked for, and calls the strategies in order:
+//   occlusion -> injection(s) -> propagation -> rendering.
 
+#include <cstddef>
 #include <string>
 
 #include "framework/core/registry.h"
@@ -18,7 +20,12 @@ struct GridGeometry;
 
 // What a composition of strategies needs; the pipeline allocates only that.
 struct Requirements {
-  int shOrder = 1;  // SH bands - 1 of the light grid: order 1 = 4 coefficients per channel
+  int shOrder = 1;              // SH order of the light grid ([grid] sh_order): (order+1)^2
+                                // coefficients per channel
+  bool geometryVolume = false;  // the GV: blocking potential per cell (framework/pipeline/geometry_volume.h)
+  bool surfaceAlbedo = false;   // the GV also keeps its surfels' albedo (re-injecting blocked light)
+  bool skyInjected = false;     // an injection strategy adds the [sky] radiance to the grid
+  bool normalGrid = false;      // the injected VPLs' flux-weighted normal per cell (directed propagation)
 };
 
 class Strategy {
@@ -26,16 +33,39 @@ public:
   virtual ~Strategy() = default;
   // Adds this strategy's needs to what the others declared.
   virtual void declare(Requirements& requirements) const { (void)requirements; }
+  // The highest SH order this strategy's kernels handle; a grid of higher order is refused.
+  virtual int maxShOrder() const { return 1; }
+  // Why this strategy cannot run with what the whole composition requires, or "" if it can
+  // (e.g. a propagation that needs the GV when no occlusion strategy provides one).
+  virtual std::string refusal(const Requirements& requirements) const {
+    (void)requirements;
+    return {};
+  }
   // Compiles kernels and allocates the strategy's own buffers, once per run, after the grid's
   // placement is known; `requirements` is the merged result of every strategy's declare().
   virtual void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                        const Requirements& requirements) = 0;
   // Bytes of GPU memory this strategy allocated itself (for the manifest).
   virtual std::size_t memoryBytes() const { return 0; }
+
+  // The registered name, set by the registry when it creates the strategy.
+  const std::string& name() const { return name_; }
+  void setRegisteredName(std::string name) { name_ = std::move(name); }
+
+private:
+  std::string name_;
 };
 
-// Fills frame.lightGrid.current with the injected intensity (reflected light of the RSM texels).
+// Adds light to frame.lightGrid.current (the pipeline clears it first; several injection
+// strategies may add to the same grid, e.g. RSM VPLs and sky light).
 class InjectionStrategy : public Strategy {
+public:
+  virtual void inject(Frame& frame) = 0;
+};
+
+// Fills frame.geometryVolume (cleared by the pipeline) with blocking potential, or does nothing
+// ("none"). Runs before injection.
+class OcclusionStrategy : public Strategy {
 public:
   virtual void inject(Frame& frame) = 0;
 };

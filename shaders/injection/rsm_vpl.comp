@@ -1,19 +1,25 @@
 #version 450
 // Injection of every RSM texel as a virtual point light (thesis eq. 4.1-4.3): a Lambertian VPL of
 // flux Phi and normal n has intensity I(w) = Phi / pi * max(0, n . w), whose coefficients
-// Phi / pi * shCosineLobe(n) are added (atomically) to the cell containing the texel's position
-// moved `shiftCells` cells along n (against self-illumination). Each texel's flux lands whole in
-// the grid: the sum over cells of shIntegral equals the RSM's total flux, less what falls outside.
+// Phi / pi * cosLobe(n) (any SH order) are added (atomically) to the cell containing the texel's
+// position moved `shiftCells` cells along n (against self-illumination). Each texel's flux lands
+// whole in the grid: the sum over cells of the SH integral equals the RSM's total flux, less what
+// falls outside.
+// With a normal grid (directed propagation), the flux-weighted normal, and the weight, are added
+// to the same cell: xyz = sum Phi n, w = sum Phi (Phi summed over RGB).
 #extension GL_EXT_shader_atomic_float : require
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
+layout(constant_id = 1) const bool WRITE_NORMALS = false;
 
 layout(binding = 0) uniform sampler2DArray rsmPosition;
 layout(binding = 1) uniform sampler2DArray rsmNormal;
 layout(binding = 2) uniform sampler2DArray rsmFlux;
 layout(std430, binding = 0) buffer Grid { float grid[]; };
+layout(std430, binding = 1) buffer Normals { vec4 normals[]; };
 
 layout(location = 0) uniform vec3 gridOrigin;
 layout(location = 1) uniform float cellSize;
@@ -32,8 +38,16 @@ void main() {
   if (!cellInside(cell, resolution)) return;
   int cells = cellCount(resolution);
   int index = cellIndex(cell, resolution);
-  vec4 lobe = shCosineLobe(n) / PI;
-  for (int channel = 0; channel < 3; ++channel)
-    for (int k = 0; k < 4; ++k)
-      atomicAdd(grid[coefficientIndex(channel, k, 4, index, cells)], flux[channel] * lobe[k]);
+  for (int k = 0; k < SH_COEFFICIENTS; ++k) {
+    float lobe = shCosineLobeAt(k, n) / PI;
+    for (int channel = 0; channel < 3; ++channel)
+      atomicAdd(grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)], flux[channel] * lobe);
+  }
+  if (WRITE_NORMALS) {
+    float weight = flux.r + flux.g + flux.b;
+    atomicAdd(normals[index].x, weight * n.x);
+    atomicAdd(normals[index].y, weight * n.y);
+    atomicAdd(normals[index].z, weight * n.z);
+    atomicAdd(normals[index].w, weight);
+  }
 }

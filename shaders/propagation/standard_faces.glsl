@@ -12,27 +12,47 @@
 // clamp. (Thesis eq. 4.9 writes Omega_f / (4 pi): that factor would remove 3/4 of the light at
 // every step; Kaplanyan and Dachsbacher's Omega_f / pi is what conserves flux.) The 30 faces of
 // the 6 neighbours tile the sphere, so a cell's whole flux leaves it each iteration.
+// The same transfer holds at every SH order: only the number of coefficients changes.
 #ifndef LPVLAB_STANDARD_FACES_GLSL
 #define LPVLAB_STANDARD_FACES_GLSL
 #include "../common/sh.glsl"
 
-// Coefficients added to the target by the source's coefficients `c` through one face.
+const int STANDARD_FACES = 5;  // faces of the neighbour that receive light: all but the shared one
+
+// The neighbour one cell along the unit axis `d` receives light through its far face (f = 0:
+// normal d, centre at 1.5 d) and its four side faces (f = 1..4: normal +-s, centre at d + s / 2).
+vec3 standardFaceNormal(vec3 d, int f) {
+  vec3 s1 = vec3(abs(d.y) + abs(d.z), abs(d.x), 0.0);
+  vec3 s2 = cross(d, s1);
+  if (f == 0) return d;
+  if (f == 1) return s1;
+  if (f == 2) return -s1;
+  if (f == 3) return s2;
+  return -s2;
+}
+
+// Unit direction from the source cell's centre to the centre of face f.
+vec3 standardFaceDirection(vec3 d, int f) {
+  if (f == 0) return d;
+  return normalize(d + 0.5 * standardFaceNormal(d, f));
+}
+
+real standardFaceSolidAngle(int f, real farSolidAngle, real sideSolidAngle) {
+  return f == 0 ? farSolidAngle : sideSolidAngle;
+}
+
+// Order 1: coefficients added to the target by the source's coefficients `c` through one face.
 vec4 propagateThroughFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle) {
   real flux = solidAngle * max(0.0, shEvaluate(c, toFaceCentre));
   return (flux / PI) * shCosineLobe(faceNormal);
 }
 
-// Coefficients the source cell `c` sends into its neighbour one cell along the unit axis `d`,
-// through the neighbour's five faces other than the shared one: the far face (normal d, centre
-// at 1.5 d) and four side faces (normal +-s, centre at d + s / 2).
+// Order 1: what the source cell `c` sends into its neighbour one cell along `d`.
 vec4 propagateToNeighbour(vec4 c, vec3 d, real farSolidAngle, real sideSolidAngle) {
-  vec3 s1 = vec3(abs(d.y) + abs(d.z), abs(d.x), 0.0);
-  vec3 s2 = cross(d, s1);
-  vec4 sum = propagateThroughFace(c, d, d, farSolidAngle);
-  sum += propagateThroughFace(c, normalize(d + 0.5 * s1), s1, sideSolidAngle);
-  sum += propagateThroughFace(c, normalize(d - 0.5 * s1), -s1, sideSolidAngle);
-  sum += propagateThroughFace(c, normalize(d + 0.5 * s2), s2, sideSolidAngle);
-  sum += propagateThroughFace(c, normalize(d - 0.5 * s2), -s2, sideSolidAngle);
+  vec4 sum = vec4(0.0);
+  for (int f = 0; f < STANDARD_FACES; ++f)
+    sum += propagateThroughFace(c, standardFaceDirection(d, f), standardFaceNormal(d, f),
+                                standardFaceSolidAngle(f, farSolidAngle, sideSolidAngle));
   return sum;
 }
 

@@ -1,6 +1,6 @@
 #version 450
 // Indirect light at every G-buffer pixel from the accumulated light grid, trilinearly
-// interpolated between the 8 nearest cell centres (clamped at the grid's edge).
+// interpolated between the 8 nearest cell centres (clamped at the grid's edge), at any SH order.
 // The grid holds intensity I (W/sr) per cell; spread over the cell's cross-section it is the
 // radiance L = I / cellSize^2 (Kaplanyan and Dachsbacher 2010). The irradiance from the light
 // arriving at a surface with normal n is E = integral L(w) max(0, -n . w) dw = <L, cosLobe(-n)>,
@@ -9,6 +9,7 @@
 #include "../common/grid.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
@@ -37,7 +38,8 @@ void main() {
   vec3 base = floor(g);
   vec3 f = g - base;
   int cells = cellCount(resolution);
-  vec4 lobe = shCosineLobe(-n);
+  float lobe[SH_MAX_COEFFICIENTS];
+  for (int k = 0; k < SH_COEFFICIENTS; ++k) lobe[k] = shCosineLobeAt(k, -n);
   vec3 e = vec3(0.0);
   for (int corner = 0; corner < 8; ++corner) {
     ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
@@ -45,11 +47,9 @@ void main() {
     vec3 w3 = mix(1.0 - f, f, vec3(o));
     float w = w3.x * w3.y * w3.z;
     int index = cellIndex(c, resolution);
-    for (int channel = 0; channel < 3; ++channel) {
-      int b = coefficientIndex(channel, 0, 4, index, cells);
-      vec4 coefficients = vec4(grid[b], grid[b + cells], grid[b + 2 * cells], grid[b + 3 * cells]);
-      e[channel] += w * dot(coefficients, lobe);
-    }
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < SH_COEFFICIENTS; ++k)
+        e[channel] += w * grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)] * lobe[k];
   }
   vec3 radiance = albedo / PI * max(e, vec3(0.0)) / (cellSize * cellSize);
   imageStore(outIndirect, pixel, vec4(radiance, 1.0));

@@ -34,8 +34,8 @@ TEST(SphericalHarmonics, BasisIsOrthonormal) {
 
 TEST(SphericalHarmonics, CosineLobeIsTheProjectionOfTheClampedCosine) {
   // Closed forms of eq. 4.3 first.
-  EXPECT_NEAR(shared::SH_COSINE_Z0, std::sqrt(M_PI) / 2.0, 1e-15);
-  EXPECT_NEAR(shared::SH_COSINE_Z1, std::sqrt(M_PI / 3.0), 1e-15);
+  EXPECT_NEAR(shared::shZonalCosine(0), std::sqrt(M_PI) / 2.0, 1e-15);
+  EXPECT_NEAR(shared::shZonalCosine(1), std::sqrt(M_PI / 3.0), 1e-15);
   const dvec3 normals[] = {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}, glm::normalize(dvec3(1, 2, -3)),
                            glm::normalize(dvec3(-0.2, 0.9, 0.4))};
   for (const dvec3& n : normals) {

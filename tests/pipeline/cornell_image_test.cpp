@@ -242,7 +242,7 @@ TEST(CornellImage, TrilinearRenderingReproducesAnAnalyticField) {
 
   gl::Texture indirect(GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, "indirect (test)");
   const LightMaps noLightMaps;
-  Frame frame{gbufferPass.gbuffer(), noLightMaps, grid, indirect};
+  Frame frame{.gbuffer = gbufferPass.gbuffer(), .lightMaps = noLightMaps, .lightGrid = grid, .indirect = indirect};
   rendering->render(frame);
   std::vector<float> out(std::size_t(w) * h * 4), position(out.size()), normal(out.size()),
       albedo(out.size());

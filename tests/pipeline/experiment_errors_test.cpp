@@ -194,7 +194,8 @@ height = 80
   EXPECT_EQ(std::max({cells.x, cells.y, cells.z}), 12);
   ASSERT_TRUE(e.strategies.propagation);
   EXPECT_EQ(e.strategies.propagation->iterations(), 7);
-  ASSERT_TRUE(e.strategies.injection);
+  ASSERT_EQ(e.strategies.injection.size(), 1u);
+  ASSERT_TRUE(e.strategies.occlusion);
   ASSERT_TRUE(e.strategies.rendering);
   EXPECT_EQ(e.configuration["propagation"]["iterations"], 7);
   EXPECT_EQ(e.configuration["grid"]["resolution"], 12);

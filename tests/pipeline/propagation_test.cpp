@@ -57,7 +57,7 @@ public:
     grid_.accumulated.upload(acc.data(), acc.size() * sizeof(float));
   }
   void propagate() {
-    Frame frame{gbuffer_, lightMaps_, grid_, indirect_};
+    Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_, .indirect = indirect_};
     strategy_->propagate(frame);
     checkGl("propagation test");
   }

@@ -1,5 +1,6 @@
 // Injection "rsm_vpl": every reflective-shadow-map texel becomes a virtual point light in the
-// light grid (thesis 4.3, eq. 4.1-4.3; kernel shaders/injection/rsm_vpl.comp).
+// light grid (thesis 4.3, eq. 4.1-4.3; kernel shaders/injection/rsm_vpl.comp), at any SH order.
+// When a strategy asks for the normal grid (directed propagation), the VPLs' normals go there too.
 //
 // | parameter | type  | default | meaning                                                       |
 // |-----------|-------|---------|---------------------------------------------------------------|
@@ -9,6 +10,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 
@@ -20,8 +22,14 @@ public:
   explicit RsmVplInjection(Params& params)
       : shiftCells_(params.get<float>("shift", 1.0f, {.min = -4.0f, .max = 4.0f})) {}
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry&, const Requirements&) override {
-    program_ = shaders.compute("injection/rsm_vpl.comp");
+  int maxShOrder() const override { return 3; }
+
+  void prepare(ShaderCompiler& shaders, const GridGeometry&,
+               const Requirements& requirements) override {
+    program_ = shaders.compute(
+        "injection/rsm_vpl.comp",
+        {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
+         SpecConstant::b(1, requirements.normalGrid)});
   }
 
   void inject(Frame& frame) override {
@@ -32,6 +40,7 @@ public:
     glBindTextureUnit(1, maps.rsmNormal.id());
     glBindTextureUnit(2, maps.rsmFlux.id());
     frame.lightGrid.current.bindStorage(0);
+    if (frame.normalGrid) frame.normalGrid->normals.bindStorage(1);
     glUniform3fv(0, 1, &grid.origin[0]);
     glUniform1f(1, grid.cellSize);
     glUniform3iv(2, 1, &grid.resolution[0]);

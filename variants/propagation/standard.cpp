@@ -14,6 +14,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
@@ -26,14 +27,17 @@ public:
   explicit StandardPropagation(Params& params)
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})) {}
 
+  int maxShOrder() const override { return 3; }
+
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override {
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    const int coefficients = shared::shCoefficientCount(requirements.shOrder);
     program_ = shaders.compute("propagation/standard_gather.comp",
                                {SpecConstant::f(0, float(angles.farFace)),
-                                SpecConstant::f(1, float(angles.sideFace))});
-    const std::size_t bytes = std::size_t(3) * (requirements.shOrder + 1) *
-                              (requirements.shOrder + 1) * grid.cellCount() * sizeof(float);
+                                SpecConstant::f(1, float(angles.sideFace)),
+                                SpecConstant::i(2, coefficients)});
+    const std::size_t bytes = std::size_t(3) * coefficients * grid.cellCount() * sizeof(float);
     scratch_ = gl::Buffer(bytes, "light grid (propagation scratch)");
   }
 

@@ -8,6 +8,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 
@@ -19,8 +20,12 @@ public:
   explicit TrilinearRendering(Params& params)
       : normalOffsetCells_(params.get<float>("normal_offset", 0.0f, {.min = -2.0f, .max = 2.0f})) {}
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry&, const Requirements&) override {
-    program_ = shaders.compute("rendering/trilinear.comp");
+  int maxShOrder() const override { return 3; }
+
+  void prepare(ShaderCompiler& shaders, const GridGeometry&,
+               const Requirements& requirements) override {
+    program_ = shaders.compute("rendering/trilinear.comp",
+                               {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder))});
   }
 
   void render(Frame& frame) override {

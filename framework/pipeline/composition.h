@@ -1,0 +1,30 @@
+#pragma once
+// A composition of strategies, one per stage (several for injection), and the check that they
+// can run together: their merged Requirements, or an Error naming the strategy that refuses.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+
+struct Strategies {
+  std::vector<std::unique_ptr<InjectionStrategy>> injection;  // run in order, adding to the grid
+  std::unique_ptr<OcclusionStrategy> occlusion;
+  std::unique_ptr<PropagationStrategy> propagation;
+  std::unique_ptr<RenderingStrategy> rendering;
+
+  // Every strategy with the experiment-file table it came from, e.g. ("propagation", strategy).
+  std::vector<std::pair<std::string, Strategy*>> all() const;
+};
+
+// Every strategy's declare() merged, starting from the grid's SH order, after checking that each
+// strategy handles that order and has no refusal, and that a sky (radiance > 0) is injected.
+Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance);
+
+}  // namespace lpvlab

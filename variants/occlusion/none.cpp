@@ -1,0 +1,21 @@
+// Occlusion "none": no geometry volume; light propagates through surfaces (the standard method
+// without the GV, thesis 4.4 with occlusion switched off). Allocates nothing.
+
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+namespace {
+
+class NoOcclusion final : public OcclusionStrategy {
+public:
+  explicit NoOcclusion(Params&) {}
+  int maxShOrder() const override { return 3; }  // touches no light grid
+  void prepare(ShaderCompiler&, const GridGeometry&, const Requirements&) override {}
+  void inject(Frame&) override {}
+};
+
+LPVLAB_REGISTER(OcclusionStrategy, "none", "no geometry volume: light passes through surfaces",
+                NoOcclusion);
+
+}  // namespace
+}  // namespace lpvlab
