@@ -13,9 +13,10 @@ import os
 import numpy as np
 import pandas as pd
 
-STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "injection",
+STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "occlusion", "injection",
           "propagation", "indirect", "total"]
-TYPE_PARAMS = ["param.injection.type", "param.propagation.type", "param.rendering.type"]
+TYPE_PARAMS = ["param.injection.type", "param.occlusion.type", "param.propagation.type",
+               "param.rendering.type"]
 HIGHER_IS_BETTER = {"psnr", "ssim"}
 DEFAULT_METRIC = "metric.indirect_vs_indirect1.rmse"
 
@@ -25,7 +26,7 @@ class SummaryError(Exception):
 
 
 def _numeric_prefixes():
-    return ("gpu_ms.", "wall_ms.", "metric.")
+    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.")
 
 
 def load_summary(path):
@@ -114,9 +115,9 @@ def is_numeric_param(df, col):
 def variant_label(row, categorical_swept):
     """Label of the algorithm variant of a configuration.
 
-    injection/propagation/rendering types joined by '/', followed by the
+    injection/occlusion/propagation/rendering types joined by '/', followed by the
     swept parameters that are categorical (strings), e.g.
-    'rsm_vpl/standard/trilinear scene.file=a.obj'. Swept *numeric* parameters
+    'rsm_vpl/none/standard/trilinear scene.file=a.obj'. Swept *numeric* parameters
     (iterations, grid resolution, ...) are left out on purpose: they are the
     x axes of the plots, and points of one variant share a colour across them.
     """

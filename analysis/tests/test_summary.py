@@ -35,6 +35,15 @@ class SummaryTest(unittest.TestCase):
         self.assertTrue(math.isinf(agg["metric.indirect_vs_indirect1.rmse"].iloc[1]))
         self.assertEqual(list(agg["variant"]), ["standard", "occlusion"])
 
+    def test_memory_groups_are_numeric(self):
+        p = os.path.join(self.dir, "m.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,param.occlusion.type,memory_bytes,memory_bytes.geometry_volume\n")
+            f.write("a,A,0,a,none,10,0\nb,B,0,b,geometry_volume,30,20\n")
+        agg = S.aggregate(S.load_summary(p))
+        self.assertEqual(list(agg["memory_bytes.geometry_volume"]), [0, 20])
+        self.assertEqual(list(agg["variant"]), ["none", "geometry_volume"])
+
     def test_fixture_aggregate(self):
         agg = S.aggregate(S.load_summary(os.path.join(self.dir, "summary.csv")))
         self.assertEqual(len(agg), 6)

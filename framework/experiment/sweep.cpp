@@ -310,8 +310,10 @@ SummaryResult writeSweepSummary(const std::string& dir) {
     for (const auto& c : index.value("configurations", nlohmann::json::array()))
       names[c.value("id", "")] = c.value("name", "");
   }
-  const std::vector<std::string> fixed = {"injection.type", "propagation.type", "rendering.type",
-                                          "grid.resolution", "propagation.iterations", "scene.file"};
+  const std::vector<std::string> fixed = {"injection.type",   "occlusion.type",
+                                          "propagation.type", "rendering.type",
+                                          "grid.resolution",  "grid.sh_order",
+                                          "propagation.iterations", "scene.file"};
   std::vector<std::string> params = swept;
   for (const std::string& k : fixed)
     if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
@@ -332,9 +334,12 @@ SummaryResult writeSweepSummary(const std::string& dir) {
     manifests.push_back({id, readJson(sub / "manifest.json")});
     result.complete.push_back(id);
   }
-  std::set<std::string> stages;
+  std::set<std::string> stages, memoryGroups;
   std::set<std::pair<std::string, std::string>> metrics;
   for (const auto& [id, m] : manifests) {
+    if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
+      for (const auto& [group, _] : g->items())
+        if (group != "total") memoryGroups.insert(group);
     if (const auto* s = findPath(m, "timing.samples.gpu_ms"); s && s->is_object())
       for (const auto& [stage, _] : s->items()) stages.insert(stage);
     if (const auto* s = findPath(m, "timing.samples.wall_ms"); s && s->is_object())
@@ -351,6 +356,7 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   for (const std::string& s : stages) header.push_back("gpu_ms." + s);
   for (const std::string& s : stages) header.push_back("wall_ms." + s);
   header.push_back("memory_bytes");
+  for (const std::string& g : memoryGroups) header.push_back("memory_bytes." + g);
   header.push_back("cells");
   for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
@@ -378,6 +384,10 @@ SummaryResult writeSweepSummary(const std::string& dir) {
           row.push_back(jsonText(v));
         }
       row.push_back(jsonText(findPath(m, "memory_bytes.total")));
+      for (const std::string& g : memoryGroups) {
+        const auto* groups = findPath(m, "memory_bytes");
+        row.push_back(jsonText(groups && groups->contains(g) ? &(*groups)[g] : nullptr));
+      }
       row.push_back(cells);
       for (const auto& [pair, metric] : metrics) {
         const nlohmann::json* v = nullptr;
