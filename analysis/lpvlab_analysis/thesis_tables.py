@@ -24,7 +24,7 @@ class ThesisTable:
     x: list                # x values (RSM side length, or iteration count)
     stage: str             # lpvlab stage whose gpu_ms is comparable
     columns: dict = field(default_factory=dict)   # name -> list of ms, same length as x
-    applies_to: tuple = () # substrings of propagation.type it matches ('' = any non-extension type)
+    applies_to: tuple = () # substrings of propagation.type or occlusion.type it matches ('' = any non-extension type)
 
 
 _RSM = [32, 64, 128, 256, 512, 1024]
@@ -134,6 +134,15 @@ def _type_matches(table, prop_type):
     return any(k in t for k in table.applies_to)
 
 
+def _methods(agg):
+    """Per row, the names that say which method it ran: propagation.type, and occlusion.type
+    where the sweep records it (the geometry volume of 8.6 is an occlusion strategy)."""
+    names = agg["param.propagation.type"].astype(str)
+    if "param.occlusion.type" in agg.columns:
+        names = names + " " + agg["param.occlusion.type"].astype(str)
+    return list(names)
+
+
 def applicable_tables(agg):
     """Tables whose x parameter varies in the sweep (numerically) and whose
     method matches at least one configuration, with the matching rows:
@@ -144,7 +153,7 @@ def applicable_tables(agg):
             continue
         rows = agg
         if "param.propagation.type" in agg.columns and tab.stage == "propagation":
-            rows = agg[[_type_matches(tab, v) for v in agg["param.propagation.type"]]]
+            rows = agg[[_type_matches(tab, v) for v in _methods(agg)]]
         if len(rows) and f"gpu_ms.{tab.stage}" in rows.columns and rows[f"gpu_ms.{tab.stage}"].notna().any():
             out.append((tab, rows))
     return out

@@ -94,6 +94,15 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
   return out;
 }
 
+// The flux bookkeeping of injection (W, RGB summed): what the RSMs reflect, what the grid holds,
+// and what each injection added. For an RSM injection, RSM flux minus what it added fell outside
+// the grid; other injections (sky light) add flux that is not in the RSMs.
+nlohmann::json injectionFluxJson(const InjectionBalance& balance) {
+  nlohmann::json added = nlohmann::json::object();
+  for (const auto& [table, flux] : balance.byInjection) added[table] = flux;
+  return {{"rsm", balance.rsmFlux}, {"grid", balance.gridFlux}, {"added_by", added}};
+}
+
 }  // namespace
 
 nlohmann::json TimingReport::toJson() const {
@@ -161,9 +170,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"propagation_cell_iterations_per_second",
        propagationMs > 0.0 ? double(grid.cellCount()) * iterations / (propagationMs * 1e-3) : 0.0},
       {"memory_bytes", pipeline.memoryReport()},
-      {"injection_flux_W", {{"rsm", balance.rsmFlux},
-                            {"grid", balance.gridFlux},
-                            {"outside_grid", balance.rsmFlux - balance.gridFlux}}},
+      {"injection_flux_W", injectionFluxJson(balance)},
       {"outputs", {{"exr", "images.exr"}, {"png", "combined.png"},
                    {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
                    {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};

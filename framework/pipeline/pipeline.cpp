@@ -153,15 +153,20 @@ InjectionBalance Pipeline::measureInjection() {
   Frame frame = this->frame();
   clearGrids();
   strategies_.occlusion->inject(frame);
-  injectAll(frame);
   InjectionBalance balance;
+  const auto all = strategies_.all();
+  for (std::size_t i = 0; i < strategies_.injection.size(); ++i) {
+    strategies_.injection[i]->inject(frame);
+    const double total =
+        gridFlux(readGrid(false), lightGrid_.geometry.cellCount(), lightGrid_.coefficients);
+    balance.byInjection.emplace_back(all[i].first, total - balance.gridFlux);
+    balance.gridFlux = total;
+  }
   const LightMaps& maps = lightMapsPass_->lightMaps();
   std::vector<float> flux(std::size_t(maps.rsmResolution) * maps.rsmResolution * maps.views * 4);
   glGetTextureImage(maps.rsmFlux.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(flux.size() * sizeof(float)),
                     flux.data());
   for (std::size_t i = 0; i < flux.size(); i += 4) balance.rsmFlux += flux[i] + flux[i + 1] + flux[i + 2];
-  balance.gridFlux =
-      gridFlux(readGrid(false), lightGrid_.geometry.cellCount(), lightGrid_.coefficients);
   return balance;
 }
 

@@ -43,6 +43,8 @@ struct FrameTimes {
 struct InjectionBalance {
   double rsmFlux = 0.0;
   double gridFlux = 0.0;
+  // Flux each injection strategy added (its experiment table, e.g. "injection.also[0]"), in order.
+  std::vector<std::pair<std::string, double>> byInjection;
 };
 
 class Pipeline {

@@ -4,8 +4,6 @@
 
 namespace lpvlab {
 
-namespace {
-
 void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int colourTargets) {
   framebuffer.bind();
   static const GLenum targets[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
@@ -21,8 +19,6 @@ void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int 
   const float far = 1.0f;
   glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
 }
-
-}  // namespace
 
 GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height)
     : program_(shaders.graphics("raster/scene.vert", "raster/gbuffer.frag")) {

@@ -12,6 +12,11 @@
 
 namespace lpvlab {
 
+// Binds `framebuffer` for drawing the scene into its first `colourTargets` colour attachments
+// (0: depth only): viewport, depth test (less), two-sided, colours cleared to 0, depth to 1.
+// Strategies that rasterise the scene themselves (e.g. injection "sky_columns") start with it.
+void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int colourTargets);
+
 class GBufferPass {
 public:
   GBufferPass(ShaderCompiler& shaders, int width, int height);

@@ -3,6 +3,8 @@
 //   layout(std430, binding = ...) readonly buffer GeometryVolume { float gvBlocking[]; };
 // with the GV's resolution (the light grid's + 1) in `gvResolution`. Outside the GV nothing
 // blocks. Layout: coefficient k of GV cell i at gvBlocking[k * cellCount + i].
+// Written in the shared subset too: a C++ test that defines `gvBlocking` (any indexable array)
+// and `using glm::mix` before including it runs the same lookup in double precision.
 #ifndef LPVLAB_GEOMETRY_VOLUME_LOOKUP_GLSL
 #define LPVLAB_GEOMETRY_VOLUME_LOOKUP_GLSL
 #include "geometry_volume.glsl"
@@ -24,7 +26,7 @@ vec4 gvBlockingAt(vec3 g, ivec3 gvResolution) {
   for (int corner = 0; corner < 8; ++corner) {
     ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
     vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float w = w3.x * w3.y * w3.z;
+    real w = w3.x * w3.y * w3.z;
     if (w > 0.0) sum += w * gvCell(ivec3(base) + o, gvResolution);
   }
   return sum;

@@ -13,9 +13,17 @@
 // every step; Kaplanyan and Dachsbacher's Omega_f / pi is what conserves flux.) The 30 faces of
 // the 6 neighbours tile the sphere, so a cell's whole flux leaves it each iteration.
 // The same transfer holds at every SH order: only the number of coefficients changes.
+//
+// With the geometry volume (thesis 4.4, fig. 4.3, alg. 6.2 lines 11-14) the face's flux is
+// multiplied by the transmittance T = gvTransmittance(B, w_f) of the blocking potential B read
+// where w_f, leaving the source centre, crosses the face the two cells share:
+//     Phi_f = T * Omega_f * max(0, I(w_f))
+// (shaders/common/geometry_volume.glsl). Gather and scatter kernels both call
+// shaders/propagation/standard_transfer.glsl, which calls the functions below.
 #ifndef LPVLAB_STANDARD_FACES_GLSL
 #define LPVLAB_STANDARD_FACES_GLSL
 #include "../common/sh.glsl"
+#include "../common/geometry_volume.glsl"
 
 const int STANDARD_FACES = 5;  // faces of the neighbour that receive light: all but the shared one
 
@@ -41,10 +49,29 @@ real standardFaceSolidAngle(int f, real farSolidAngle, real sideSolidAngle) {
   return f == 0 ? farSolidAngle : sideSolidAngle;
 }
 
-// Order 1: coefficients added to the target by the source's coefficients `c` through one face.
-vec4 propagateThroughFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle) {
-  real flux = solidAngle * max(0.0, shEvaluate(c, toFaceCentre));
+// Where the direction to face f, from the source centre `sourceCentre` (light-grid coordinates),
+// crosses the face shared with the neighbour along d: where the GV is read.
+vec3 standardFaceCrossing(vec3 sourceCentre, vec3 d, int f) {
+  return sharedFaceCrossing(sourceCentre, d, standardFaceDirection(d, f));
+}
+
+// The flux (W) through one face: the source's intensity towards the face centre, clamped, times
+// the face's solid angle and the transmittance of the GV there (1 without a GV).
+real standardFaceFlux(real intensity, real solidAngle, real transmittance) {
+  return transmittance * solidAngle * max(0.0, intensity);
+}
+
+// Order 1: coefficients added to the target by the source's coefficients `c` through one face
+// whose crossing point lets `transmittance` of the light through.
+vec4 propagateThroughOccludedFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle,
+                                  real transmittance) {
+  real flux = standardFaceFlux(shEvaluate(c, toFaceCentre), solidAngle, transmittance);
   return (flux / PI) * shCosineLobe(faceNormal);
+}
+
+// Order 1, without a GV.
+vec4 propagateThroughFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle) {
+  return propagateThroughOccludedFace(c, toFaceCentre, faceNormal, solidAngle, 1.0);
 }
 
 // Order 1: what the source cell `c` sends into its neighbour one cell along `d`.

@@ -5,11 +5,22 @@
 // radiance L = I / cellSize^2 (Kaplanyan and Dachsbacher 2010). The irradiance from the light
 // arriving at a surface with normal n is E = integral L(w) max(0, -n . w) dw = <L, cosLobe(-n)>,
 // and the Lambertian surface reflects L_o = albedo / pi * E.
+// Options (specialisation constants, so "trilinear" alone pays for neither):
+//   LEAK_DAMPING: E is scaled by leak_damping.glsl's factor, from E's slope along n, which the
+//                 same 8 reads give (trilinear_weights.glsl).
+//   GLOSSY:       adds specularAlbedo * the grid's radiance arriving from the reflected view
+//                 direction r, weighted by a normalised Phong lobe (phong_lobe.glsl) and averaged
+//                 over samples marched along r (docs/variants/glossy.md).
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
+#include "trilinear_weights.glsl"
+#include "leak_damping.glsl"
+#include "phong_lobe.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
+layout(constant_id = 1) const bool LEAK_DAMPING = false;
+layout(constant_id = 2) const bool GLOSSY = false;
 
 layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
@@ -21,6 +32,59 @@ layout(location = 0) uniform vec3 gridOrigin;
 layout(location = 1) uniform float cellSize;
 layout(location = 2) uniform ivec3 resolution;
 layout(location = 3) uniform float normalOffsetCells;
+layout(location = 4) uniform float leakDampingStrength;
+layout(location = 5) uniform vec3 cameraPosition;
+layout(location = 6) uniform float specularAlbedo;
+layout(location = 7) uniform float phongExponent;
+layout(location = 8) uniform float marchStepCells;
+layout(location = 9) uniform int marchSamples;
+
+// The grid's intensity projected on `lobe`, per channel, trilinearly interpolated at grid
+// coordinates g, and (if withSlope) its derivative per cell along the unit direction d.
+struct LobeSample {
+  vec3 value;
+  vec3 slope;
+};
+
+LobeSample sampleLobe(vec3 g, float lobe[SH_MAX_COEFFICIENTS], bool withSlope, vec3 d) {
+  // Cell centres sit at integer + 0.5 in grid coordinates.
+  vec3 centred = g - 0.5;
+  vec3 base = floor(centred);
+  vec3 f = centred - base;
+  int cells = cellCount(resolution);
+  LobeSample s = LobeSample(vec3(0.0), vec3(0.0));
+  for (int corner = 0; corner < 8; ++corner) {
+    ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    int index = cellIndex(clamp(ivec3(base) + o, ivec3(0), resolution - 1), resolution);
+    vec3 v = vec3(0.0);
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < SH_COEFFICIENTS; ++k)
+        v[channel] += grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)] * lobe[k];
+    s.value += trilinearWeight(o, f) * v;
+    if (withSlope) s.slope += trilinearWeightSlope(o, f, d) * v;
+  }
+  return s;
+}
+
+// Mean lobe-weighted intensity (W/sr) arriving at p from around the reflected direction r, read
+// at marchSamples points p + (j + 1/2) marchStepCells r. The march ends where it leaves the grid,
+// but always reads its first sample (clamped to the grid's edge, as the diffuse read is), so a
+// surface next to the edge still gets a glossy term.
+vec3 glossyIntensity(vec3 p, vec3 r) {
+  float lobe[SH_MAX_COEFFICIENTS];
+  // Light arriving from r travels along -r.
+  for (int k = 0; k < SH_COEFFICIENTS; ++k) lobe[k] = shPhongLobeAt(k, -r, phongExponent);
+  vec3 start = gridFromWorld(p, gridOrigin, cellSize);
+  vec3 sum = vec3(0.0);
+  int inside = 0;
+  for (int j = 0; j < marchSamples; ++j) {
+    vec3 g = start + r * ((float(j) + 0.5) * marchStepCells);
+    if (j > 0 && (any(lessThan(g, vec3(0.0))) || any(greaterThan(g, vec3(resolution))))) break;
+    sum += sampleLobe(g, lobe, false, r).value;
+    ++inside;
+  }
+  return inside > 0 ? max(sum / float(inside), vec3(0.0)) : vec3(0.0);
+}
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -33,24 +97,21 @@ void main() {
   vec3 n = texelFetch(gNormal, pixel, 0).xyz;
   vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
   vec3 p = position.xyz + n * (normalOffsetCells * cellSize);
-  // Cell centres sit at integer + 0.5 in grid coordinates.
-  vec3 g = gridFromWorld(p, gridOrigin, cellSize) - 0.5;
-  vec3 base = floor(g);
-  vec3 f = g - base;
-  int cells = cellCount(resolution);
   float lobe[SH_MAX_COEFFICIENTS];
   for (int k = 0; k < SH_COEFFICIENTS; ++k) lobe[k] = shCosineLobeAt(k, -n);
-  vec3 e = vec3(0.0);
-  for (int corner = 0; corner < 8; ++corner) {
-    ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-    ivec3 c = clamp(ivec3(base) + o, ivec3(0), resolution - 1);
-    vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float w = w3.x * w3.y * w3.z;
-    int index = cellIndex(c, resolution);
-    for (int channel = 0; channel < 3; ++channel)
-      for (int k = 0; k < SH_COEFFICIENTS; ++k)
-        e[channel] += w * grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)] * lobe[k];
+  LobeSample diffuse = sampleLobe(gridFromWorld(p, gridOrigin, cellSize), lobe, LEAK_DAMPING, n);
+  vec3 e = diffuse.value;
+  if (LEAK_DAMPING) {
+    float total = e.r + e.g + e.b;
+    e *= leakDampingFactor(total, diffuse.slope.r + diffuse.slope.g + diffuse.slope.b,
+                           leakDampingStrength);
   }
-  vec3 radiance = albedo / PI * max(e, vec3(0.0)) / (cellSize * cellSize);
+  float cs2 = cellSize * cellSize;
+  vec3 radiance = albedo / PI * max(e, vec3(0.0)) / cs2;
+  if (GLOSSY) {
+    vec3 toCamera = cameraPosition - position.xyz;
+    vec3 v = dot(toCamera, toCamera) > 0.0 ? normalize(toCamera) : n;
+    radiance += specularAlbedo * glossyIntensity(p, reflect(-v, n)) / cs2;
+  }
   imageStore(outIndirect, pixel, vec4(radiance, 1.0));
 }

@@ -149,11 +149,13 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
   ASSERT_EQ(before.rows.size(), 6u);
   const std::vector<std::string> leading = {"config_id", "config_name", "repeat", "run_dir",
                                             "param.propagation.iterations", "param.injection.type",
-                                            "param.propagation.type", "param.rendering.type",
-                                            "param.grid.resolution", "param.scene.file"};
+                                            "param.occlusion.type", "param.propagation.type",
+                                            "param.rendering.type", "param.grid.resolution",
+                                            "param.grid.sh_order", "param.scene.file"};
   ASSERT_GE(before.header.size(), leading.size());
   for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(before.header[i], leading[i]);
-  for (const char* column : {"gpu_ms.total", "wall_ms.total", "gpu_ms.propagation", "memory_bytes", "cells"})
+  for (const char* column : {"gpu_ms.total", "wall_ms.total", "gpu_ms.propagation", "memory_bytes",
+                             "memory_bytes.light_grid", "memory_bytes.geometry_volume", "cells"})
     EXPECT_NE(std::find(before.header.begin(), before.header.end(), column), before.header.end()) << column;
   std::set<std::string> iterations;
   for (const auto& row : before.rows) {

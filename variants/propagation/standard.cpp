@@ -1,13 +1,21 @@
 // Propagation "standard": light flows from each cell into its six face neighbours through the
 // five faces not shared with the source, with the face solid angles derived in
 // framework/math/solid_angle.cpp (thesis 4.4, alg. 6.2; Kaplanyan and Dachsbacher 2010).
-// Implemented by gathering (shaders/propagation/standard_gather.comp); the per-face mathematics
-// and its normalisation are in shaders/propagation/standard_faces.glsl.
+// Two implementations of the same transfer (thesis 7.4.3): gathering
+// (shaders/propagation/standard_gather.comp: each cell pulls from its neighbours, plain writes)
+// and scattering (standard_scatter.comp: each cell pushes into its neighbours with float
+// atomics). Both call the one face loop of standard_transfer.glsl; the per-face mathematics,
+// its normalisation and the geometry volume's attenuation are in standard_faces.glsl.
+// When an occlusion strategy provides a geometry volume, each face's flux is multiplied by the
+// GV's transmittance from iteration GeometryVolume::firstOccludedIteration on (alg. 6.2
+// lines 11-14).
 //
-// | parameter  | type | default | meaning                                                     |
-// |------------|------|---------|-------------------------------------------------------------|
-// | iterations | int  | 32      | propagation steps; light travels one cell per step (0..4096): |
-// |            |      |         | a 32-cell grid needs about 32 for light to cross it           |
+// | parameter  | type   | default  | meaning                                                     |
+// |------------|--------|----------|-------------------------------------------------------------|
+// | iterations | int    | 32       | propagation steps; light travels one cell per step (0..4096): |
+// |            |        |          | a 32-cell grid needs about 32 for light to cross it           |
+// | method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
+// |            |        |          | different memory traffic (scatter uses atomics)               |
 
 #include <utility>
 
@@ -25,7 +33,8 @@ namespace {
 class StandardPropagation final : public PropagationStrategy {
 public:
   explicit StandardPropagation(Params& params)
-      : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})) {}
+      : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
+        scatter_(params.getChoice("method", "gather", {"gather", "scatter"}) == "scatter") {}
 
   int maxShOrder() const override { return 3; }
 
@@ -33,10 +42,10 @@ public:
                const Requirements& requirements) override {
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-    program_ = shaders.compute("propagation/standard_gather.comp",
-                               {SpecConstant::f(0, float(angles.farFace)),
-                                SpecConstant::f(1, float(angles.sideFace)),
-                                SpecConstant::i(2, coefficients)});
+    program_ = shaders.compute(
+        scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
+        {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
+         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.geometryVolume)});
     const std::size_t bytes = std::size_t(3) * coefficients * grid.cellCount() * sizeof(float);
     scratch_ = gl::Buffer(bytes, "light grid (propagation scratch)");
   }
@@ -45,9 +54,20 @@ public:
     LightGrid& grid = frame.lightGrid;
     program_.use();
     glUniform3iv(0, 1, &grid.geometry.resolution[0]);
+    // Without a GV the kernels were compiled without its reads, and these uniforms don't exist.
+    const GeometryVolume* gv = frame.geometryVolume;
+    if (gv) {
+      glUniform1i(2, gv->firstOccludedIteration);
+      gv->blocking.bindStorage(3);
+    }
     grid.accumulated.bindStorage(2);
     for (int i = 0; i < iterations_; ++i) {
+      if (gv) glUniform1i(1, i);
       grid.current.bindStorage(0);
+      if (scatter_) {
+        scratch_.zero();  // the atomics add into it
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+      }
       scratch_.bindStorage(1);
       dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
@@ -59,12 +79,14 @@ public:
 
 private:
   int iterations_;
+  bool scatter_;
   Program program_;
   gl::Buffer scratch_;
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "standard",
-                "six-neighbour propagation through five faces each, by gathering (thesis 4.4)",
+                "six-neighbour propagation through five faces each, by gathering or scattering, "
+                "attenuated by the geometry volume when there is one (thesis 4.4, 7.4.3)",
                 StandardPropagation);
 
 }  // namespace

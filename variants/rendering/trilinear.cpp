@@ -1,55 +1,82 @@
 // Rendering "trilinear": indirect light read from one light grid, trilinearly interpolated, at
-// each visible surface point (thesis 4.5, 6.9.3; kernel shaders/rendering/trilinear.comp).
+// each visible surface point (thesis 4.5, 6.9.3; kernel shaders/rendering/trilinear.comp), with
+// optional leak damping (thesis 4.5, fig. 4.3 right; docs/variants/leak_damping.md): where the
+// light read grows towards the surface along its normal, it probably came through the wall
+// behind, and is damped. Damping is a parameter, not a strategy of its own, because it changes
+// only one factor of the same read, and combines with "glossy" (glossy.cpp), which shares this
+// kernel. docs/variants/trilinear.md.
 //
 // | parameter     | type  | default | meaning                                                  |
 // |---------------|-------|---------|----------------------------------------------------------|
 // | normal_offset | float | 0.0     | read the grid this many cells along the surface normal   |
+// |               |       |         | (-2..2)                                                  |
+// | leak_damping  | float | 0.0     | strength k of the damping exp(-k g), g = the light's     |
+// |               |       |         | relative growth per cell towards the surface (0..16);    |
+// |               |       |         | 0 = off                                                  |
 
+#include "variants/rendering/trilinear_kernel.h"
+
+#include "framework/core/parameters.h"
 #include "framework/gl/dispatch.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
-#include "framework/pipeline/strategy.h"
+#include "framework/scene/scene.h"
 
 namespace lpvlab {
+
+TrilinearKernelOptions TrilinearKernelOptions::readDiffuse(Params& params) {
+  TrilinearKernelOptions options;
+  options.normalOffsetCells = params.get<float>("normal_offset", 0.0f, {.min = -2.0f, .max = 2.0f});
+  options.leakDamping = params.get<float>("leak_damping", 0.0f, {.min = 0.0f, .max = 16.0f});
+  return options;
+}
+
+void TrilinearKernelRendering::prepare(ShaderCompiler& shaders, const GridGeometry&,
+                                       const Requirements& requirements) {
+  program_ = shaders.compute("rendering/trilinear.comp",
+                             {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
+                              SpecConstant::b(1, options_.leakDamping > 0.0f),
+                              SpecConstant::b(2, options_.specularAlbedo > 0.0f)});
+}
+
+void TrilinearKernelRendering::render(Frame& frame) {
+  const GridGeometry& grid = frame.lightGrid.geometry;
+  // The camera is needed only by the glossy march (the view direction).
+  const glm::vec3 cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f);
+  program_.use();
+  glBindTextureUnit(0, frame.gbuffer.position.id());
+  glBindTextureUnit(1, frame.gbuffer.normal.id());
+  glBindTextureUnit(2, frame.gbuffer.albedo.id());
+  frame.lightGrid.accumulated.bindStorage(0);
+  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glUniform3fv(0, 1, &grid.origin[0]);
+  glUniform1f(1, grid.cellSize);
+  glUniform3iv(2, 1, &grid.resolution[0]);
+  glUniform1f(3, options_.normalOffsetCells);
+  // An option that is off is compiled out with its uniforms, which then must not be set.
+  if (options_.leakDamping > 0.0f) glUniform1f(4, options_.leakDamping);
+  if (options_.specularAlbedo > 0.0f) {
+    glUniform3fv(5, 1, &cameraPosition[0]);
+    glUniform1f(6, options_.specularAlbedo);
+    glUniform1f(7, options_.phongExponent);
+    glUniform1f(8, options_.marchStepCells);
+    glUniform1i(9, options_.marchSamples);
+  }
+  dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+}
+
 namespace {
 
-class TrilinearRendering final : public RenderingStrategy {
+class TrilinearRendering final : public TrilinearKernelRendering {
 public:
   explicit TrilinearRendering(Params& params)
-      : normalOffsetCells_(params.get<float>("normal_offset", 0.0f, {.min = -2.0f, .max = 2.0f})) {}
-
-  int maxShOrder() const override { return 3; }
-
-  void prepare(ShaderCompiler& shaders, const GridGeometry&,
-               const Requirements& requirements) override {
-    program_ = shaders.compute("rendering/trilinear.comp",
-                               {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder))});
-  }
-
-  void render(Frame& frame) override {
-    const GridGeometry& grid = frame.lightGrid.geometry;
-    program_.use();
-    glBindTextureUnit(0, frame.gbuffer.position.id());
-    glBindTextureUnit(1, frame.gbuffer.normal.id());
-    glBindTextureUnit(2, frame.gbuffer.albedo.id());
-    frame.lightGrid.accumulated.bindStorage(0);
-    glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glUniform3fv(0, 1, &grid.origin[0]);
-    glUniform1f(1, grid.cellSize);
-    glUniform3iv(2, 1, &grid.resolution[0]);
-    glUniform1f(3, normalOffsetCells_);
-    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
-  }
-
-private:
-  float normalOffsetCells_;
-  Program program_;
+      : TrilinearKernelRendering(TrilinearKernelOptions::readDiffuse(params)) {}
 };
 
 LPVLAB_REGISTER(RenderingStrategy, "trilinear",
-                "one grid, trilinear interpolation, Lambertian surfaces (thesis 4.5)",
+                "one grid, trilinear interpolation, Lambertian surfaces, optional leak damping "
+                "(thesis 4.5)",
                 TrilinearRendering);
 
 }  // namespace

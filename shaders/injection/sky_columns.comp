@@ -1,0 +1,43 @@
+#version 450
+// Sky light into the light grid, one invocation per texel of the top-down depth map: the flux
+// pi L a through the texel's open column top becomes a downward Lambertian lobe L a max(0, -y.w)
+// in the cell `shiftCells` above the column's first surface (derivation and normalisation in
+// sky_columns.glsl). Texels that meet no surface inside the grid inject nothing: that light
+// leaves through the grid's bottom without lighting anything.
+#extension GL_EXT_shader_atomic_float : require
+#include "../common/grid.glsl"
+#include "sky_columns.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
+
+layout(binding = 0) uniform sampler2D skyDepth;
+layout(std430, binding = 0) buffer Grid { float grid[]; };
+
+layout(location = 0) uniform vec3 gridOrigin;
+layout(location = 1) uniform float cellSize;
+layout(location = 2) uniform ivec3 resolution;
+layout(location = 3) uniform float shiftCells;
+layout(location = 4) uniform vec3 skyPerTexel;  // L a per channel, W/sr
+
+void main() {
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = textureSize(skyDepth, 0);
+  if (texel.x >= size.x || texel.y >= size.y) return;
+  float depth = texelFetch(skyDepth, texel, 0).r;
+  if (depth >= 1.0) return;
+  vec3 extent = vec3(resolution) * cellSize;
+  float surfaceY = skySurfaceHeight(depth, gridOrigin.y + extent.y, extent.y);
+  // Texel (i, j) is the column over x in [i, i+1) and z in [j, j+1) texel widths.
+  ivec3 cell = ivec3((texel.x * resolution.x) / size.x,
+                     skyInjectionLayer(surfaceY, shiftCells, gridOrigin.y, cellSize, resolution.y),
+                     (texel.y * resolution.z) / size.y);
+  int cells = cellCount(resolution);
+  int index = cellIndex(cell, resolution);
+  for (int k = 0; k < SH_COEFFICIENTS; ++k) {
+    float lobe = skyDownwardLobeAt(k);
+    for (int channel = 0; channel < 3; ++channel)
+      atomicAdd(grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)],
+                skyPerTexel[channel] * lobe);
+  }
+}

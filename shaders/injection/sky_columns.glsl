@@ -1,0 +1,37 @@
+// Sky light injected column by column (injection "sky_columns", thesis 5.3 and 6.9.4), shared by
+// the kernel shaders/injection/sky_columns.comp and the double-precision C++ of the tests.
+//
+// A top-down orthographic depth map covers the grid's xz extent; its near plane is the grid's top
+// face, its far plane the bottom face, so a texel's depth d in [0, 1] is the first surface below
+// the grid's top along that vertical line, at height y = top - d * height (d = 1: none).
+//
+// Each texel is a vertical prism of cross-section a (m^2) open to the sky above its first
+// surface. A constant sky of radiance L over the upper hemisphere gives irradiance pi L on a
+// horizontal face, so the prism's open top lets in the flux pi L a (per channel). That flux is
+// injected as a Lambertian emitter facing down, the same form a propagation face re-emits
+// (shaders/propagation/standard_faces.glsl):
+//     I(w) = pi L a / pi * max(0, -y . w) = L a max(0, -y . w)        [W/sr]
+// whose integral over the sphere is pi L a: the injected flux is exactly the flux through the
+// prism's top. It goes into the cell `shift` cells above the first surface (the lowest free cell
+// for shift = 1), clamped to the grid's top layer.
+#ifndef LPVLAB_SKY_COLUMNS_GLSL
+#define LPVLAB_SKY_COLUMNS_GLSL
+#include "../common/sh.glsl"
+
+// Height (world y) of the first surface below the grid's top at depth-map depth `depth`.
+real skySurfaceHeight(real depth, real gridTop, real gridHeight) {
+  return gridTop - depth * gridHeight;
+}
+
+// The layer (grid y index) that receives the light falling on a surface at height `surfaceY`.
+int skyInjectionLayer(real surfaceY, real shiftCells, real gridOriginY, real cellSize, int layers) {
+  int layer = int(floor((surfaceY - gridOriginY) / cellSize + shiftCells));
+  return clamp(layer, 0, layers - 1);
+}
+
+// Coefficient k of I(w) = max(0, -y . w): the downward Lambertian lobe per unit of L a.
+real skyDownwardLobeAt(int k) {
+  return shCosineLobeAt(k, vec3(0.0, -1.0, 0.0));
+}
+
+#endif

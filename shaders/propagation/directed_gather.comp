@@ -1,0 +1,66 @@
+#version 450
+// One iteration of directed propagation by gathering: as standard_gather.comp, with the second
+// reprojection of alg. 6.3 about this (the receiving) cell's dilated normal applied to what each
+// face passes (directed_faces.glsl). Order 1. With a geometry volume, the light crossing the
+// shared face is attenuated by its blocking potential (thesis alg. 6.2 lines 11-15) from the
+// occlusion strategy's first occluded iteration on.
+#include "directed_faces.glsl"
+#include "../common/grid.glsl"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
+layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
+layout(constant_id = 2) const bool GEOMETRY_VOLUME = false;
+
+layout(std430, binding = 0) readonly buffer Source { float source[]; };
+layout(std430, binding = 1) writeonly buffer Target { float target[]; };
+layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
+layout(std430, binding = 3) readonly buffer Normals { vec4 normals[]; };
+layout(std430, binding = 4) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(location = 0) uniform ivec3 resolution;
+layout(location = 1) uniform int occludeThisIteration;  // 0 or 1
+
+#include "../common/geometry_volume_lookup.glsl"
+
+void main() {
+  ivec3 cell = ivec3(gl_GlobalInvocationID);
+  if (!cellInside(cell, resolution)) return;
+  int cells = cellCount(resolution);
+  int index = cellIndex(cell, resolution);
+  vec3 normal = directedUnitNormal(normals[index]);
+  float gain = directedGainOf(normals[index], FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
+  bool occluded = GEOMETRY_VOLUME && occludeThisIteration != 0;
+  vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int sign = -1; sign <= 1; sign += 2) {
+      ivec3 offset = ivec3(0);
+      offset[axis] = sign;
+      ivec3 neighbour = cell + offset;
+      if (!cellInside(neighbour, resolution)) continue;
+      int n = cellIndex(neighbour, resolution);
+      vec4 c[3];
+      for (int channel = 0; channel < 3; ++channel)
+        for (int k = 0; k < 4; ++k) c[channel][k] = source[coefficientIndex(channel, k, 4, n, cells)];
+      vec3 towardsUs = vec3(-offset);
+      for (int f = 0; f < STANDARD_FACES; ++f) {
+        vec3 direction = standardFaceDirection(towardsUs, f);
+        vec3 faceNormal = standardFaceNormal(towardsUs, f);
+        float solidAngle = standardFaceSolidAngle(f, FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
+        float transmittance = 1.0;
+        if (occluded) {
+          vec3 crossing = standardFaceCrossing(vec3(neighbour) + 0.5, towardsUs, f);
+          transmittance = gvTransmittance(gvBlockingAt(crossing, resolution + 1), direction);
+        }
+        for (int channel = 0; channel < 3; ++channel)
+          gathered[channel] += directedThroughFace(c[channel], direction, faceNormal, solidAngle,
+                                                   transmittance, normal, gain);
+      }
+    }
+  }
+  for (int channel = 0; channel < 3; ++channel)
+    for (int k = 0; k < 4; ++k) {
+      int i = coefficientIndex(channel, k, 4, index, cells);
+      target[i] = gathered[channel][k];
+      accumulated[i] += gathered[channel][k];
+    }
+}

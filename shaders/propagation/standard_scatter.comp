@@ -1,0 +1,49 @@
+#version 450
+// One iteration of standard propagation by scattering (thesis 7.4.3): every cell pushes into its
+// six face neighbours what it sends them through their five faces (standard_transfer.glsl, the
+// same transfer the gather kernel pulls), adding it with float atomics to the next iteration's
+// light (cleared before the dispatch) and to the accumulated grid. Light that would leave the
+// grid is lost. Gives the gather kernel's grid up to the order of float additions.
+#extension GL_EXT_shader_atomic_float : require
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
+layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
+layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
+layout(constant_id = 3) const bool HAS_GV = false;
+
+layout(std430, binding = 0) readonly buffer Source { float source[]; };
+layout(std430, binding = 1) buffer Target { float target[]; };
+layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
+layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(location = 0) uniform ivec3 resolution;
+layout(location = 1) uniform int iteration;               // 0 for the first step after injection
+layout(location = 2) uniform int firstOccludedIteration;  // GeometryVolume::firstOccludedIteration
+
+const int N = SH_COEFFICIENTS;
+#include "standard_transfer.glsl"
+
+void main() {
+  ivec3 cell = ivec3(gl_GlobalInvocationID);
+  if (!cellInside(cell, resolution)) return;
+  int cells = cellCount(resolution);
+  bool occluded = iteration >= firstOccludedIteration;
+  if (HAS_GV && occluded) loadGvCorners(cell, resolution + 1);  // every face crossed is this cell's
+  loadSourceCell(cellIndex(cell, resolution), cells);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int sign = -1; sign <= 1; sign += 2) {
+      ivec3 offset = ivec3(0);
+      offset[axis] = sign;
+      ivec3 neighbour = cell + offset;
+      if (!cellInside(neighbour, resolution)) continue;
+      standardTransfer(cell, vec3(offset), occluded, resolution, FAR_FACE_SOLID_ANGLE,
+                       SIDE_FACE_SOLID_ANGLE);
+      int n = cellIndex(neighbour, resolution);
+      for (int channel = 0; channel < 3; ++channel)
+        for (int k = 0; k < N; ++k) {
+          int i = coefficientIndex(channel, k, N, n, cells);
+          atomicAdd(target[i], transferred[channel * N + k]);
+          atomicAdd(accumulated[i], transferred[channel * N + k]);
+        }
+    }
+  }
+}

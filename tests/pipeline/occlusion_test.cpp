@@ -1,0 +1,266 @@
+// Occlusion "geometry_volume" (variants/occlusion/geometry_volume.cpp) and what the GV does to
+// propagation:
+//   - GV injection ground truth on the built-in Cornell box seen by the camera: every surfel adds
+//     A_s / s^2 * cosLobe(-n), whose integral over the sphere is pi A_s / s^2, so the sum over GV
+//     cells of shIntegral(c) / pi is the visible area over s^2. The visible area is computed
+//     independently by casting the camera's rays at the scene's triangles in double precision
+//     (pipeline_test_support.h): per pixel, the footprint of its ray's hit (with the kernel's
+//     clamp of 1/|cos|), and, as the exact integral, the unclamped footprints of 3x3 rays per
+//     pixel;
+//   - merging by the larger coefficients: per GV cell the merged GV is the camera's cell or the
+//     light views' cell, whichever has the larger c0;
+//   - a wall of fully blocking GV cells stops the light of a VPL behind it (exactly: the GV's
+//     transmittance is 0 there), while without the GV the light passes;
+//   - the parameters: skip_first_iteration sets GeometryVolume::firstOccludedIteration, and bad
+//     `sources` are errors naming the key.
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <toml++/toml.h>
+
+#include "framework/core/error.h"
+#include "framework/experiment/experiment.h"
+#include "framework/pipeline/light_views.h"
+#include "framework/pipeline/raster_passes.h"
+#include "framework/pipeline/scene_gpu.h"
+#include "gv_propagation_rig.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/occlusion/surfel_area.glsl"
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+namespace {
+
+using test::Floats;
+
+// The built-in Cornell box with its G-buffer and RSMs rendered, and GVs filled from them.
+class GvScene {
+public:
+  GvScene() : experiment_(load()) {
+    scene_ = std::make_unique<SceneGpu>(experiment_.scene);
+    const PipelineSettings& s = experiment_.settings;
+    gbufferPass_ = std::make_unique<GBufferPass>(shaders_, s.width, s.height);
+    gbufferPass_->render(*scene_, experiment_.camera);
+    lightMapsPass_ = std::make_unique<LightMapsPass>(
+        shaders_, buildLightViews(experiment_.scene.lights, experiment_.scene.bounds()),
+        s.rsmResolution, s.shadowResolution);
+    lightMapsPass_->renderRsms(*scene_);
+    grid_ = LightGrid(s.grid, 1);
+  }
+
+  // The GV's blocking coefficients after the strategy with these sources injected.
+  Floats inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
+                bool skipFirst = true) {
+    toml::table table;
+    toml::array list;
+    for (const std::string& source : sources) list.push_back(source);
+    table.insert("sources", list);
+    table.insert("skip_first_iteration", skipFirst);
+    Params params(table, "occlusion test", "occlusion");
+    auto strategy = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
+    params.finish();
+    Requirements requirements;
+    strategy->declare(requirements);
+    EXPECT_TRUE(requirements.geometryVolume);
+    strategy->prepare(shaders_, grid_.geometry, requirements);
+    GeometryVolume gv(grid_.geometry, false);
+    gv.clear();
+    gv.firstOccludedIteration = -1;
+    Frame frame{.scene = scene_.get(), .camera = &experiment_.camera,
+                .gbuffer = gbufferPass_->gbuffer(), .lightMaps = lightMapsPass_->lightMaps(),
+                .lightGrid = grid_, .indirect = indirect_, .geometryVolume = &gv};
+    strategy->inject(frame);
+    glFinish();
+    checkGl("occlusion test");
+    if (firstOccluded) *firstOccluded = gv.firstOccludedIteration;
+    Floats blocking(std::size_t(gv.geometry.cellCount()) * 4);
+    gv.blocking.download(blocking.data(), blocking.size() * sizeof(float));
+    return blocking;
+  }
+
+  const Experiment& experiment() const { return experiment_; }
+  double cellSize() const { return grid_.geometry.cellSize; }
+
+private:
+  static Experiment load() {
+    test::glTestContext();
+    return loadExperiment("", {"output.width=128", "output.height=128",
+                               "light_maps.shadow_resolution=128", "light_maps.rsm_resolution=128"});
+  }
+  Experiment experiment_;
+  ShaderCompiler shaders_;
+  std::unique_ptr<SceneGpu> scene_;
+  std::unique_ptr<GBufferPass> gbufferPass_;
+  std::unique_ptr<LightMapsPass> lightMapsPass_;
+  LightGrid grid_;
+  gl::Texture indirect_;
+};
+
+// Sum over GV cells of shIntegral(c) / pi: the surfels' area in units of s^2.
+double gvArea(const Floats& blocking) {
+  const std::size_t cells = blocking.size() / 4;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < cells; ++i) sum += shared::shIntegralOfC0(blocking[i]) / M_PI;
+  return sum;
+}
+
+// The camera's visible area (m^2) by ray casting `samples`^2 rays per output pixel; `clamped`:
+// with the kernel's clamp of 1/|cos| (surfel_area.glsl), else the exact footprints.
+double raycastVisibleArea(const Experiment& e, int samples, bool clamped) {
+  const test::SceneRaycaster raycaster(e.scene);
+  const Camera& camera = e.camera;
+  const int w = e.settings.width * samples, h = e.settings.height * samples;
+  const double texelEdge = 2.0 * std::tan(0.5 * double(camera.verticalFov)) / h;
+  double area = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const glm::dvec3 ray = test::cameraRay(camera, w, h, x, y);
+      const auto hit = raycaster.cast(glm::dvec3(camera.position), ray);
+      if (!hit) continue;
+      const double distance = hit->t * glm::length(ray);
+      const double cosine = std::abs(glm::dot(hit->normal, ray)) / glm::length(ray);
+      area += clamped ? shared::perspectiveSurfelArea(texelEdge, hit->t, distance, cosine)
+                      : texelEdge * texelEdge * hit->t * hit->t * hit->t / (distance * cosine);
+    }
+  return area;
+}
+
+TEST(Occlusion, CameraSurfelsAddUpToTheVisibleArea) {
+  GvScene scene;
+  const Floats gv = scene.inject({"camera"});
+  const double s2 = scene.cellSize() * scene.cellSize();
+  const double gpu = gvArea(gv) * s2;
+  const double clamped = raycastVisibleArea(scene.experiment(), 1, true);
+  const double exact = raycastVisibleArea(scene.experiment(), 3, false);
+  std::cout << "[ occlusion ] camera's visible area: GV " << gpu << " m^2, ray cast per pixel "
+            << "(clamped 1/cos) " << clamped << " m^2, exact (3x3 rays per pixel) " << exact
+            << " m^2\n";
+  ASSERT_GT(exact, 0.1);
+  EXPECT_NEAR(gpu, clamped, 0.01 * clamped) << "rasterised vs ray-cast pixels";
+  // The clamp only removes area, and little of it in this view.
+  EXPECT_LE(clamped, exact * 1.005);
+  EXPECT_NEAR(gpu, exact, 0.03 * exact);
+}
+
+TEST(Occlusion, MergeKeepsPerCellTheSourceWithTheLargerC0) {
+  GvScene scene;
+  const Floats camera = scene.inject({"camera"});
+  const Floats light = scene.inject({"light"});
+  const Floats merged = scene.inject({"light", "camera"});
+  const std::size_t cells = camera.size() / 4;
+  ASSERT_GT(gvArea(light), 1.0) << "the spot's RSMs see surfaces";
+  ASSERT_GT(gvArea(camera), 1.0);
+  double scale = 0.0;
+  for (float v : merged) scale = std::max(scale, double(std::abs(v)));
+  const double tolerance = 1e-4 * scale;  // the atomics add in any order
+  int fromCamera = 0, fromLight = 0, bothEmpty = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (camera[i] == 0.0f && light[i] == 0.0f) {
+      ++bothEmpty;
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(merged[k * cells + i], 0.0f);
+      continue;
+    }
+    if (std::abs(camera[i] - light[i]) <= tolerance) continue;  // too close to call
+    const Floats& winner = light[i] > camera[i] ? light : camera;
+    (light[i] > camera[i] ? fromLight : fromCamera)++;
+    for (int k = 0; k < 4; ++k)
+      ASSERT_NEAR(merged[k * cells + i], winner[k * cells + i], tolerance) << "cell " << i;
+  }
+  std::cout << "[ occlusion ] merged GV: " << fromCamera << " cells from the camera, " << fromLight
+            << " from the light views, " << bothEmpty << " empty\n";
+  EXPECT_GT(fromCamera, 0);
+  EXPECT_GT(fromLight, 0);
+}
+
+TEST(Occlusion, SkipFirstIterationSetsTheFirstOccludedIteration) {
+  GvScene scene;
+  int first = -1;
+  scene.inject({"camera"}, &first, true);
+  EXPECT_EQ(first, 1);
+  scene.inject({"camera"}, &first, false);
+  EXPECT_EQ(first, 0);
+}
+
+void expectSourcesError(const std::vector<std::string>& sources, const std::string& phrase) {
+  test::glTestContext();
+  toml::table table;
+  toml::array list;
+  for (const std::string& source : sources) list.push_back(source);
+  table.insert("sources", list);
+  Params params(table, "test.toml", "occlusion");
+  try {
+    Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("sources"), std::string::npos) << message;
+    EXPECT_NE(message.find(phrase), std::string::npos) << message;
+  }
+}
+
+TEST(Occlusion, BadSourcesAreErrorsNamingTheKey) {
+  expectSourcesError({"sun"}, "unknown source 'sun'");
+  expectSourcesError({}, "at least one");
+  expectSourcesError({"camera", "camera"}, "twice");
+}
+
+// ---- a wall of opaque GV cells ---------------------------------------------------------------
+
+TEST(Occlusion, AWallOfOpaqueGvCellsStopsTheLightOfAVplBehindIt) {
+  const glm::ivec3 res{12, 7, 7};
+  const int wall = 6;  // the GV cells centred on the plane x = 6 between light cells 5 and 6
+  const int iterations = 14;
+  const int cells = res.x * res.y * res.z;
+  // A +x Lambertian VPL of 1 W per channel in cell (2, 3, 3).
+  Floats vpl(std::size_t(3) * 4 * cells, 0.0f);
+  const glm::dvec4 lobe = shared::shCosineLobe({1, 0, 0}) / M_PI;
+  for (int channel = 0; channel < 3; ++channel)
+    for (int k = 0; k < 4; ++k)
+      vpl[shared::coefficientIndex(channel, k, 4, shared::cellIndex({2, 3, 3}, res), cells)] =
+          float(lobe[k]);
+  // Isotropic blocking of c0 Y0 = 2.8 > 1 in every GV cell of the wall: transmittance 0.
+  const glm::ivec3 gvRes = res + 1;
+  const int gvCells = shared::cellCount(gvRes);
+  Floats gv(std::size_t(4) * gvCells, 0.0f);
+  for (int z = 0; z < gvRes.z; ++z)
+    for (int y = 0; y < gvRes.y; ++y) gv[shared::cellIndex({wall, y, z}, gvRes)] = 10.0f;
+
+  auto fluxBeyond = [&](const Floats& g, bool beyond) {
+    double sum = 0.0;
+    for (int z = 0; z < res.z; ++z)
+      for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+          if ((x >= wall) != beyond) continue;
+          for (int channel = 0; channel < 3; ++channel)
+            sum += shared::shIntegralOfC0(
+                g[shared::coefficientIndex(channel, 0, 4, shared::cellIndex({x, y, z}, res), cells)]);
+        }
+    return sum;
+  };
+  for (const std::string method : {"gather", "scatter"}) {
+    test::GvPropagationRig open(res, 1, iterations, method, false);
+    open.load(vpl, vpl);
+    open.propagate();
+    test::GvPropagationRig walled(res, 1, iterations, method, true);
+    walled.load(vpl, vpl);
+    walled.loadGv(gv, 0);
+    walled.propagate();
+    const double openBeyond = fluxBeyond(open.accumulated(), true);
+    const double walledBeyond = fluxBeyond(walled.accumulated(), true);
+    const double walledBefore = fluxBeyond(walled.accumulated(), false);
+    std::cout << "[ occlusion ] " << method << ": accumulated flux beyond the wall " << walledBeyond
+              << " W (without the GV " << openBeyond << " W), before it " << walledBefore << " W\n";
+    EXPECT_GT(openBeyond, 0.5) << method;
+    EXPECT_EQ(walledBeyond, 0.0) << method;
+    EXPECT_GT(walledBefore, 3.0) << method;  // the light stays in front (3 W injected)
+  }
+}
+
+}  // namespace
+}  // namespace lpvlab

@@ -1,0 +1,97 @@
+#pragma once
+// A propagation strategy created as an experiment creates it (by registered name, from a TOML
+// table), on its own light grid of a chosen SH order, with a normal grid when the strategy
+// declares one; for tests that run a propagation kernel on hand-made grids.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <toml++/toml.h>
+
+#include "framework/core/parameters.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/frame.h"
+#include "framework/pipeline/strategy.h"
+#include "pipeline_test_support.h"
+
+namespace lpvlab::test {
+
+using Grid = std::vector<float>;  // grid.glsl layout, 3 channels
+
+class PropagationRig {
+public:
+  // withGv: the composition has a geometry volume (the strategy's kernels read it).
+  PropagationRig(const std::string& type, const glm::ivec3& resolution, toml::table table,
+                 int shOrder = 1, bool withGv = false)
+      : table_(std::move(table)) {
+    glTestContext();
+    Params params(table_, "propagation test", "propagation");
+    strategy_ = Registry<PropagationStrategy>::instance().create(params, type);
+    params.finish();
+    geometry_ = GridGeometry{glm::vec3(0.0f), 1.0f, resolution};
+    Requirements requirements;
+    requirements.shOrder = shOrder;
+    requirements.geometryVolume = withGv;
+    strategy_->declare(requirements);
+    strategy_->prepare(shaders_, geometry_, requirements);
+    grid_ = LightGrid(geometry_, requirements.shOrder);
+    if (requirements.normalGrid) normals_ = std::make_unique<NormalGrid>(geometry_);
+    if (withGv) gv_ = std::make_unique<GeometryVolume>(geometry_, false);
+  }
+
+  // Sets current and accumulated (accumulated = current unless given).
+  void load(const Grid& current, const Grid* accumulated = nullptr) {
+    grid_.current.upload(current.data(), current.size() * sizeof(float));
+    const Grid& acc = accumulated ? *accumulated : current;
+    grid_.accumulated.upload(acc.data(), acc.size() * sizeof(float));
+  }
+  // The normal grid as injection leaves it: vec4 per cell.
+  void loadNormals(const std::vector<float>& normals) {
+    ASSERT_TRUE(normals_) << "the strategy declared no normal grid";
+    normals_->normals.upload(normals.data(), normals.size() * sizeof(float));
+  }
+  // The GV's blocking coefficients (geometry_volume.h layout) and its first occluded iteration.
+  void loadGv(const std::vector<float>& blocking, int firstOccludedIteration) {
+    gv_->blocking.upload(blocking.data(), blocking.size() * sizeof(float));
+    gv_->firstOccludedIteration = firstOccludedIteration;
+  }
+  void propagate() {
+    Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_,
+                .indirect = indirect_, .geometryVolume = gv_.get(), .normalGrid = normals_.get()};
+    strategy_->propagate(frame);
+    checkGl("propagation test");
+  }
+  Grid current() const { return download(grid_.current, grid_.floatsPerGrid()); }
+  Grid accumulated() const { return download(grid_.accumulated, grid_.floatsPerGrid()); }
+  std::vector<float> normals() const {
+    return download(normals_->normals, std::size_t(4) * geometry_.cellCount());
+  }
+  PropagationStrategy& strategy() { return *strategy_; }
+
+private:
+  static Grid download(const gl::Buffer& buffer, std::size_t floats) {
+    Grid data(floats);
+    buffer.download(data.data(), data.size() * sizeof(float));
+    return data;
+  }
+  toml::table table_;
+  ShaderCompiler shaders_;
+  std::unique_ptr<PropagationStrategy> strategy_;
+  GridGeometry geometry_;
+  LightGrid grid_;
+  std::unique_ptr<NormalGrid> normals_;
+  std::unique_ptr<GeometryVolume> gv_;
+  GBuffer gbuffer_;  // propagation reads none of these
+  LightMaps lightMaps_;
+  gl::Texture indirect_;
+};
+
+inline toml::table iterationsTable(int iterations) {
+  toml::table t;
+  t.insert("iterations", iterations);
+  return t;
+}
+
+}  // namespace lpvlab::test

@@ -1,0 +1,73 @@
+// The pipeline allocates only what the composition declares (framework/pipeline/strategy.h
+// Requirements), checked through Pipeline::memoryReport() on the built-in Cornell box:
+//   - occlusion "none": no geometry volume at all (0 bytes);
+//   - occlusion "geometry_volume": exactly (res + 1)^3 cells of 4 floats (order-1 blocking), and
+//     with both sources one more such GV for merging, counted under "occlusion";
+//   - the light grid (current + accumulated) and standard propagation's scratch hold exactly
+//     3 * (order + 1)^2 floats per cell at SH orders 1, 2 and 3.
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/experiment/experiment.h"
+#include "framework/pipeline/pipeline.h"
+#include "pipeline_test_support.h"
+
+namespace lpvlab {
+namespace {
+
+struct Report {
+  nlohmann::json bytes;
+  glm::ivec3 resolution;
+};
+
+Report memoryOf(const std::vector<std::string>& extra) {
+  test::glTestContext();
+  std::vector<std::string> overrides = {"output.width=64", "output.height=64",
+                                        "light_maps.shadow_resolution=64",
+                                        "light_maps.rsm_resolution=32", "grid.resolution=12"};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  Experiment e = loadExperiment("", overrides);
+  ShaderCompiler shaders;
+  const glm::ivec3 resolution = e.settings.grid.resolution;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  return {pipeline.memoryReport(), resolution};
+}
+
+std::size_t cells(const glm::ivec3& r) { return std::size_t(r.x) * r.y * r.z; }
+const std::size_t kFloat = sizeof(float);
+
+TEST(ResourceEconomy, NoOcclusionAllocatesNoGeometryVolume) {
+  const Report r = memoryOf({"occlusion.type=\"none\""});
+  EXPECT_EQ(r.bytes.at("geometry_volume").get<std::size_t>(), 0u);
+  EXPECT_EQ(r.bytes.at("occlusion").get<std::size_t>(), 0u);
+}
+
+TEST(ResourceEconomy, TheGeometryVolumeIsResPlusOneCubedTimesFourFloats) {
+  for (const std::string sources : {"[\"camera\"]", "[\"light\"]", "[\"light\", \"camera\"]"}) {
+    const Report r =
+        memoryOf({"occlusion.type=\"geometry_volume\"", "occlusion.sources=" + sources});
+    const std::size_t gv = cells(r.resolution + 1) * 4 * kFloat;
+    EXPECT_EQ(r.bytes.at("geometry_volume").get<std::size_t>(), gv) << sources;
+    // Merging two sources needs a second GV; one source fills the GV directly.
+    const bool both = sources.find(',') != std::string::npos;
+    EXPECT_EQ(r.bytes.at("occlusion").get<std::size_t>(), both ? gv : 0u) << sources;
+  }
+}
+
+TEST(ResourceEconomy, LightGridAndScratchHoldExactlyTheOrdersCoefficients) {
+  for (int order = 1; order <= 3; ++order) {
+    for (const std::string method : {"gather", "scatter"}) {
+      const Report r = memoryOf({"grid.sh_order=" + std::to_string(order),
+                                 "propagation.method=\"" + method + "\""});
+      const std::size_t perGrid = cells(r.resolution) * 3 * (order + 1) * (order + 1) * kFloat;
+      EXPECT_EQ(r.bytes.at("light_grid").get<std::size_t>(), 2 * perGrid) << "order " << order;
+      EXPECT_EQ(r.bytes.at("propagation").get<std::size_t>(), perGrid) << "order " << order;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lpvlab

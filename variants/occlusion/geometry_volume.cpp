@@ -1,0 +1,135 @@
+// Occlusion "geometry_volume": fills the geometry volume (thesis 4.1, 4.3; eq. 4.4) with the
+// blocking potential of the surfaces the light views' RSMs and the camera's G-buffer see, so that
+// propagation can attenuate light passing through surfaces (thesis 4.4, alg. 6.2 lines 11-14).
+// Every covered RSM texel or G-buffer pixel is a surfel of area A_s, its footprint on the surface
+// (shaders/occlusion/surfel_area.glsl), with the normal facing its viewer; it adds
+// A_s / s^2 * cosLobe(-n) to the GV cell containing it (shaders/occlusion/gv_surfel.glsl). With
+// both sources, each fills a GV of its own and the two are merged "by the larger coefficients":
+// per GV cell the whole cell of the source with the larger c0 (shaders/occlusion/gv_merge.comp).
+// docs/variants/geometry_volume.md has the mathematics.
+//
+// | parameter            | type     | default             | meaning                              |
+// |----------------------|----------|---------------------|--------------------------------------|
+// | sources              | [string] | ["light", "camera"] | whose surfels fill the GV: "light"   |
+// |                      |          |                     | (every light view's RSM), "camera"   |
+// |                      |          |                     | (the G-buffer); at least one         |
+// | skip_first_iteration | bool     | true                | propagation step 0 ignores the GV:   |
+// |                      |          |                     | a VPL's light leaves its cell past   |
+// |                      |          |                     | its own surface's surfels            |
+
+#include <algorithm>
+#include <cmath>
+
+#include "framework/core/error.h"
+#include "framework/gl/dispatch.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/math/grid_geometry.h"
+#include "framework/pipeline/frame.h"
+#include "framework/pipeline/strategy.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+namespace {
+
+class GeometryVolumeOcclusion final : public OcclusionStrategy {
+public:
+  explicit GeometryVolumeOcclusion(Params& params)
+      : skipFirstIteration_(params.get<bool>("skip_first_iteration", true)) {
+    const auto sources =
+        params.get<std::vector<std::string>>("sources", {"light", "camera"});
+    for (const std::string& source : sources) {
+      if (source != "light" && source != "camera")
+        throw Error(params.where("sources") + ": unknown source '" + source +
+                    "' (choices: \"light\", \"camera\")");
+    }
+    fromLight_ = std::count(sources.begin(), sources.end(), "light") > 0;
+    fromCamera_ = std::count(sources.begin(), sources.end(), "camera") > 0;
+    if (!fromLight_ && !fromCamera_)
+      throw Error(params.where("sources") + ": needs at least one of \"light\", \"camera\"");
+    if (sources.size() != std::size_t(fromLight_) + std::size_t(fromCamera_))
+      throw Error(params.where("sources") + ": a source is listed twice");
+  }
+
+  void declare(Requirements& requirements) const override { requirements.geometryVolume = true; }
+  int maxShOrder() const override { return 3; }  // the GV is order 1 whatever the light grid's
+
+  void prepare(ShaderCompiler& shaders, const GridGeometry& grid, const Requirements&) override {
+    if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp");
+    if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp");
+    if (fromCamera_ && fromLight_) {
+      merge_ = shaders.compute("occlusion/gv_merge.comp");
+      const GridGeometry gv = GeometryVolume::placementFor(grid);
+      lightScratch_ = gl::Buffer(std::size_t(gv.cellCount()) * GeometryVolume::kCoefficients *
+                                     sizeof(float),
+                                 "geometry volume (light views, before merging)");
+    }
+  }
+
+  void inject(Frame& frame) override {
+    GeometryVolume& gv = *frame.geometryVolume;
+    gv.firstOccludedIteration = skipFirstIteration_ ? 1 : 0;
+    // The camera's surfels go straight into the GV; the lights' too when they are the only source.
+    if (fromCamera_) injectCamera(frame, gv.blocking);
+    if (fromLight_ && !fromCamera_) injectLightViews(frame, gv.blocking);
+    if (fromLight_ && fromCamera_) {
+      lightScratch_.zero();
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      injectLightViews(frame, lightScratch_);
+      merge_.use();
+      gv.blocking.bindStorage(0);
+      lightScratch_.bindStorage(1);
+      const int cells = gv.geometry.cellCount();
+      glUniform1i(0, cells);
+      dispatchCovering({cells, 1, 1}, {64, 1, 1}, GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+  }
+
+  std::size_t memoryBytes() const override { return lightScratch_.size(); }
+
+private:
+  static void setGvUniforms(const GeometryVolume& gv) {
+    glUniform3fv(0, 1, &gv.geometry.origin[0]);
+    glUniform1f(1, gv.geometry.cellSize);
+    glUniform3iv(2, 1, &gv.geometry.resolution[0]);
+  }
+
+  void injectCamera(Frame& frame, const gl::Buffer& target) {
+    const GBuffer& g = frame.gbuffer;
+    camera_.use();
+    setGvUniforms(*frame.geometryVolume);
+    glBindTextureUnit(0, g.position.id());
+    glBindTextureUnit(1, g.normal.id());
+    target.bindStorage(0);
+    glUniform3fv(3, 1, &frame.camera->position[0]);
+    glUniform1f(4, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
+    glUniform2i(5, g.width, g.height);
+    dispatchCovering({g.width, g.height, 1}, {8, 8, 1}, GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  void injectLightViews(Frame& frame, const gl::Buffer& target) {
+    const LightMaps& maps = frame.lightMaps;
+    rsm_.use();
+    setGvUniforms(*frame.geometryVolume);
+    glBindTextureUnit(0, maps.rsmPosition.id());
+    glBindTextureUnit(1, maps.rsmNormal.id());
+    target.bindStorage(0);
+    maps.lightRecords.bindStorage(1);
+    maps.viewRecords.bindStorage(2);
+    glUniform1i(3, maps.rsmResolution);
+    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views}, {8, 8, 1},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  bool skipFirstIteration_;
+  bool fromLight_ = false, fromCamera_ = false;
+  Program camera_, rsm_, merge_;
+  gl::Buffer lightScratch_;
+};
+
+LPVLAB_REGISTER(OcclusionStrategy, "geometry_volume",
+                "blocking potential of the surfels the RSMs and the camera see, merged by the "
+                "larger coefficients (thesis 4.3)",
+                GeometryVolumeOcclusion);
+
+}  // namespace
+}  // namespace lpvlab

@@ -1,0 +1,101 @@
+// Propagation "directed": standard propagation (standard.cpp) with the thesis' fix for light
+// flowing back behind the VPLs' own surfaces (thesis 5.2, 6.9.4, alg. 6.3). Injection also
+// stores the VPLs' flux-weighted normals (Requirements::normalGrid); before every iteration the
+// normals are dilated into cells that have none (by gathering, in two ping-pong buffers of this
+// strategy, starting from the injected normal grid, which stays untouched), and the light each
+// face passes into a cell is reprojected a second time about the cell's dilated normal, which
+// removes what travels against it. The mathematics and the normalisation (a gain G(n) per
+// cell, so that light travelling along agreeing normals keeps its flux) are in
+// shaders/propagation/directed_faces.glsl and docs/variants/directed.md. Order 1 only. A geometry volume, if the occlusion strategy provides
+// one, attenuates the light crossing each shared face as in thesis alg. 6.2.
+//
+// | parameter  | type | default | meaning                                                       |
+// |------------|------|---------|---------------------------------------------------------------|
+// | iterations | int  | 32      | propagation steps; light travels one cell per step (0..4096)  |
+// | dilation   | bool | true    | dilate the normals before each iteration; false reprojects    |
+// |            |      |         | only in cells that received VPLs (the rest propagate as       |
+// |            |      |         | standard), to see what the dilation contributes               |
+
+#include <utility>
+
+#include "framework/gl/dispatch.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/math/grid_geometry.h"
+#include "framework/math/solid_angle.h"
+#include "framework/pipeline/frame.h"
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+namespace {
+
+class DirectedPropagation final : public PropagationStrategy {
+public:
+  explicit DirectedPropagation(Params& params)
+      : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
+        dilation_(params.get<bool>("dilation", true)) {}
+
+  void declare(Requirements& requirements) const override { requirements.normalGrid = true; }
+
+  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
+               const Requirements& requirements) override {
+    const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    gather_ = shaders.compute("propagation/directed_gather.comp",
+                              {SpecConstant::f(0, float(angles.farFace)),
+                               SpecConstant::f(1, float(angles.sideFace)),
+                               SpecConstant::b(2, requirements.geometryVolume)});
+    dilate_ = shaders.compute("propagation/directed_dilate.comp");
+    const std::size_t lightBytes = std::size_t(3) * 4 * grid.cellCount() * sizeof(float);
+    scratch_ = gl::Buffer(lightBytes, "light grid (propagation scratch)");
+    if (dilation_) {
+      const std::size_t normalBytes = std::size_t(4) * grid.cellCount() * sizeof(float);
+      for (gl::Buffer& b : normals_) b = gl::Buffer(normalBytes, "dilated normals");
+    }
+  }
+
+  void propagate(Frame& frame) override {
+    LightGrid& grid = frame.lightGrid;
+    const gl::Buffer* normals = &frame.normalGrid->normals;
+    const GeometryVolume* gv = frame.geometryVolume;
+    for (int i = 0; i < iterations_; ++i) {
+      if (dilation_) {
+        gl::Buffer& next = normals_[i % 2];
+        dilate_.use();
+        glUniform3iv(0, 1, &grid.geometry.resolution[0]);
+        normals->bindStorage(0);
+        next.bindStorage(1);
+        dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+        normals = &next;
+      }
+      gather_.use();
+      glUniform3iv(0, 1, &grid.geometry.resolution[0]);
+      // Only a kernel specialised with the GV keeps this uniform (GL refuses setting a removed one).
+      if (gv) glUniform1i(1, i >= gv->firstOccludedIteration);
+      grid.current.bindStorage(0);
+      scratch_.bindStorage(1);
+      grid.accumulated.bindStorage(2);
+      normals->bindStorage(3);
+      if (gv) gv->blocking.bindStorage(4);
+      dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+      std::swap(grid.current, scratch_);  // the new light becomes the next step's source
+    }
+  }
+
+  int iterations() const override { return iterations_; }
+  std::size_t memoryBytes() const override {
+    return scratch_.size() + normals_[0].size() + normals_[1].size();
+  }
+
+private:
+  int iterations_;
+  bool dilation_;
+  Program gather_, dilate_;
+  gl::Buffer scratch_;
+  gl::Buffer normals_[2];  // dilation ping-pong
+};
+
+LPVLAB_REGISTER(PropagationStrategy, "directed",
+                "standard propagation reprojected about dilated VPL normals (thesis 5.2, alg. 6.3)",
+                DirectedPropagation);
+
+}  // namespace
+}  // namespace lpvlab

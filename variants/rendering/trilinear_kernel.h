@@ -1,0 +1,42 @@
+#pragma once
+// The rendering kernel shaders/rendering/trilinear.comp behind the strategies "trilinear" and
+// "glossy": one kernel whose options (leak damping, the glossy march) are specialisation
+// constants, so the trilinear sampling code exists once and a disabled option costs nothing.
+
+#include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+
+class Params;
+
+// What the kernel is asked to do, read from a [rendering] table.
+struct TrilinearKernelOptions {
+  float normalOffsetCells = 0.0f;   // normal_offset
+  float leakDamping = 0.0f;         // leak_damping: 0 disables it (the kernel skips the slope)
+  float specularAlbedo = 0.0f;      // glossy only; 0 disables the march
+  float phongExponent = 1.0f;
+  float marchStepCells = 1.0f;
+  int marchSamples = 0;
+
+  // normal_offset and leak_damping (both strategies).
+  static TrilinearKernelOptions readDiffuse(Params& params);
+  // The diffuse keys plus specular_albedo, exponent, step and max_distance ("glossy").
+  static TrilinearKernelOptions readGlossy(Params& params);
+};
+
+class TrilinearKernelRendering : public RenderingStrategy {
+public:
+  explicit TrilinearKernelRendering(const TrilinearKernelOptions& options) : options_(options) {}
+
+  int maxShOrder() const override { return 3; }
+  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
+               const Requirements& requirements) override;
+  void render(Frame& frame) override;
+
+private:
+  TrilinearKernelOptions options_;
+  Program program_;
+};
+
+}  // namespace lpvlab
