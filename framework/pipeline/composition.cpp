@@ -33,7 +33,8 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
   }
   if (glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f))) && !requirements.skyInjected)
     throw Error("[sky] radiance is set, but no injection strategy injects sky light: add one "
-                "under [[injection.also]] ('lpvlab list' shows them) or set the radiance to 0");
+                "that does, as [injection] or under [[injection.also]] ('lpvlab list' shows the "
+                "injection strategies), or set the radiance to 0");
   return requirements;
 }
 

@@ -24,7 +24,7 @@
 // and what the reprojection removes from faces against the normal goes to faces along it. The
 // back-propagation is removed; the light is redirected, not lost. (Where neighbouring normals
 // differ, or a cell holds light that is not a lobe about its normal, the step is not exactly
-// conserving; see docs/variants/directed.md.)
+// conserving; see docs/variants.md#directed.)
 // A cell without a normal (none reached it, or a normal-less injection such as sky light) gets
 // the standard transfer unchanged.
 #ifndef LPVLAB_DIRECTED_FACES_GLSL

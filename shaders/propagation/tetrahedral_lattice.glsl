@@ -1,5 +1,5 @@
 // The tetrahedral lattice of "tetrahedral" propagation, shared by its kernels and the
-// double-precision C++ tests (docs/variants/tetrahedral.md derives everything stated here).
+// double-precision C++ tests (docs/variants.md#tetrahedral derives everything stated here).
 //
 // Lattice: the Delaunay cells of the body-centred cubic (BCC) lattice whose points are the light
 // grid's cube corners and cube centres (grid units: cube edge 1). Every cell is a congruent

@@ -10,7 +10,7 @@
 //                 same 8 reads give (trilinear_weights.glsl).
 //   GLOSSY:       adds specularAlbedo * the grid's radiance arriving from the reflected view
 //                 direction r, weighted by a normalised Phong lobe (phong_lobe.glsl) and averaged
-//                 over samples marched along r (docs/variants/glossy.md).
+//                 over samples marched along r (docs/variants.md#glossy).
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
 #include "trilinear_weights.glsl"

@@ -166,5 +166,25 @@ TEST_F(Cli, UnknownStrategyIsNamedWithTheKnownOnes) {
   EXPECT_NE(err.find("standard"), std::string::npos) << err;
 }
 
+// A composition that cannot work stops before running, naming the strategy, the key and why.
+TEST_F(Cli, ImpossibleCompositionIsRefusedWithTheReason) {
+  const std::string order = expectOneErrorLine("run -s grid.sh_order=2 -s propagation.type=directed");
+  EXPECT_NE(order.find("[propagation] type = \"directed\""), std::string::npos) << order;
+  EXPECT_NE(order.find("sh_order"), std::string::npos) << order;
+  const std::string sky = expectOneErrorLine("run -s 'sky.radiance=[1, 1, 1]'");
+  EXPECT_NE(sky.find("[sky] radiance"), std::string::npos) << sky;
+  EXPECT_NE(sky.find("[[injection.also]]"), std::string::npos) << sky;
+}
+
+TEST_F(Cli, ListNamesEveryStageAndItsStrategies) {
+  const Result r = runLpvlab("list", work(), logs());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* expected : {"[injection] type =", "[occlusion] type =", "[propagation] type =",
+                               "[rendering] type =", "rsm_vpl:", "sky_columns:", "none:",
+                               "geometry_volume:", "standard:", "directed:", "tetrahedral:",
+                               "trilinear:", "glossy:"})
+    EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " missing from:\n" << r.out;
+}
+
 }  // namespace
 }  // namespace lpvlab

@@ -19,57 +19,24 @@
 #include "framework/math/solid_angle.h"
 #include "propagation_rig.h"
 
-// The GV lookup reads the global `gvBlocking` (the kernel's buffer); the model sets it.
+// The GV lookup (propagation_rig.h) reads the global `gvBlocking`; the model sets it.
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/directed_faces.glsl"
-std::vector<double> gvBlocking;
-using glm::mix;
-#include "shaders/common/geometry_volume_lookup.glsl"
 LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
 
-using test::Grid;
-constexpr int kCoefficients = 4;
-const glm::ivec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+using namespace test;
+
 const CubeFaceSolidAngles& angles() {
   static const CubeFaceSolidAngles a = cubeFaceSolidAngles();
   return a;
 }
 
-int cells(const glm::ivec3& res) { return shared::cellCount(res); }
-std::size_t at(const glm::ivec3& res, const glm::ivec3& cell, int channel, int k) {
-  return std::size_t(shared::coefficientIndex(channel, k, kCoefficients,
-                                              shared::cellIndex(cell, res), cells(res)));
-}
-glm::dvec4 cellOf(const Grid& g, const glm::ivec3& res, const glm::ivec3& cell, int channel) {
-  glm::dvec4 c;
-  for (int k = 0; k < kCoefficients; ++k) c[k] = g[at(res, cell, channel, k)];
-  return c;
-}
 glm::dvec4 normalOf(const std::vector<float>& n, const glm::ivec3& res, const glm::ivec3& cell) {
   const std::size_t i = std::size_t(4) * shared::cellIndex(cell, res);
   return {n[i], n[i + 1], n[i + 2], n[i + 3]};
-}
-void forEachCell(const glm::ivec3& res, const std::function<void(const glm::ivec3&)>& f) {
-  for (int z = 0; z < res.z; ++z)
-    for (int y = 0; y < res.y; ++y)
-      for (int x = 0; x < res.x; ++x) f({x, y, z});
-}
-double flux(const Grid& g, const glm::ivec3& res,
-            const std::function<bool(const glm::ivec3&)>& include = nullptr) {
-  double sum = 0.0;
-  forEachCell(res, [&](const glm::ivec3& c) {
-    if (include && !include(c)) return;
-    for (int channel = 0; channel < 3; ++channel) sum += shared::shIntegral(cellOf(g, res, c, channel));
-  });
-  return sum;
-}
-double maxAbs(const Grid& g) {
-  double m = 0.0;
-  for (float v : g) m = std::max(m, double(std::abs(v)));
-  return m;
 }
 
 // ---- the double-precision model: the shared GLSL, dilated and gathered as the kernels do -------
@@ -128,20 +95,10 @@ Grid step(const Grid& g, const std::vector<float>& normals, const glm::ivec3& re
   return out;
 }
 
-const double kChannelFlux[3] = {1.0, 0.5, 0.25};
-
-// One cell holding a Lambertian VPL Phi / pi * cosLobe(n) per channel, its normal Phi n, Phi.
-Grid vplLight(const glm::ivec3& res, const glm::ivec3& cell, const glm::dvec3& n) {
-  Grid g(std::size_t(3) * kCoefficients * cells(res), 0.0f);
-  for (int channel = 0; channel < 3; ++channel) {
-    const glm::dvec4 c = kChannelFlux[channel] / M_PI * shared::shCosineLobe(n);
-    for (int k = 0; k < kCoefficients; ++k) g[at(res, cell, channel, k)] = float(c[k]);
-  }
-  return g;
-}
+// The normal grid with one cell holding a VPL's normal: Phi n, Phi (Phi its flux over RGB).
 std::vector<float> vplNormals(const glm::ivec3& res, const glm::ivec3& cell, const glm::dvec3& n) {
   std::vector<float> normals(std::size_t(4) * cells(res), 0.0f);
-  const double phi = kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2];
+  const double phi = injectedFlux();
   const std::size_t i = std::size_t(4) * shared::cellIndex(cell, res);
   for (int k = 0; k < 3; ++k) normals[i + k] = float(phi * n[k]);
   normals[i + 3] = float(phi);
@@ -155,9 +112,8 @@ void twoIterationsMatchTheCpp(bool withGv) {
   const glm::ivec3 res{6, 5, 4};  // not multiples of the 4^3 work group, nor a cube
   std::mt19937 random(4242);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  Grid current(std::size_t(3) * kCoefficients * cells(res)), accumulated(current.size());
-  for (float& v : current) v = uniform(random);
-  for (float& v : accumulated) v = uniform(random);
+  const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
+  const Grid current = randomFloats(n, random), accumulated = randomFloats(n, random);
   std::vector<float> normals(std::size_t(4) * cells(res), 0.0f);
   int withNormal = 0;
   for (std::size_t i = 0; i < normals.size(); i += 4)
@@ -168,8 +124,8 @@ void twoIterationsMatchTheCpp(bool withGv) {
     }
   ASSERT_GT(withNormal, 3);
 
-  test::PropagationRig rig("directed", res, test::iterationsTable(2), 1, withGv);
-  rig.load(current, &accumulated);
+  PropagationRig rig("directed", res, iterationsTable(2), 1, withGv);
+  rig.load(current, accumulated);
   rig.loadNormals(normals);
   if (withGv) {
     // Blocking potential of random surfels: c0 in [0, 0.6], the linear part smaller, so that
@@ -197,17 +153,8 @@ void twoIterationsMatchTheCpp(bool withGv) {
   std::cout << "[ directed ] " << withNormal << " of " << cells(res) << " cells with normals; "
             << normalLess << " still without after one dilation\n";
 
-  const double tolerance = 1e-4 * maxAbs(expectedCurrent);
-  const double toleranceAccumulated = 1e-4 * maxAbs(expectedAccumulated);
-  int bad = 0;
-  for (std::size_t i = 0; i < gpuCurrent.size(); ++i) {
-    if (std::abs(gpuCurrent[i] - expectedCurrent[i]) > tolerance && bad++ < 5)
-      ADD_FAILURE() << "current[" << i << "]: GPU " << gpuCurrent[i] << ", C++ " << expectedCurrent[i];
-    if (std::abs(gpuAccumulated[i] - expectedAccumulated[i]) > toleranceAccumulated && bad++ < 5)
-      ADD_FAILURE() << "accumulated[" << i << "]: GPU " << gpuAccumulated[i] << ", C++ "
-                    << expectedAccumulated[i];
-  }
-  EXPECT_EQ(bad, 0);
+  expectClose(gpuCurrent, expectedCurrent, 1e-4, "current");
+  expectClose(gpuAccumulated, expectedAccumulated, 1e-4, "accumulated");
 }
 
 TEST(DirectedPropagation, TwoGpuIterationsMatchTheSharedCppDilationAndGather) {
@@ -248,11 +195,11 @@ void fluxIsKeptAlongTheNormal(const glm::dvec3& n) {
     return std::max({d.x, d.y, d.z});
   };
   auto inside = [&](const glm::ivec3& c) { return chebyshev(c) <= radius; };
-  const double phi = kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2];
+  const double phi = injectedFlux();
   const double r = 1.0 / shared::directedGain(n, angles().farFace, angles().sideFace);
 
-  test::PropagationRig rig("directed", res, test::iterationsTable(1));
-  Grid before = vplLight(res, centre, n);
+  PropagationRig rig("directed", res, iterationsTable(1));
+  Grid before = pointSource(res, centre, false, n);
   rig.load(before);
   std::vector<float> normals = vplNormals(res, centre, n);
   rig.loadNormals(normals);
@@ -303,14 +250,14 @@ TEST(DirectedPropagation, AFloorVplLightsNothingBelowTheFloorWhereStandardDoes) 
   const glm::dvec3 up{0, 1, 0};
   const int iterations = 7;
   auto below = [&](const glm::ivec3& c) { return c.y < floorCell.y; };
-  test::PropagationRig standard("standard", res, test::iterationsTable(iterations));
-  standard.load(vplLight(res, floorCell, up));
+  PropagationRig standard("standard", res, iterationsTable(iterations));
+  standard.load(pointSource(res, floorCell, false, up));
   standard.propagate();
-  test::PropagationRig directed("directed", res, test::iterationsTable(iterations));
-  directed.load(vplLight(res, floorCell, up));
+  PropagationRig directed("directed", res, iterationsTable(iterations));
+  directed.load(pointSource(res, floorCell, false, up));
   directed.loadNormals(vplNormals(res, floorCell, up));
   directed.propagate();
-  const double phi = kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2];
+  const double phi = injectedFlux();
   const double standardBelow = flux(standard.accumulated(), res, below);
   const double directedBelow = flux(directed.accumulated(), res, below);
   const double directedAbove = flux(directed.accumulated(), res, [&](const glm::ivec3& c) { return c.y > 7; });
@@ -331,19 +278,19 @@ TEST(DirectedPropagation, WithoutDilationOnlyCellsWithNormalsReproject) {
   const glm::ivec3 res{9, 9, 9}, floorCell{4, 4, 4};
   const glm::dvec3 up{0, 1, 0};
   const int iterations = 4;
-  toml::table table = test::iterationsTable(iterations);
+  toml::table table = iterationsTable(iterations);
   table.insert("dilation", false);
-  test::PropagationRig rig("directed", res, table);
-  rig.load(vplLight(res, floorCell, up));
+  PropagationRig rig("directed", res, table);
+  rig.load(pointSource(res, floorCell, false, up));
   const std::vector<float> normals = vplNormals(res, floorCell, up);
   rig.loadNormals(normals);
   rig.propagate();
-  Grid g = vplLight(res, floorCell, up), expected = g;
+  Grid g = pointSource(res, floorCell, false, up), expected = g;
   for (int k = 0; k < iterations; ++k) g = step(g, normals, res, expected);
   const Grid gpu = rig.accumulated();
   const double tolerance = 1e-5 * maxAbs(expected);
   for (std::size_t i = 0; i < gpu.size(); ++i) ASSERT_NEAR(gpu[i], expected[i], tolerance) << i;
-  const double phi = kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2];
+  const double phi = injectedFlux();
   EXPECT_GT(flux(gpu, res, [](const glm::ivec3& c) { return c.y < 4; }), 1e-3 * phi);
 }
 

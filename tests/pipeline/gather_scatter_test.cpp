@@ -17,50 +17,36 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
+#include "error_support.h"
 #include "framework/math/solid_angle.h"
-#include "gv_propagation_rig.h"
+#include "propagation_rig.h"
 
 namespace lpvlab {
 namespace {
 
-using test::Floats;
-
-Floats randomFloats(std::size_t n, std::mt19937& random, float low, float high) {
-  std::uniform_real_distribution<float> uniform(low, high);
-  Floats v(n);
-  for (float& x : v) x = uniform(random);
-  return v;
-}
+using test::Grid;
+using test::maxAbs;
+using test::maxDifference;
+using test::randomFloats;
 
 // A random GV: c0 in [0, 1.5] (blocking from none to more than opaque), the band-1 coefficients
 // up to as large, so transmittances cover (0, 1) and both clamps.
-Floats randomGv(std::size_t floats, std::mt19937& random) {
-  Floats gv = randomFloats(floats, random, -1.0f, 1.0f);
+Grid randomGv(std::size_t floats, std::mt19937& random) {
+  Grid gv = randomFloats(floats, random, -1.0f, 1.0f);
   const std::size_t cells = floats / 4;
   for (std::size_t i = 0; i < cells; ++i) gv[i] = 0.75f * (gv[i] + 1.0f);
   return gv;
 }
 
-double maxAbs(const Floats& g) {
-  double m = 0.0;
-  for (float v : g) m = std::max(m, double(std::abs(v)));
-  return m;
-}
-
-double maxDifference(const Floats& a, const Floats& b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, double(std::abs(a[i] - b[i])));
-  return m;
-}
-
 struct Result {
-  Floats current, accumulated;
+  Grid current, accumulated;
 };
 
 Result run(const std::string& method, const glm::ivec3& res, int order, int iterations,
-           const Floats& current, const Floats& accumulated, const Floats* gv,
+           const Grid& current, const Grid& accumulated, const Grid* gv,
            int firstOccluded) {
-  test::GvPropagationRig rig(res, order, iterations, method, gv != nullptr);
+  test::PropagationRig rig("standard", res, test::iterationsTable(iterations, method), order,
+                          gv != nullptr);
   rig.load(current, accumulated);
   if (gv) rig.loadGv(*gv, firstOccluded);
   rig.propagate();
@@ -72,10 +58,10 @@ void gatherEqualsScatter(int order, bool withGv) {
   const int iterations = 3;
   std::mt19937 random(1000 + 10 * order + int(withGv));
   const std::size_t n = std::size_t(3) * (order + 1) * (order + 1) * res.x * res.y * res.z;
-  const Floats current = randomFloats(n, random, -1.0f, 1.0f);
-  const Floats accumulated = randomFloats(n, random, -1.0f, 1.0f);
-  const Floats gv = randomGv(std::size_t(4) * (res.x + 1) * (res.y + 1) * (res.z + 1), random);
-  const Floats* gvOrNull = withGv ? &gv : nullptr;
+  const Grid current = randomFloats(n, random, -1.0f, 1.0f);
+  const Grid accumulated = randomFloats(n, random, -1.0f, 1.0f);
+  const Grid gv = randomGv(std::size_t(4) * (res.x + 1) * (res.y + 1) * (res.z + 1), random);
+  const Grid* gvOrNull = withGv ? &gv : nullptr;
   const Result gather = run("gather", res, order, iterations, current, accumulated, gvOrNull, 1);
   const Result scatter = run("scatter", res, order, iterations, current, accumulated, gvOrNull, 1);
   ASSERT_GT(maxDifference(gather.current, current), 0.1) << "propagation changed nothing";
@@ -99,11 +85,11 @@ TEST(GatherScatter, SameGridOrder3WithGv) { gatherEqualsScatter(3, true); }
 
 // One order-1 step by gathering in double precision: per target cell, per neighbour, per face,
 // the shared functions the kernels call; the GV (when `occluded`) read through the shared lookup.
-Floats referenceStep(const glm::ivec3& res, const Floats& current, const Floats* gv) {
+Grid referenceStep(const glm::ivec3& res, const Grid& current, const Grid* gv) {
   const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
   const int cells = shared::cellCount(res);
   if (gv) shared::gvBlocking.assign(gv->begin(), gv->end());
-  Floats next(current.size(), 0.0f);
+  Grid next(current.size(), 0.0f);
   for (int z = 0; z < res.z; ++z)
     for (int y = 0; y < res.y; ++y)
       for (int x = 0; x < res.x; ++x) {
@@ -147,16 +133,16 @@ void stepMatchesReference(const std::string& method) {
   const glm::ivec3 res{6, 5, 4};
   std::mt19937 random(777);
   const std::size_t n = std::size_t(3) * 4 * res.x * res.y * res.z;
-  const Floats current = randomFloats(n, random, -1.0f, 1.0f);
-  const Floats accumulated = randomFloats(n, random, -1.0f, 1.0f);
-  const Floats gv = randomGv(std::size_t(4) * 7 * 6 * 5, random);
+  const Grid current = randomFloats(n, random, -1.0f, 1.0f);
+  const Grid accumulated = randomFloats(n, random, -1.0f, 1.0f);
+  const Grid gv = randomGv(std::size_t(4) * 7 * 6 * 5, random);
 
   const Result gpu = run(method, res, 1, 1, current, accumulated, &gv, 0);
-  const Floats expected = referenceStep(res, current, &gv);
-  const Floats open = referenceStep(res, current, nullptr);
+  const Grid expected = referenceStep(res, current, &gv);
+  const Grid open = referenceStep(res, current, nullptr);
   const double tolerance = 1e-5 * maxAbs(expected);
   EXPECT_LE(maxDifference(gpu.current, expected), tolerance);
-  Floats expectedAccumulated = accumulated;
+  Grid expectedAccumulated = accumulated;
   for (std::size_t i = 0; i < n; ++i) expectedAccumulated[i] += expected[i];
   EXPECT_LE(maxDifference(gpu.accumulated, expectedAccumulated), 2 * tolerance);
   // The GV mattered: without it the reference differs (so the comparison can fail).
@@ -175,12 +161,9 @@ TEST(GatherScatter, UnknownMethodIsAnErrorNamingTheKey) {
   toml::table table;
   table.insert("method", "diffuse");
   Params params(table, "test.toml", "propagation");
-  try {
-    Registry<PropagationStrategy>::instance().create(params, "standard");
-    FAIL() << "no error";
-  } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("method"), std::string::npos) << error.what();
-  }
+  EXPECT_TRUE(test::contains(
+      test::errorOf([&] { Registry<PropagationStrategy>::instance().create(params, "standard"); }),
+      "method"));
 }
 
 }  // namespace

@@ -28,7 +28,8 @@
 #include "framework/pipeline/light_views.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
-#include "gv_propagation_rig.h"
+#include "error_support.h"
+#include "propagation_rig.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/occlusion/surfel_area.glsl"
@@ -37,7 +38,7 @@ LPVLAB_SHARED_GLSL_END
 namespace lpvlab {
 namespace {
 
-using test::Floats;
+using test::Grid;
 
 // The built-in Cornell box with its G-buffer and RSMs rendered, and GVs filled from them.
 class GvScene {
@@ -55,7 +56,7 @@ public:
   }
 
   // The GV's blocking coefficients after the strategy with these sources injected.
-  Floats inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
+  Grid inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
                 bool skipFirst = true) {
     toml::table table;
     toml::array list;
@@ -79,7 +80,7 @@ public:
     glFinish();
     checkGl("occlusion test");
     if (firstOccluded) *firstOccluded = gv.firstOccludedIteration;
-    Floats blocking(std::size_t(gv.geometry.cellCount()) * 4);
+    Grid blocking(std::size_t(gv.geometry.cellCount()) * 4);
     gv.blocking.download(blocking.data(), blocking.size() * sizeof(float));
     return blocking;
   }
@@ -103,7 +104,7 @@ private:
 };
 
 // Sum over GV cells of shIntegral(c) / pi: the surfels' area in units of s^2.
-double gvArea(const Floats& blocking) {
+double gvArea(const Grid& blocking) {
   const std::size_t cells = blocking.size() / 4;
   double sum = 0.0;
   for (std::size_t i = 0; i < cells; ++i) sum += shared::shIntegralOfC0(blocking[i]) / M_PI;
@@ -133,7 +134,7 @@ double raycastVisibleArea(const Experiment& e, int samples, bool clamped) {
 
 TEST(Occlusion, CameraSurfelsAddUpToTheVisibleArea) {
   GvScene scene;
-  const Floats gv = scene.inject({"camera"});
+  const Grid gv = scene.inject({"camera"});
   const double s2 = scene.cellSize() * scene.cellSize();
   const double gpu = gvArea(gv) * s2;
   const double clamped = raycastVisibleArea(scene.experiment(), 1, true);
@@ -150,9 +151,9 @@ TEST(Occlusion, CameraSurfelsAddUpToTheVisibleArea) {
 
 TEST(Occlusion, MergeKeepsPerCellTheSourceWithTheLargerC0) {
   GvScene scene;
-  const Floats camera = scene.inject({"camera"});
-  const Floats light = scene.inject({"light"});
-  const Floats merged = scene.inject({"light", "camera"});
+  const Grid camera = scene.inject({"camera"});
+  const Grid light = scene.inject({"light"});
+  const Grid merged = scene.inject({"light", "camera"});
   const std::size_t cells = camera.size() / 4;
   ASSERT_GT(gvArea(light), 1.0) << "the spot's RSMs see surfaces";
   ASSERT_GT(gvArea(camera), 1.0);
@@ -167,7 +168,7 @@ TEST(Occlusion, MergeKeepsPerCellTheSourceWithTheLargerC0) {
       continue;
     }
     if (std::abs(camera[i] - light[i]) <= tolerance) continue;  // too close to call
-    const Floats& winner = light[i] > camera[i] ? light : camera;
+    const Grid& winner = light[i] > camera[i] ? light : camera;
     (light[i] > camera[i] ? fromLight : fromCamera)++;
     for (int k = 0; k < 4; ++k)
       ASSERT_NEAR(merged[k * cells + i], winner[k * cells + i], tolerance) << "cell " << i;
@@ -194,14 +195,10 @@ void expectSourcesError(const std::vector<std::string>& sources, const std::stri
   for (const std::string& source : sources) list.push_back(source);
   table.insert("sources", list);
   Params params(table, "test.toml", "occlusion");
-  try {
-    Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
-    FAIL() << "no error";
-  } catch (const Error& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("sources"), std::string::npos) << message;
-    EXPECT_NE(message.find(phrase), std::string::npos) << message;
-  }
+  const std::string message = test::errorOf(
+      [&] { Registry<OcclusionStrategy>::instance().create(params, "geometry_volume"); });
+  EXPECT_TRUE(test::contains(message, "sources"));
+  EXPECT_TRUE(test::contains(message, phrase));
 }
 
 TEST(Occlusion, BadSourcesAreErrorsNamingTheKey) {
@@ -216,39 +213,26 @@ TEST(Occlusion, AWallOfOpaqueGvCellsStopsTheLightOfAVplBehindIt) {
   const glm::ivec3 res{12, 7, 7};
   const int wall = 6;  // the GV cells centred on the plane x = 6 between light cells 5 and 6
   const int iterations = 14;
-  const int cells = res.x * res.y * res.z;
   // A +x Lambertian VPL of 1 W per channel in cell (2, 3, 3).
-  Floats vpl(std::size_t(3) * 4 * cells, 0.0f);
+  Grid vpl(std::size_t(3) * test::kCoefficients * test::cells(res), 0.0f);
   const glm::dvec4 lobe = shared::shCosineLobe({1, 0, 0}) / M_PI;
   for (int channel = 0; channel < 3; ++channel)
-    for (int k = 0; k < 4; ++k)
-      vpl[shared::coefficientIndex(channel, k, 4, shared::cellIndex({2, 3, 3}, res), cells)] =
-          float(lobe[k]);
+    for (int k = 0; k < test::kCoefficients; ++k) vpl[test::at(res, {2, 3, 3}, channel, k)] = float(lobe[k]);
   // Isotropic blocking of c0 Y0 = 2.8 > 1 in every GV cell of the wall: transmittance 0.
   const glm::ivec3 gvRes = res + 1;
-  const int gvCells = shared::cellCount(gvRes);
-  Floats gv(std::size_t(4) * gvCells, 0.0f);
+  Grid gv(std::size_t(4) * test::cells(gvRes), 0.0f);
   for (int z = 0; z < gvRes.z; ++z)
     for (int y = 0; y < gvRes.y; ++y) gv[shared::cellIndex({wall, y, z}, gvRes)] = 10.0f;
 
-  auto fluxBeyond = [&](const Floats& g, bool beyond) {
-    double sum = 0.0;
-    for (int z = 0; z < res.z; ++z)
-      for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x) {
-          if ((x >= wall) != beyond) continue;
-          for (int channel = 0; channel < 3; ++channel)
-            sum += shared::shIntegralOfC0(
-                g[shared::coefficientIndex(channel, 0, 4, shared::cellIndex({x, y, z}, res), cells)]);
-        }
-    return sum;
+  auto fluxBeyond = [&](const Grid& g, bool beyond) {
+    return test::flux(g, res, [&](const glm::ivec3& c) { return (c.x >= wall) == beyond; });
   };
   for (const std::string method : {"gather", "scatter"}) {
-    test::GvPropagationRig open(res, 1, iterations, method, false);
-    open.load(vpl, vpl);
+    test::PropagationRig open("standard", res, test::iterationsTable(iterations, method));
+    open.load(vpl);
     open.propagate();
-    test::GvPropagationRig walled(res, 1, iterations, method, true);
-    walled.load(vpl, vpl);
+    test::PropagationRig walled("standard", res, test::iterationsTable(iterations, method), 1, true);
+    walled.load(vpl);
     walled.loadGv(gv, 0);
     walled.propagate();
     const double openBeyond = fluxBeyond(open.accumulated(), true);

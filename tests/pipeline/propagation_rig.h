@@ -1,7 +1,9 @@
 #pragma once
 // A propagation strategy created as an experiment creates it (by registered name, from a TOML
 // table), on its own light grid of a chosen SH order, with a normal grid when the strategy
-// declares one; for tests that run a propagation kernel on hand-made grids.
+// declares one and, optionally, a geometry volume; for tests that run a propagation kernel on
+// hand-made grids. Also the GV lookup of shaders/common/geometry_volume_lookup.glsl compiled as
+// double-precision C++ over `shared::gvBlocking`, and the grid helpers (grid_test_support.h).
 
 #include <memory>
 #include <string>
@@ -14,15 +16,22 @@
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "grid_test_support.h"
 #include "pipeline_test_support.h"
+
+// The lookup reads the global `gvBlocking` (the kernels' buffer); a reference model sets it.
+LPVLAB_SHARED_GLSL_BEGIN
+std::vector<double> gvBlocking;
+using glm::mix;
+#include "shaders/common/geometry_volume_lookup.glsl"
+LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab::test {
 
-using Grid = std::vector<float>;  // grid.glsl layout, 3 channels
-
 class PropagationRig {
 public:
-  // withGv: the composition has a geometry volume (the strategy's kernels read it).
+  // type: the registered strategy name; table: its [propagation] table; withGv: the composition
+  // has a geometry volume (the strategy's kernels read it).
   PropagationRig(const std::string& type, const glm::ivec3& resolution, toml::table table,
                  int shOrder = 1, bool withGv = false)
       : table_(std::move(table)) {
@@ -41,12 +50,12 @@ public:
     if (withGv) gv_ = std::make_unique<GeometryVolume>(geometry_, false);
   }
 
-  // Sets current and accumulated (accumulated = current unless given).
-  void load(const Grid& current, const Grid* accumulated = nullptr) {
+  void load(const Grid& current, const Grid& accumulated) {
     grid_.current.upload(current.data(), current.size() * sizeof(float));
-    const Grid& acc = accumulated ? *accumulated : current;
-    grid_.accumulated.upload(acc.data(), acc.size() * sizeof(float));
+    grid_.accumulated.upload(accumulated.data(), accumulated.size() * sizeof(float));
   }
+  // Both current and accumulated: the grid as injection leaves it.
+  void load(const Grid& injected) { load(injected, injected); }
   // The normal grid as injection leaves it: vec4 per cell.
   void loadNormals(const std::vector<float>& normals) {
     ASSERT_TRUE(normals_) << "the strategy declared no normal grid";
@@ -54,6 +63,7 @@ public:
   }
   // The GV's blocking coefficients (geometry_volume.h layout) and its first occluded iteration.
   void loadGv(const std::vector<float>& blocking, int firstOccludedIteration) {
+    ASSERT_TRUE(gv_) << "the rig was made without a geometry volume";
     gv_->blocking.upload(blocking.data(), blocking.size() * sizeof(float));
     gv_->firstOccludedIteration = firstOccludedIteration;
   }
@@ -63,11 +73,12 @@ public:
     strategy_->propagate(frame);
     checkGl("propagation test");
   }
-  Grid current() const { return download(grid_.current, grid_.floatsPerGrid()); }
-  Grid accumulated() const { return download(grid_.accumulated, grid_.floatsPerGrid()); }
+  Grid current() const { return download(grid_.current, floatsPerGrid()); }
+  Grid accumulated() const { return download(grid_.accumulated, floatsPerGrid()); }
   std::vector<float> normals() const {
     return download(normals_->normals, std::size_t(4) * geometry_.cellCount());
   }
+  std::size_t floatsPerGrid() const { return grid_.floatsPerGrid(); }
   PropagationStrategy& strategy() { return *strategy_; }
 
 private:
@@ -88,9 +99,11 @@ private:
   gl::Texture indirect_;
 };
 
-inline toml::table iterationsTable(int iterations) {
+// A [propagation] table: `iterations`, and `method` unless empty.
+inline toml::table iterationsTable(int iterations, const std::string& method = "") {
   toml::table t;
   t.insert("iterations", iterations);
+  if (!method.empty()) t.insert("method", method);
   return t;
 }
 

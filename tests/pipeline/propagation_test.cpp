@@ -10,141 +10,30 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <iomanip>
 #include <iostream>
-#include <memory>
 #include <random>
-#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <toml++/toml.h>
 
-#include "framework/core/parameters.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/solid_angle.h"
-#include "framework/pipeline/frame.h"
-#include "framework/pipeline/strategy.h"
-#include "pipeline_test_support.h"
+#include "propagation_rig.h"
 
 namespace lpvlab {
 namespace {
 
-constexpr int kCoefficients = 4;
-using Grid = std::vector<float>;  // grid.glsl layout, 3 channels, 4 coefficients
+using namespace test;
 
 // The standard strategy, created as an experiment creates it, on its own light grid.
-class PropagationRig {
-public:
-  PropagationRig(const glm::ivec3& resolution, int iterations) {
-    test::glTestContext();
-    table_.insert("iterations", iterations);
-    Params params(table_, "propagation test", "propagation");
-    strategy_ = Registry<PropagationStrategy>::instance().create(params, "standard");
-    params.finish();
-    geometry_ = GridGeometry{glm::vec3(0.0f), 1.0f, resolution};
-    Requirements requirements;
-    strategy_->declare(requirements);
-    strategy_->prepare(shaders_, geometry_, requirements);
-    grid_ = LightGrid(geometry_, requirements.shOrder);
-  }
-
-  // Sets current and accumulated (accumulated = current unless given).
-  void load(const Grid& current, const Grid* accumulated = nullptr) {
-    grid_.current.upload(current.data(), current.size() * sizeof(float));
-    const Grid& acc = accumulated ? *accumulated : current;
-    grid_.accumulated.upload(acc.data(), acc.size() * sizeof(float));
-  }
-  void propagate() {
-    Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_, .indirect = indirect_};
-    strategy_->propagate(frame);
-    checkGl("propagation test");
-  }
-  Grid current() const { return download(grid_.current); }
-  Grid accumulated() const { return download(grid_.accumulated); }
-  PropagationStrategy& strategy() { return *strategy_; }
-
-private:
-  Grid download(const gl::Buffer& buffer) const {
-    Grid data(grid_.floatsPerGrid());
-    buffer.download(data.data(), data.size() * sizeof(float));
-    return data;
-  }
-  toml::table table_;
-  ShaderCompiler shaders_;
-  std::unique_ptr<PropagationStrategy> strategy_;
-  GridGeometry geometry_;
-  LightGrid grid_;
-  GBuffer gbuffer_;        // propagation reads none of these
-  LightMaps lightMaps_;
-  gl::Texture indirect_;
-};
-
-int cells(const glm::ivec3& res) { return shared::cellCount(res); }
-
-std::size_t at(const glm::ivec3& res, const glm::ivec3& cell, int channel, int k) {
-  return std::size_t(shared::coefficientIndex(channel, k, kCoefficients,
-                                              shared::cellIndex(cell, res), cells(res)));
+PropagationRig standardRig(const glm::ivec3& resolution, int iterations) {
+  return PropagationRig("standard", resolution, iterationsTable(iterations));
 }
-
-glm::dvec4 cellOf(const Grid& g, const glm::ivec3& res, const glm::ivec3& cell, int channel) {
-  glm::dvec4 c;
-  for (int k = 0; k < kCoefficients; ++k) c[k] = g[at(res, cell, channel, k)];
-  return c;
-}
-
-void forEachCell(const glm::ivec3& res, const std::function<void(const glm::ivec3&)>& f) {
-  for (int z = 0; z < res.z; ++z)
-    for (int y = 0; y < res.y; ++y)
-      for (int x = 0; x < res.x; ++x) f({x, y, z});
-}
-
-// Total flux (W, summed over RGB): sum of shIntegral over cells, optionally over some cells.
-double flux(const Grid& g, const glm::ivec3& res,
-            const std::function<bool(const glm::ivec3&)>& include = nullptr) {
-  double sum = 0.0;
-  forEachCell(res, [&](const glm::ivec3& c) {
-    if (include && !include(c)) return;
-    for (int channel = 0; channel < 3; ++channel) sum += shared::shIntegral(cellOf(g, res, c, channel));
-  });
-  return sum;
-}
-
-double maxAbs(const Grid& g) {
-  double m = 0.0;
-  for (float v : g) m = std::max(m, double(std::abs(v)));
-  return m;
-}
-
-bool allFinite(const Grid& g) {
-  return std::all_of(g.begin(), g.end(), [](float v) { return std::isfinite(v); });
-}
-
-const glm::ivec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
 // What cell coefficients `c` send into the neighbour one step along `d`: the shared GLSL.
 glm::dvec4 sent(const glm::dvec4& c, const glm::ivec3& d) {
   static const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
   return shared::propagateToNeighbour(c, glm::dvec3(d), angles.farFace, angles.sideFace);
-}
-
-// Per-channel flux of the test sources (W): distinct, so channels can't be mixed up unnoticed.
-const double kChannelFlux[3] = {1.0, 0.5, 0.25};
-double injectedFlux() { return kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2]; }
-
-// One cell holding, per channel, Phi / pi * cosLobe(n) (a Lambertian VPL, as rsm_vpl injects) or,
-// with isotropic, only c0 such that shIntegral = Phi.
-Grid pointSource(const glm::ivec3& res, const glm::ivec3& cell, bool isotropic,
-                 const glm::dvec3& n = {0, 0, 1}) {
-  Grid g(std::size_t(3) * kCoefficients * cells(res), 0.0f);
-  for (int channel = 0; channel < 3; ++channel) {
-    const double phi = kChannelFlux[channel];
-    const glm::dvec4 c = isotropic ? glm::dvec4(phi / (2.0 * std::sqrt(M_PI)), 0, 0, 0)
-                                   : phi / M_PI * shared::shCosineLobe(n);
-    for (int k = 0; k < kCoefficients; ++k) g[at(res, cell, channel, k)] = float(c[k]);
-  }
-  return g;
 }
 
 // The largest factor by which one propagation step can multiply a cell's flux, over cells
@@ -167,48 +56,11 @@ double maxStepGain() {
 
 // ---- a. symmetries ----------------------------------------------------------------------------
 
-// A symmetry of the cube: the signed permutation P acting on cell offsets from `centre` and on
-// directions. An order-1 SH function a + b.w in cell c maps to a + (P b).w in cell P c; with
-// (c0, c1, c2, c3) = (a, -y, z, -x) (up to the basis' constants), b = (-c3, -c1, c2).
-struct Symmetry {
-  std::string name;
-  glm::dmat3 p;  // columns
-};
-
-glm::dvec3 linearPart(const glm::dvec4& c) { return {-c[3], -c[1], c[2]}; }
-
-// Largest |difference| between the grid and its image under the symmetry.
-double asymmetry(const Grid& g, const glm::ivec3& res, const glm::ivec3& centre, const Symmetry& s) {
-  double worst = 0.0;
-  forEachCell(res, [&](const glm::ivec3& c) {
-    const glm::ivec3 image = centre + glm::ivec3(glm::round(s.p * glm::dvec3(c - centre)));
-    if (!shared::cellInside(image, res)) {
-      ADD_FAILURE() << s.name << " maps cell (" << c.x << "," << c.y << "," << c.z << ") out of the grid";
-      return;
-    }
-    for (int channel = 0; channel < 3; ++channel) {
-      const glm::dvec4 here = cellOf(g, res, c, channel), there = cellOf(g, res, image, channel);
-      worst = std::max(worst, std::abs(there[0] - here[0]));
-      const glm::dvec3 b = s.p * linearPart(here), bImage = linearPart(there);
-      for (int i = 0; i < 3; ++i) worst = std::max(worst, std::abs(bImage[i] - b[i]));
-    }
-  });
-  return worst;
-}
-
-const Symmetry kMirrorX{"mirror x", glm::dmat3(-1, 0, 0, 0, 1, 0, 0, 0, 1)};
-const Symmetry kMirrorY{"mirror y", glm::dmat3(1, 0, 0, 0, -1, 0, 0, 0, 1)};
-const Symmetry kMirrorZ{"mirror z", glm::dmat3(1, 0, 0, 0, 1, 0, 0, 0, -1)};
-const Symmetry kSwapXY{"swap x,y", glm::dmat3(0, 1, 0, 1, 0, 0, 0, 0, 1)};
-const Symmetry kSwapYZ{"swap y,z", glm::dmat3(1, 0, 0, 0, 0, 1, 0, 1, 0)};
-const Symmetry kSwapXZ{"swap x,z", glm::dmat3(0, 0, 1, 0, 1, 0, 1, 0, 0)};
-const Symmetry kRotateXYZ{"x->y->z->x", glm::dmat3(0, 1, 0, 0, 0, 1, 1, 0, 0)};
-
 const glm::ivec3 kRes15{15, 15, 15};
 const glm::ivec3 kCentre15{7, 7, 7};
 
 TEST(Propagation, LobeAlongZKeepsTheMirrorsOfXAndY) {
-  PropagationRig rig(kRes15, 5);
+  PropagationRig rig = standardRig(kRes15, 5);
   rig.load(pointSource(kRes15, kCentre15, false));
   rig.propagate();
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
@@ -226,7 +78,7 @@ TEST(Propagation, LobeAlongZKeepsTheMirrorsOfXAndY) {
 }
 
 TEST(Propagation, IsotropicSourceKeepsEveryMirrorAndAxisPermutation) {
-  PropagationRig rig(kRes15, 5);
+  PropagationRig rig = standardRig(kRes15, 5);
   rig.load(pointSource(kRes15, kCentre15, true));
   rig.propagate();
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
@@ -282,7 +134,7 @@ void energyAndShell(bool isotropic) {
   const double gMax = maxStepGain();
   auto inside = [&](const glm::ivec3& c) { return chebyshev(c) <= radius; };
 
-  PropagationRig rig(kRes15, 1);  // one step per call
+  PropagationRig rig = standardRig(kRes15, 1);  // one step per call
   std::vector<Grid> steps{pointSource(kRes15, kCentre15, isotropic)};
   rig.load(steps[0]);
   for (int k = 1; k <= iterations; ++k) {
@@ -290,7 +142,7 @@ void energyAndShell(bool isotropic) {
     steps.push_back(rig.current());
   }
   // The same as one call of `iterations` steps.
-  PropagationRig whole(kRes15, iterations);
+  PropagationRig whole = standardRig(kRes15, iterations);
   whole.load(steps[0]);
   whole.propagate();
   const Grid wholeCurrent = whole.current();
@@ -362,7 +214,7 @@ TEST(Propagation, EnergyPerIterationAndFluxThroughAShellFromAnIsotropicSource) {
 // ---- c. zero and very many iterations ---------------------------------------------------------
 
 TEST(Propagation, ZeroIterationsLeaveTheGridAsInjected) {
-  PropagationRig rig(kRes15, 0);
+  PropagationRig rig = standardRig(kRes15, 0);
   EXPECT_EQ(rig.strategy().iterations(), 0);
   const Grid injected = pointSource(kRes15, kCentre15, false, glm::normalize(glm::dvec3(1, -2, 3)));
   rig.load(injected);
@@ -373,7 +225,7 @@ TEST(Propagation, ZeroIterationsLeaveTheGridAsInjected) {
 
 TEST(Propagation, AThousandIterationsStayFiniteAndLoseLightAtTheEdge) {
   const glm::ivec3 res{7, 7, 7};
-  PropagationRig rig(res, 1000);
+  PropagationRig rig = standardRig(res, 1000);
   rig.load(pointSource(res, {3, 3, 3}, false, glm::normalize(glm::dvec3(1, 2, 3))));
   rig.propagate();
   const Grid current = rig.current(), accumulated = rig.accumulated();
@@ -395,13 +247,10 @@ TEST(Propagation, GpuStepMatchesTheSharedCppGather) {
   const glm::ivec3 res{6, 5, 4};  // not multiples of the 4^3 work group, nor a cube
   const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
   std::mt19937 random(12345);
-  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  Grid current(n), accumulated(n);
-  for (float& v : current) v = uniform(random);
-  for (float& v : accumulated) v = uniform(random);
+  const Grid current = randomFloats(n, random), accumulated = randomFloats(n, random);
 
-  PropagationRig rig(res, 1);
-  rig.load(current, &accumulated);
+  PropagationRig rig = standardRig(res, 1);
+  rig.load(current, accumulated);
   rig.propagate();
   const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
 
@@ -420,17 +269,8 @@ TEST(Propagation, GpuStepMatchesTheSharedCppGather) {
       }
     }
   });
-  const double tolerance = 1e-5 * maxAbs(expectedCurrent);
-  const double toleranceAccumulated = 1e-5 * maxAbs(expectedAccumulated);
-  int bad = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (std::abs(gpuCurrent[i] - expectedCurrent[i]) > tolerance && bad++ < 5)
-      ADD_FAILURE() << "current[" << i << "]: GPU " << gpuCurrent[i] << ", C++ " << expectedCurrent[i];
-    if (std::abs(gpuAccumulated[i] - expectedAccumulated[i]) > toleranceAccumulated && bad++ < 5)
-      ADD_FAILURE() << "accumulated[" << i << "]: GPU " << gpuAccumulated[i] << ", C++ "
-                    << expectedAccumulated[i];
-  }
-  EXPECT_EQ(bad, 0);
+  expectClose(gpuCurrent, expectedCurrent, 1e-5, "current");
+  expectClose(gpuAccumulated, expectedAccumulated, 1e-5, "accumulated");
 }
 
 }  // namespace

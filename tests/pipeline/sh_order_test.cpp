@@ -24,8 +24,11 @@
 namespace lpvlab {
 namespace {
 
+using test::expectClose;
+using test::forEachCell;
 using test::Grid;
-const glm::ivec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+using test::kAxes;
+using test::maxAbs;
 
 // A grid of `coefficients` per channel in grid.glsl's layout.
 struct OrderGrid {
@@ -38,24 +41,12 @@ struct OrderGrid {
   }
 };
 
-void forEachCell(const glm::ivec3& res, const std::function<void(const glm::ivec3&)>& f) {
-  for (int z = 0; z < res.z; ++z)
-    for (int y = 0; y < res.y; ++y)
-      for (int x = 0; x < res.x; ++x) f({x, y, z});
-}
-
 double flux(const Grid& g, const OrderGrid& o) {
   double sum = 0.0;
   forEachCell(o.res, [&](const glm::ivec3& c) {
     for (int channel = 0; channel < 3; ++channel) sum += shared::shIntegralOfC0(g[o.at(c, channel, 0)]);
   });
   return sum;
-}
-
-double maxAbs(const Grid& g) {
-  double m = 0.0;
-  for (float v : g) m = std::max(m, double(std::abs(v)));
-  return m;
 }
 
 // The standard gather at any order, in double precision, added to `accumulated`.
@@ -91,27 +82,16 @@ Grid gatherAnyOrder(const Grid& g, const OrderGrid& o, Grid& accumulated) {
   return out;
 }
 
-void expectClose(const Grid& gpu, const Grid& expected, double relative, const char* what) {
-  const double tolerance = relative * maxAbs(expected);
-  int bad = 0;
-  for (std::size_t i = 0; i < gpu.size(); ++i)
-    if (std::abs(gpu[i] - expected[i]) > tolerance && bad++ < 5)
-      ADD_FAILURE() << what << "[" << i << "]: GPU " << gpu[i] << ", C++ " << expected[i];
-  EXPECT_EQ(bad, 0) << what;
-}
-
 class ShOrder : public ::testing::TestWithParam<int> {};
 
 TEST_P(ShOrder, StandardGatherMatchesTheAnyOrderCppGather) {
   const int order = GetParam();
   const OrderGrid o{{6, 5, 4}, shared::shCoefficientCount(order)};
   std::mt19937 random(99 + order);
-  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  Grid current(o.floats()), accumulated(o.floats());
-  for (float& v : current) v = uniform(random);
-  for (float& v : accumulated) v = uniform(random);
+  const Grid current = test::randomFloats(o.floats(), random);
+  const Grid accumulated = test::randomFloats(o.floats(), random);
   test::PropagationRig rig("standard", o.res, test::iterationsTable(1), order);
-  rig.load(current, &accumulated);
+  rig.load(current, accumulated);
   rig.propagate();
   Grid expectedAccumulated = accumulated;
   const Grid expectedCurrent = gatherAnyOrder(current, o, expectedAccumulated);

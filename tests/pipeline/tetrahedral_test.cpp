@@ -15,20 +15,13 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
-#include <memory>
 #include <random>
-#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <toml++/toml.h>
 
-#include "framework/core/parameters.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/tetrahedral_solid_angles.h"
-#include "framework/pipeline/frame.h"
-#include "framework/pipeline/strategy.h"
-#include "pipeline_test_support.h"
+#include "propagation_rig.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"
@@ -37,70 +30,28 @@ LPVLAB_SHARED_GLSL_END
 namespace lpvlab {
 namespace {
 
-constexpr int kCoefficients = 4;
-using Grid = std::vector<float>;     // grid.glsl layout, 3 channels, 4 coefficients
-using Cells = std::vector<double>;   // the lattice, same layout over tetSlotCount slots
+using namespace test;
+using Cells = std::vector<double>;  // the lattice, grid.glsl's layout over tetSlotCount slots
 
-class TetrahedralRig {
-public:
-  TetrahedralRig(const glm::ivec3& resolution, int iterations) {
-    test::glTestContext();
-    table_.insert("iterations", iterations);
-    Params params(table_, "tetrahedral test", "propagation");
-    strategy_ = Registry<PropagationStrategy>::instance().create(params, "tetrahedral");
-    params.finish();
-    const GridGeometry geometry{glm::vec3(0.0f), 1.0f, resolution};
-    Requirements requirements;
-    strategy_->declare(requirements);
-    strategy_->prepare(shaders_, geometry, requirements);
-    grid_ = LightGrid(geometry, requirements.shOrder);
-  }
-  void run(const Grid& current, const Grid& accumulated) {
-    grid_.current.upload(current.data(), current.size() * sizeof(float));
-    grid_.accumulated.upload(accumulated.data(), accumulated.size() * sizeof(float));
-    Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_, .indirect = indirect_};
-    strategy_->propagate(frame);
-    checkGl("tetrahedral test");
-  }
-  void run(const Grid& injected) { run(injected, injected); }
-  Grid current() const { return download(grid_.current); }
-  Grid accumulated() const { return download(grid_.accumulated); }
-
-private:
-  Grid download(const gl::Buffer& buffer) const {
-    Grid data(grid_.floatsPerGrid());
-    buffer.download(data.data(), data.size() * sizeof(float));
-    return data;
-  }
-  toml::table table_;
-  ShaderCompiler shaders_;
-  std::unique_ptr<PropagationStrategy> strategy_;
-  LightGrid grid_;
-  GBuffer gbuffer_;
-  LightMaps lightMaps_;
-  gl::Texture indirect_;
-};
-
-int cubes(const glm::ivec3& res) { return shared::cellCount(res); }
-
-std::size_t at(const glm::ivec3& res, const glm::ivec3& cube, int channel, int k) {
-  return std::size_t(shared::coefficientIndex(channel, k, kCoefficients,
-                                              shared::cellIndex(cube, res), cubes(res)));
+// The tetrahedral strategy and its light grid of cubes; run: load current and accumulated, then
+// propagate.
+PropagationRig tetrahedralRig(const glm::ivec3& resolution, int iterations) {
+  return PropagationRig("tetrahedral", resolution, iterationsTable(iterations));
 }
+void run(PropagationRig& rig, const Grid& current, const Grid& accumulated) {
+  rig.load(current, accumulated);
+  rig.propagate();
+}
+void run(PropagationRig& rig, const Grid& injected) { run(rig, injected, injected); }
 
 std::size_t slotAt(const glm::ivec3& res, const glm::ivec4& tet, int channel, int k) {
   return std::size_t(shared::coefficientIndex(channel, k, kCoefficients,
                                               shared::tetSlot(tet, res), shared::tetSlotCount(res)));
 }
 
-void forEachCube(const glm::ivec3& res, const std::function<void(const glm::ivec3&)>& f) {
-  for (int z = 0; z < res.z; ++z)
-    for (int y = 0; y < res.y; ++y)
-      for (int x = 0; x < res.x; ++x) f({x, y, z});
-}
-
-void forEachCell(const glm::ivec3& res, const std::function<void(const glm::ivec4&)>& f) {
-  forEachCube(res, [&](const glm::ivec3& c) {
+// Every tetrahedral cell of the lattice inside the grid.
+void forEachTet(const glm::ivec3& res, const std::function<void(const glm::ivec4&)>& f) {
+  forEachCell(res, [&](const glm::ivec3& c) {
     for (int code = 0; code < shared::TET_PER_CUBE; ++code) {
       const glm::ivec4 tet{c.x, c.y, c.z, code};
       if (shared::tetInside(tet, res)) f(tet);
@@ -114,36 +65,16 @@ glm::dvec4 coefficientsOf(const Cells& cells, const glm::ivec3& res, const glm::
   return c;
 }
 
-glm::dvec4 cubeOf(const Grid& g, const glm::ivec3& res, const glm::ivec3& cube, int channel) {
-  glm::dvec4 c;
-  for (int k = 0; k < kCoefficients; ++k) c[k] = g[at(res, cube, channel, k)];
-  return c;
-}
-
-double flux(const Grid& g, const glm::ivec3& res) {
-  double sum = 0.0;
-  forEachCube(res, [&](const glm::ivec3& c) {
-    for (int channel = 0; channel < 3; ++channel) sum += shared::shIntegral(cubeOf(g, res, c, channel));
-  });
-  return sum;
-}
-
-double maxAbs(const Grid& g) {
-  double m = 0.0;
-  for (float v : g) m = std::max(m, double(std::abs(v)));
-  return m;
-}
-
 // ---- the double-precision reference of split, gather and merge --------------------------------
 
 Cells split(const Grid& g, const glm::ivec3& res) {
   Cells cells(std::size_t(3) * kCoefficients * shared::tetSlotCount(res), 0.0);
-  forEachCell(res, [&](const glm::ivec4& tet) {
+  forEachTet(res, [&](const glm::ivec4& tet) {
     const glm::ivec3 lower{tet.x, tet.y, tet.z};
     const glm::ivec3 upper = lower + shared::tetUnitOffset(shared::tetAxis(tet.w));
     for (int channel = 0; channel < 3; ++channel) {
-      const glm::dvec4 c = shared::tetSplitWeight(lower, res) * cubeOf(g, res, lower, channel) +
-                           shared::tetSplitWeight(upper, res) * cubeOf(g, res, upper, channel);
+      const glm::dvec4 c = shared::tetSplitWeight(lower, res) * cellOf(g, res, lower, channel) +
+                           shared::tetSplitWeight(upper, res) * cellOf(g, res, upper, channel);
       for (int k = 0; k < kCoefficients; ++k) cells[slotAt(res, tet, channel, k)] = c[k];
     }
   });
@@ -154,7 +85,7 @@ const TetrahedralFaceSolidAngles kAngles = tetrahedralFaceSolidAngles();
 
 Cells step(const Cells& source, const glm::ivec3& res) {
   Cells target(source.size(), 0.0);
-  forEachCell(res, [&](const glm::ivec4& tet) {
+  forEachTet(res, [&](const glm::ivec4& tet) {
     for (int face = 0; face < shared::TET_FACES; ++face) {
       const glm::ivec4 n = shared::tetNeighbour(tet, face);
       if (!shared::tetInside(n, res)) continue;
@@ -169,8 +100,8 @@ Cells step(const Cells& source, const glm::ivec3& res) {
 }
 
 Grid merge(const Cells& cells, const glm::ivec3& res) {
-  std::vector<double> sum(std::size_t(3) * kCoefficients * cubes(res), 0.0);
-  forEachCell(res, [&](const glm::ivec4& tet) {
+  std::vector<double> sum(std::size_t(3) * kCoefficients * test::cells(res), 0.0);
+  forEachTet(res, [&](const glm::ivec4& tet) {
     const glm::ivec3 lower{tet.x, tet.y, tet.z};
     const glm::ivec3 upper = lower + shared::tetUnitOffset(shared::tetAxis(tet.w));
     for (int channel = 0; channel < 3; ++channel)
@@ -183,21 +114,7 @@ Grid merge(const Cells& cells, const glm::ivec3& res) {
   return Grid(sum.begin(), sum.end());
 }
 
-// ---- sources -----------------------------------------------------------------------------------
-
-const double kChannelFlux[3] = {1.0, 0.5, 0.25};
-double injectedFlux() { return kChannelFlux[0] + kChannelFlux[1] + kChannelFlux[2]; }
-
-Grid pointSource(const glm::ivec3& res, const glm::ivec3& cube, bool isotropic) {
-  Grid g(std::size_t(3) * kCoefficients * cubes(res), 0.0f);
-  for (int channel = 0; channel < 3; ++channel) {
-    const double phi = kChannelFlux[channel];
-    const glm::dvec4 c = isotropic ? glm::dvec4(phi / (2.0 * std::sqrt(M_PI)), 0, 0, 0)
-                                   : phi / M_PI * shared::shCosineLobe({0, 0, 1});
-    for (int k = 0; k < kCoefficients; ++k) g[at(res, cube, channel, k)] = float(c[k]);
-  }
-  return g;
-}
+// ---- the clamp's gain -----------------------------------------------------------------------------
 
 // The largest factor by which one step can multiply a cell's flux, over cells holding one
 // clamped-cosine lobe Phi / pi * cosLobe(n) (n sampled densely, every cell orientation); a
@@ -230,15 +147,12 @@ double maxStepGain() {
 TEST(TetrahedralPropagation, GpuMatchesTheSharedCppOnRandomGrids) {
   const glm::ivec3 res{5, 4, 3};  // not multiples of the work group, nor a cube; many boundary cells
   const int iterations = 3;
-  const std::size_t n = std::size_t(3) * kCoefficients * cubes(res);
+  const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
   std::mt19937 random(2024);
-  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  Grid current(n), accumulated(n);
-  for (float& v : current) v = uniform(random);
-  for (float& v : accumulated) v = uniform(random);
+  const Grid current = randomFloats(n, random), accumulated = randomFloats(n, random);
 
-  TetrahedralRig rig(res, iterations);
-  rig.run(current, accumulated);
+  PropagationRig rig = tetrahedralRig(res, iterations);
+  run(rig, current, accumulated);
   const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
 
   Cells cells = split(current, res), sum(cells.size(), 0.0);
@@ -259,13 +173,11 @@ TEST(TetrahedralPropagation, GpuMatchesTheSharedCppOnRandomGrids) {
 
 TEST(TetrahedralPropagation, ResamplingConservesFlux) {
   const glm::ivec3 res{4, 3, 5};
-  const std::size_t n = std::size_t(3) * kCoefficients * cubes(res);
+  const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
   std::mt19937 random(99);
-  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-  Grid g(n);
-  for (float& v : g) v = uniform(random);
-  TetrahedralRig rig(res, 0);
-  rig.run(g);
+  const Grid g = randomFloats(n, random);
+  PropagationRig rig = tetrahedralRig(res, 0);
+  run(rig, g);
   EXPECT_EQ(rig.accumulated(), g) << "no steps add nothing";
   const Grid resampled = rig.current();
   EXPECT_NEAR(flux(resampled, res), flux(g, res), 1e-5 * maxAbs(g) * double(n));
@@ -275,7 +187,7 @@ TEST(TetrahedralPropagation, ResamplingConservesFlux) {
   // Every cube alone, corner ones included, keeps its flux.
   for (const glm::ivec3& cube : {glm::ivec3(0, 0, 0), glm::ivec3(3, 2, 4), glm::ivec3(1, 1, 2)}) {
     const Grid one = pointSource(res, cube, true);
-    rig.run(one);
+    run(rig, one);
     EXPECT_NEAR(flux(rig.current(), res), injectedFlux(), 1e-6 * injectedFlux());
   }
 }
@@ -291,8 +203,8 @@ void fluxPerStep(bool isotropic) {
             << " source; largest clamp gain per step " << gMax << "\n";
   double before = phi, stepsFlux = 0.0;
   for (int k = 1; k <= steps; ++k) {
-    TetrahedralRig rig(res, k);
-    rig.run(injected);
+    PropagationRig rig = tetrahedralRig(res, k);
+    run(rig, injected);
     const double now = flux(rig.current(), res), accumulated = flux(rig.accumulated(), res);
     std::cout << "[ tetrahedral ] step " << k << ": flux " << now << " W (" << now / phi
               << " of injected), accumulated " << accumulated << " W\n";
@@ -313,8 +225,8 @@ TEST(TetrahedralPropagation, FluxPerStepFromALobe) { fluxPerStep(false); }
 
 TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
   const glm::ivec3 res{5, 5, 5};
-  TetrahedralRig rig(res, 300);
-  rig.run(pointSource(res, {2, 2, 2}, false));
+  PropagationRig rig = tetrahedralRig(res, 300);
+  run(rig, pointSource(res, {2, 2, 2}, false));
   const double now = flux(rig.current(), res);
   ASSERT_TRUE(std::isfinite(now));
   EXPECT_GE(now, 0.0);
@@ -323,44 +235,13 @@ TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
 
 // ---- c. symmetry -------------------------------------------------------------------------------
 
-// A symmetry of the cube about `centre`'s cube centre: the signed permutation P acting on cube
-// offsets and on directions; an order-1 SH a + b.w maps to a + (P b).w, and with
-// (c0, c1, c2, c3) = (a, -y, z, -x) (up to constants) b = (-c3, -c1, c2).
-struct Symmetry {
-  std::string name;
-  glm::dmat3 p;  // columns
-};
-
-glm::dvec3 linearPart(const glm::dvec4& c) { return {-c[3], -c[1], c[2]}; }
-
-double asymmetry(const Grid& g, const glm::ivec3& res, const glm::ivec3& centre, const Symmetry& s) {
-  double worst = 0.0;
-  forEachCube(res, [&](const glm::ivec3& c) {
-    const glm::ivec3 image = centre + glm::ivec3(glm::round(s.p * glm::dvec3(c - centre)));
-    for (int channel = 0; channel < 3; ++channel) {
-      const glm::dvec4 here = cubeOf(g, res, c, channel), there = cubeOf(g, res, image, channel);
-      worst = std::max(worst, std::abs(there[0] - here[0]));
-      const glm::dvec3 b = s.p * linearPart(here), bImage = linearPart(there);
-      for (int i = 0; i < 3; ++i) worst = std::max(worst, std::abs(bImage[i] - b[i]));
-    }
-  });
-  return worst;
-}
-
-const Symmetry kMirrorX{"mirror x", glm::dmat3(-1, 0, 0, 0, 1, 0, 0, 0, 1)};
-const Symmetry kMirrorY{"mirror y", glm::dmat3(1, 0, 0, 0, -1, 0, 0, 0, 1)};
-const Symmetry kMirrorZ{"mirror z", glm::dmat3(1, 0, 0, 0, 1, 0, 0, 0, -1)};
-const Symmetry kSwapXY{"swap x,y", glm::dmat3(0, 1, 0, 1, 0, 0, 0, 0, 1)};
-const Symmetry kRotateZ{"90 degrees about z", glm::dmat3(0, 1, 0, -1, 0, 0, 0, 0, 1)};
-const Symmetry kRotateX{"90 degrees about x", glm::dmat3(1, 0, 0, 0, 0, 1, 0, -1, 0)};
-const Symmetry kRotateXYZ{"x->y->z->x", glm::dmat3(0, 1, 0, 0, 0, 1, 1, 0, 0)};
-
+// The cube's symmetries about the centre cube's centre (grid_test_support.h).
 const glm::ivec3 kRes11{11, 11, 11};
 const glm::ivec3 kCentre11{5, 5, 5};
 
 TEST(TetrahedralPropagation, IsotropicVplKeepsTheCubesSymmetries) {
-  TetrahedralRig rig(kRes11, 7);
-  rig.run(pointSource(kRes11, kCentre11, true));
+  PropagationRig rig = tetrahedralRig(kRes11, 7);
+  run(rig, pointSource(kRes11, kCentre11, true));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     ASSERT_GT(maxAbs(g), 0.0);
     for (const Symmetry& s : {kMirrorX, kMirrorY, kMirrorZ, kSwapXY, kRotateZ, kRotateX, kRotateXYZ})
@@ -369,8 +250,8 @@ TEST(TetrahedralPropagation, IsotropicVplKeepsTheCubesSymmetries) {
 }
 
 TEST(TetrahedralPropagation, LobeAlongZKeepsTheSymmetriesAboutZ) {
-  TetrahedralRig rig(kRes11, 7);
-  rig.run(pointSource(kRes11, kCentre11, false));
+  PropagationRig rig = tetrahedralRig(kRes11, 7);
+  run(rig, pointSource(kRes11, kCentre11, false));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     for (const Symmetry& s : {kMirrorX, kMirrorY, kSwapXY, kRotateZ})
       EXPECT_LE(asymmetry(g, kRes11, kCentre11, s), 1e-5 * maxAbs(g)) << s.name;

@@ -6,7 +6,7 @@
 // A_s / s^2 * cosLobe(-n) to the GV cell containing it (shaders/occlusion/gv_surfel.glsl). With
 // both sources, each fills a GV of its own and the two are merged "by the larger coefficients":
 // per GV cell the whole cell of the source with the larger c0 (shaders/occlusion/gv_merge.comp).
-// docs/variants/geometry_volume.md has the mathematics.
+// docs/variants.md#geometry_volume has the mathematics.
 //
 // | parameter            | type     | default             | meaning                              |
 // |----------------------|----------|---------------------|--------------------------------------|
@@ -87,19 +87,23 @@ public:
   std::size_t memoryBytes() const override { return lightScratch_.size(); }
 
 private:
-  static void setGvUniforms(const GeometryVolume& gv) {
+  // What both injection kernels read first: the GV's placement (uniforms 0-2), the surfels'
+  // positions and normals (texture units 0, 1), and the GV they add to (storage 0).
+  static void useInjection(const Program& program, const GeometryVolume& gv,
+                           const gl::Texture& position, const gl::Texture& normal,
+                           const gl::Buffer& target) {
+    program.use();
     glUniform3fv(0, 1, &gv.geometry.origin[0]);
     glUniform1f(1, gv.geometry.cellSize);
     glUniform3iv(2, 1, &gv.geometry.resolution[0]);
+    glBindTextureUnit(0, position.id());
+    glBindTextureUnit(1, normal.id());
+    target.bindStorage(0);
   }
 
   void injectCamera(Frame& frame, const gl::Buffer& target) {
     const GBuffer& g = frame.gbuffer;
-    camera_.use();
-    setGvUniforms(*frame.geometryVolume);
-    glBindTextureUnit(0, g.position.id());
-    glBindTextureUnit(1, g.normal.id());
-    target.bindStorage(0);
+    useInjection(camera_, *frame.geometryVolume, g.position, g.normal, target);
     glUniform3fv(3, 1, &frame.camera->position[0]);
     glUniform1f(4, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
     glUniform2i(5, g.width, g.height);
@@ -108,11 +112,7 @@ private:
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
     const LightMaps& maps = frame.lightMaps;
-    rsm_.use();
-    setGvUniforms(*frame.geometryVolume);
-    glBindTextureUnit(0, maps.rsmPosition.id());
-    glBindTextureUnit(1, maps.rsmNormal.id());
-    target.bindStorage(0);
+    useInjection(rsm_, *frame.geometryVolume, maps.rsmPosition, maps.rsmNormal, target);
     maps.lightRecords.bindStorage(1);
     maps.viewRecords.bindStorage(2);
     glUniform1i(3, maps.rsmResolution);

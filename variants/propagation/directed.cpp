@@ -6,7 +6,7 @@
 // face passes into a cell is reprojected a second time about the cell's dilated normal, which
 // removes what travels against it. The mathematics and the normalisation (a gain G(n) per
 // cell, so that light travelling along agreeing normals keeps its flux) are in
-// shaders/propagation/directed_faces.glsl and docs/variants/directed.md. Order 1 only. A geometry volume, if the occlusion strategy provides
+// shaders/propagation/directed_faces.glsl and docs/variants.md#directed. Order 1 only. A geometry volume, if the occlusion strategy provides
 // one, attenuates the light crossing each shared face as in thesis alg. 6.2.
 //
 // | parameter  | type | default | meaning                                                       |
