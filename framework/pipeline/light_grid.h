@@ -23,6 +23,10 @@ struct LightGrid {
   LightGrid() = default;
   LightGrid(const GridGeometry& geometry, int shOrder);
 
+  // Bytes of one grid of this layout (current, accumulated, or a strategy's scratch copy).
+  static std::size_t bytesPerGrid(const GridGeometry& geometry, int shOrder) {
+    return std::size_t(kChannels) * (shOrder + 1) * (shOrder + 1) * geometry.cellCount() * sizeof(float);
+  }
   std::size_t floatsPerGrid() const {
     return std::size_t(kChannels) * coefficients * geometry.cellCount();
   }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "error_support.h"
 #include "framework/core/error.h"
 
 // gmock isn't linked into the tests; gtest's IsSubstring prints both strings when it fails.
@@ -16,17 +17,7 @@
 namespace lpvlab {
 namespace {
 
-// The message of the Error that `f` throws; fails the test when it throws nothing.
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an lpvlab::Error";
-  return "";
-}
+using test::errorOf;
 
 toml::table parse(std::string_view text) { return toml::parse(text, std::string_view("exp.toml")); }
 

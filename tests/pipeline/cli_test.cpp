@@ -25,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::lpvlabExecutable;
 using test::quoted;
 using test::readFile;
 
@@ -36,28 +35,8 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-struct Result {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files beside it.
-Result runLpvlab(const std::string& args, const fs::path& workDir, const fs::path& logDir) {
-  const fs::path exe = lpvlabExecutable();
-  Result r;
-  if (!fs::exists(exe)) {
-    ADD_FAILURE() << exe << " does not exist: build the lpvlab target";
-    return r;
-  }
-  const fs::path out = logDir / "stdout.txt", err = logDir / "stderr.txt";
-  const std::string command = "cd " + quoted(workDir.string()) + " && " + quoted(exe.string()) +
-                              " " + args + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
-  const int status = std::system(command.c_str());
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = readFile(out);
-  r.err = readFile(err);
-  return r;
-}
+using Result = test::LpvlabResult;
+using test::runLpvlab;
 
 const nlohmann::json* find(const nlohmann::json& j, const std::vector<std::string>& path) {
   const nlohmann::json* node = &j;

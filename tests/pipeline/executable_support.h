@@ -1,11 +1,16 @@
 #pragma once
 // Running the built lpvlab executable from a test: where it is (beside the tests/ folder of the
-// build), shell quoting for its arguments, and reading back what it wrote.
+// build), shell quoting for its arguments, running it, and reading back what it wrote.
 
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace lpvlab::test {
 
@@ -25,6 +30,30 @@ inline std::string readFile(const std::filesystem::path& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+struct LpvlabResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files in `logDir`.
+inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::path& workDir,
+                              const std::filesystem::path& logDir) {
+  const std::filesystem::path exe = lpvlabExecutable();
+  LpvlabResult r;
+  if (!std::filesystem::exists(exe)) {
+    ADD_FAILURE() << exe << " does not exist: build the lpvlab target";
+    return r;
+  }
+  const std::filesystem::path out = logDir / "stdout.txt", err = logDir / "stderr.txt";
+  const std::string command = "cd " + quoted(workDir.string()) + " && " + quoted(exe.string()) +
+                              " " + args + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
+  const int status = std::system(command.c_str());
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readFile(out);
+  r.err = readFile(err);
+  return r;
 }
 
 }  // namespace lpvlab::test

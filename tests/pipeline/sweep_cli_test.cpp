@@ -32,25 +32,10 @@ using test::lpvlabExecutable;
 using test::quoted;
 using test::readFile;
 
-struct Result {
-  int exitCode = -1;
-  std::string err;
-};
+using Result = test::LpvlabResult;
 
-Result runLpvlab(const std::string& args, const fs::path& logDir) {
-  Result r;
-  if (!fs::exists(lpvlabExecutable())) {
-    ADD_FAILURE() << lpvlabExecutable() << " does not exist: build the lpvlab target";
-    return r;
-  }
-  const fs::path err = logDir / "stderr.txt";
-  const std::string command = quoted(lpvlabExecutable().string()) + " " + args + " >/dev/null 2>" +
-                              quoted(err.string());
-  const int status = std::system(command.c_str());
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = readFile(err);
-  return r;
-}
+// lpvlab ARGS run in (and logging into) `dir`.
+Result runLpvlab(const std::string& args, const fs::path& dir) { return test::runLpvlab(args, dir, dir); }
 
 // RFC 4180 fields: quoted where they hold a comma or quote (names like "a=1,b=2" do).
 std::vector<std::string> splitCsvLine(const std::string& line) {

@@ -44,8 +44,8 @@ public:
                                SpecConstant::f(1, float(angles.sideFace)),
                                SpecConstant::b(2, requirements.geometryVolume)});
     dilate_ = shaders.compute("propagation/directed_dilate.comp");
-    const std::size_t lightBytes = std::size_t(3) * 4 * grid.cellCount() * sizeof(float);
-    scratch_ = gl::Buffer(lightBytes, "light grid (propagation scratch)");
+    scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
+                          "light grid (propagation scratch)");
     if (dilation_) {
       const std::size_t normalBytes = std::size_t(4) * grid.cellCount() * sizeof(float);
       for (gl::Buffer& b : normals_) b = gl::Buffer(normalBytes, "dilated normals");

@@ -46,8 +46,8 @@ public:
         scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
         {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
          SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.geometryVolume)});
-    const std::size_t bytes = std::size_t(3) * coefficients * grid.cellCount() * sizeof(float);
-    scratch_ = gl::Buffer(bytes, "light grid (propagation scratch)");
+    scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
+                          "light grid (propagation scratch)");
   }
 
   void propagate(Frame& frame) override {
