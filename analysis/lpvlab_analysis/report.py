@@ -3,7 +3,8 @@
 The page is self-contained HTML+CSS; images are PNG files referenced by
 relative paths (plots and tone-mapped images in <out>/img/, error maps and
 combined.png linked from the run directories). Sections: sweep overview,
-speed/accuracy plot with Pareto front, ablation table, time per stage and
+speed/accuracy plot with Pareto front, ablation table, each configuration against the
+baseline series at equal settings and equal time (equal_time.py), time per stage and
 error against each swept numeric parameter, trends against the thesis's
 tables (when the sweep varies their parameter), then per configuration the
 reference, result and error map side by side.
@@ -19,6 +20,7 @@ import sys
 
 import numpy as np
 
+from . import equal_time as ET
 from . import fsutil
 from . import images
 from . import plots
@@ -180,6 +182,21 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True)
     body.append(tables.to_html(agg))
     fsutil.write_text(os.path.join(out_dir, "ablation.md"), tables.to_markdown(agg))
     body.append("<p class='note'>Markdown version: <a href='ablation.md'>ablation.md</a></p>")
+
+    body.append("<h2>Equal settings and equal time</h2>")
+    if ET.is_baseline(agg).any():
+        body.append("<p class='note'>Against the baseline series (<code>series = \"baseline\"</code>: the standard "
+                    "method at several grid resolutions): its error at the same grid resolution (equal settings) "
+                    "and at the same total GPU time, interpolated log-log between the two baseline points "
+                    "bracketing it (equal time; never extrapolated: outside the series it is "
+                    f"&ldquo;{ET.OUT_OF_RANGE}&rdquo;). Ratio = error / baseline error; below 1 (bold) the "
+                    "configuration wins.</p>")
+        body.append(ET.to_html(agg))
+        fsutil.write_text(os.path.join(out_dir, "equal_time.md"), ET.compact_markdown(agg) + "\n" + ET.to_markdown(agg))
+        body.append("<p class='note'>Markdown version: <a href='equal_time.md'>equal_time.md</a></p>")
+    else:
+        body.append("<p class='note'>No baseline series in this sweep (no configuration with "
+                    "<code>series = \"baseline\"</code>; docs/experiments.md).</p>")
 
     if numeric:
         body.append("<h2>Parameters</h2>")

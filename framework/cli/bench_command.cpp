@@ -30,8 +30,8 @@ int benchCommand(const Options& options) {
         std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "
                   << e.warmupFrames << " warm-up + " << e.repeats << " repeats, medians (ms)\n";
       }
-      const int cells = e.settings.grid.cellCount();
       Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+      const std::size_t cells = pipeline.propagatedCells();  // every cascade level's
       const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
       if (!header) {
         std::cout << std::setw(12) << "grid" << std::setw(6) << "iter";

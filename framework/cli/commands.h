@@ -28,6 +28,7 @@ int benchTracerCommand(const Options& options);
 int sweepCommand(const Options& options);    // options.out: the sweep directory
 int summaryCommand(const Options& options);  // options.out: the sweep directory
 int reportCommand(const Options& options);   // options.out: the sweep directory
+int fitCommand(const Options& options);      // options.out: the fit's directory
 int listCommand();
 int infoCommand(const Options& options);  // options.experiment holds the scene
 

@@ -1,6 +1,6 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
 // `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
-// `lpvlab report DIR`.
+// `lpvlab report DIR`, `lpvlab fit FILE`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
 
@@ -66,6 +66,14 @@ int main(int argc, char** argv) {
   report->add_option("--metric", options.metric,
                      "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
 
+  CLI::App* fit = app.add_subcommand(
+      "fit", "Fit the strategy constants named by an experiment's [fit] table to the path-traced "
+             "references of its views; write DIR/fit.json and DIR/fitted.toml");
+  fit->add_option("experiment", options.experiment, "Experiment file (TOML) with a [fit] table")
+      ->required();
+  fit->add_option("-o,--out", options.out, "Fit directory (default: runs/<file stem>-fit)");
+  fit->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
+
   app.add_subcommand("list", "List the strategies of every stage");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
   info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
@@ -86,6 +94,7 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) return lpvlab::cli::sweepCommand(options);
     if (summary->parsed()) return lpvlab::cli::summaryCommand(options);
     if (report->parsed()) return lpvlab::cli::reportCommand(options);
+    if (fit->parsed()) return lpvlab::cli::fitCommand(options);
     return lpvlab::cli::listCommand();
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";

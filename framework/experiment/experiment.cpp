@@ -46,10 +46,58 @@ Light readLight(Params& p) {
   return light;
 }
 
+// A [[materials]] table: translucency (thesis 5.4; read by rendering "subsurface") and optionally
+// another base colour for the scene's material `name`, or for the material of one mesh only
+// (`mesh`: that mesh gets its own copy of its material, named "<material> (<mesh>)"). The
+// reflected and the transmitted fractions must not exceed the whole.
+void readMaterialOverride(Params& p, Scene& scene) {
+  if (p.has("name") == p.has("mesh"))
+    throw Error(p.where("name") + ": give exactly one of name (a material) and mesh (a mesh)");
+  const auto list = [](const auto& items) {
+    std::string names;
+    for (const auto& item : items) names += (names.empty() ? "" : ", ") + item.name;
+    return names;
+  };
+  int index = -1;
+  if (p.has("mesh")) {
+    const std::string meshName = p.require<std::string>("mesh");
+    const auto mesh = std::find_if(scene.meshes.begin(), scene.meshes.end(),
+                                   [&](const Mesh& m) { return m.name == meshName; });
+    if (mesh == scene.meshes.end())
+      throw Error(p.where("mesh") + ": the scene " + scene.source + " has no mesh '" + meshName +
+                  "' (it has: " + list(scene.meshes) + ")");
+    Material copy = scene.materials.at(mesh->material);
+    copy.name += " (" + meshName + ")";
+    scene.materials.push_back(copy);
+    index = mesh->material = int(scene.materials.size()) - 1;
+  } else {
+    const std::string name = p.require<std::string>("name");
+    const auto found = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                    [&](const Material& m) { return m.name == name; });
+    if (found == scene.materials.end())
+      throw Error(p.where("name") + ": the scene " + scene.source + " has no material '" + name +
+                  "' (it has: " + list(scene.materials) + ")");
+    index = int(found - scene.materials.begin());
+  }
+  Material& material = scene.materials[index];
+  const Range<glm::vec3> unit{.min = glm::vec3(0.0f), .max = glm::vec3(1.0f)};
+  material.baseColor = p.get<glm::vec3>("base_color", material.baseColor, unit);
+  material.transmittance = p.get<glm::vec3>("transmittance", glm::vec3(0.0f), unit);
+  material.extinction = p.get<float>("extinction", 0.0f, {.min = 0.0f, .max = 1e6f});
+  const glm::vec3 total = material.baseColor + material.transmittance;
+  if (glm::any(glm::greaterThan(total, glm::vec3(1.0f + 1e-6f))))
+    throw Error(p.where("transmittance") + ": material '" + material.name + "' would reflect and " +
+                "transmit more than it receives (base_color + transmittance = " +
+                std::to_string(total.x) + ", " + std::to_string(total.y) + ", " +
+                std::to_string(total.z) + "; at most 1 per channel)");
+}
+
 Camera readCamera(Params& p, const Scene& scene) {
   if (p.has("position")) {
     Camera camera;
-    camera.name = "experiment";
+    // With a position, `name` only labels the camera (so a file can replace the camera of the
+    // file it extends).
+    camera.name = p.get<std::string>("name", "experiment");
     camera.position = p.require<glm::vec3>("position");
     const glm::vec3 target = p.require<glm::vec3>("look_at");
     const glm::vec3 up = p.get<glm::vec3>("up", glm::vec3(0, 1, 0));
@@ -93,21 +141,46 @@ std::string resolveScenePath(const std::string& reference, const std::string& ex
   return (fs::path(experimentFile).parent_path() / path).string();
 }
 
+namespace {
+
+// A stage with a main table and optional [[<stage>.also]] tables (e.g. sky light added to the RSM
+// injection), each with its own type and parameters; the main one runs first.
+template <class Interface>
+std::vector<std::unique_ptr<Interface>> createStage(Params table, const std::string& defaultType) {
+  std::vector<std::unique_ptr<Interface>> strategies;
+  strategies.push_back(Registry<Interface>::instance().create(table, defaultType));
+  for (Params& also : table.tables("also"))
+    strategies.push_back(Registry<Interface>::instance().create(also, defaultType));
+  return strategies;
+}
+
+}  // namespace
+
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides) {
-  // `extends` chains are merged here; a [sweep] table is checked and left to `lpvlab sweep`:
-  // read on its own, a sweep file is its base configuration.
+  // `extends` and `include` are merged here; a [sweep] table is checked and left to `lpvlab
+  // sweep`: read on its own, a sweep file is its base configuration. Likewise a [fit] table is
+  // `lpvlab fit`'s (framework/fit/fit_spec.h).
   toml::table root = path.empty() ? toml::table{} : readExperimentTable(path);
   for (const std::string& assignment : overrides) applyOverride(root, assignment);
   if (root.contains("sweep")) {
     expandSweep(root, path.empty() ? "built-in default experiment" : path);
     root.erase("sweep");
   }
+  root.erase("fit");
+  return loadExperiment(root, path);
+}
+
+Experiment loadExperiment(const toml::table& root, const std::string& path) {
   const std::string file = path.empty() ? "built-in default experiment" : path;
   Params params(root, file);
 
   Experiment e;
   e.file = path;
   e.name = path.empty() ? "cornell_box" : fs::path(path).stem().string();
+  // A label for analyses only (recorded in the manifest, so a sweep that sweeps it has a
+  // param.series column): the report compares every configuration with those whose series is
+  // "baseline" (docs/experiments.md, "Equal time").
+  params.get<std::string>("series", "");
 
   Params sceneParams = params.table("scene");
   const std::string sceneRef = sceneParams.get<std::string>("file", "builtin:cornell_box");
@@ -118,6 +191,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   }
   if (sceneParams.get<bool>("replace_lights", false)) e.scene.lights.clear();
   for (Params& lightParams : params.tables("lights")) e.scene.lights.push_back(readLight(lightParams));
+  for (Params& materialParams : params.tables("materials")) readMaterialOverride(materialParams, e.scene);
 
   Params cameraParams = params.table("camera");
   e.camera = readCamera(cameraParams, e.scene);
@@ -146,6 +220,11 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   }
   e.settings.grid = placement.resolve(e.scene.bounds());
   e.settings.shOrder = gridParams.get<int>("sh_order", 1, {.min = 1, .max = 3});
+  Params cascades = params.table("cascades");
+  e.settings.cascades.levels = cascades.get<int>("levels", 1, {.min = 1, .max = 8});
+  e.settings.cascades.blendCells = cascades.get<float>("blend_cells", 2.0f, {.min = 0.0f, .max = 16.0f});
+  e.settings.cascades.viewShift = cascades.get<float>("view_shift", 0.25f, {.min = -1.0f, .max = 1.0f});
+  e.settings.cascades.carry = cascades.get<bool>("carry", true);
 
   Params timing = params.table("timing");
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
@@ -202,23 +281,17 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
     e.comparison.regions.push_back(r);
   }
 
-  // [injection] is the main injection; [[injection.also]] tables add more (e.g. sky light), each
-  // with its own type and parameters.
-  Params injection = params.table("injection");
-  for (Params& also : injection.tables("also"))
-    e.strategies.injection.push_back(Registry<InjectionStrategy>::instance().create(also, "rsm_vpl"));
-  e.strategies.injection.insert(e.strategies.injection.begin(),
-                                Registry<InjectionStrategy>::instance().create(injection, "rsm_vpl"));
   Params occlusion = params.table("occlusion");
+  e.strategies.injection = createStage<InjectionStrategy>(params.table("injection"), "rsm_vpl");
   e.strategies.occlusion = Registry<OcclusionStrategy>::instance().create(occlusion, "none");
   Params propagation = params.table("propagation");
   e.strategies.propagation = Registry<PropagationStrategy>::instance().create(propagation, "standard");
-  Params rendering = params.table("rendering");
-  e.strategies.rendering = Registry<RenderingStrategy>::instance().create(rendering, "trilinear");
+  e.strategies.rendering = createStage<RenderingStrategy>(params.table("rendering"), "trilinear");
 
   params.finish();
   try {
-    resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance);
+    resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance,
+                        e.settings.cascades.levels);
   } catch (const Error& error) {
     throw Error(file + ": " + error.what());
   }

@@ -67,6 +67,9 @@ struct Experiment {
 // Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
 // the file and key for anything wrong.
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from a table already read (`extends` and `include` merged, overrides applied, no
+// [sweep] or [fit] table); `path` names it in messages and anchors relative scene files.
+Experiment loadExperiment(const toml::table& root, const std::string& path);
 
 // Resolves a scene reference from an experiment: "builtin:cornell_box", "shared:<path>" (relative
 // to the shared folder: env LPVLAB_SHARED_DIR, else the build's default), or a path relative to

@@ -103,6 +103,18 @@ nlohmann::json injectionFluxJson(const InjectionBalance& balance) {
   return {{"rsm", balance.rsmFlux}, {"grid", balance.gridFlux}, {"added_by", added}};
 }
 
+// Where each light grid sat (finest first; one entry without cascades).
+nlohmann::json cascadeLevelsJson(const Pipeline& pipeline) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const LightGrid& grid : pipeline.levels()) {
+    const GridGeometry& g = grid.geometry;
+    levels.push_back({{"origin", {g.origin.x, g.origin.y, g.origin.z}},
+                      {"cell_size", g.cellSize},
+                      {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}});
+  }
+  return levels;
+}
+
 }  // namespace
 
 nlohmann::json TimingReport::toJson() const {
@@ -147,7 +159,6 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   requireFiniteImages(aovs);
   const InjectionBalance balance = pipeline.measureInjection();
 
-  const GridGeometry& grid = experiment.settings.grid;
   const std::string hash = sceneHash(experiment.scene);
   const double propagationMs = timing.gpuMs.at("propagation").median;
   const int iterations = pipeline.strategies().propagation->iterations();
@@ -168,7 +179,10 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"timing_method", {{"gpu", "GL timestamp queries around each stage"},
                          {"wall", "steady clock, each stage ended by glFinish"}}},
       {"propagation_cell_iterations_per_second",
-       propagationMs > 0.0 ? double(grid.cellCount()) * iterations / (propagationMs * 1e-3) : 0.0},
+       propagationMs > 0.0
+           ? double(pipeline.propagatedCells()) * iterations / (propagationMs * 1e-3)
+           : 0.0},
+      {"cascade_levels", cascadeLevelsJson(pipeline)},
       {"memory_bytes", pipeline.memoryReport()},
       {"injection_flux_W", injectionFluxJson(balance)},
       {"outputs", {{"exr", "images.exr"}, {"png", "combined.png"},

@@ -52,17 +52,38 @@ toml::table readChain(const std::string& path, std::vector<std::string>& stack, 
   }
   stack.push_back(canonical);
   toml::table table = readTomlFile(path);
+  const auto where = [&](const toml::node& node, const std::string& key) {
+    const auto& src = node.source();
+    return path + (src.begin.line > 0 ? ":" + std::to_string(src.begin.line) : "") + ": key '" +
+           key + "'";
+  };
+  // This file's keys are merged over its base (`extends`), then over its `include` files, in
+  // order: a parameter file (e.g. a fit's fitted.toml) overrides the base, the file itself both.
+  toml::table merged;
   if (toml::node* ext = table.get("extends")) {
-    if (!ext->is_string()) {
-      const auto& src = ext->source();
-      throw Error(path + (src.begin.line > 0 ? ":" + std::to_string(src.begin.line) : "") +
-                  ": key 'extends': expected a string (a file name relative to this file)");
-    }
+    if (!ext->is_string())
+      throw Error(where(*ext, "extends") + ": expected a string (a file name relative to this file)");
     const fs::path basePath = fs::path(path).parent_path() / ext->as_string()->get();
     if (!fs::is_regular_file(basePath))
       throw Error(path + ": key 'extends': base file " + basePath.string() + " not found");
-    toml::table merged = readChain(basePath.string(), stack, true);
+    merged = readChain(basePath.string(), stack, true);
+  }
+  if (toml::node* inc = table.get("include")) {
+    const toml::array* files = inc->as_array();
+    if (!files)
+      throw Error(where(*inc, "include") + ": expected a list of file names relative to this file");
+    for (const toml::node& f : *files) {
+      if (!f.is_string())
+        throw Error(where(*inc, "include") + ": expected a list of file names relative to this file");
+      const fs::path included = fs::path(path).parent_path() / f.as_string()->get();
+      if (!fs::is_regular_file(included))
+        throw Error(path + ": key 'include': file " + included.string() + " not found");
+      mergeTables(merged, readChain(included.string(), stack, true));
+    }
+  }
+  if (table.contains("extends") || table.contains("include")) {
     table.erase("extends");
+    table.erase("include");
     mergeTables(merged, table);
     table = std::move(merged);
   }
@@ -313,7 +334,8 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   const std::vector<std::string> fixed = {"injection.type",   "occlusion.type",
                                           "propagation.type", "rendering.type",
                                           "grid.resolution",  "grid.sh_order",
-                                          "propagation.iterations", "scene.file"};
+                                          "cascades.levels",  "propagation.iterations",
+                                          "scene.file"};
   std::vector<std::string> params = swept;
   for (const std::string& k : fixed)
     if (std::find(params.begin(), params.end(), k) == params.end()) params.push_back(k);
@@ -366,11 +388,19 @@ SummaryResult writeSweepSummary(const std::string& dir) {
     const nlohmann::json config = m.value("configuration", nlohmann::json::object());
     std::size_t repeats = 0;
     if (const auto* s = findPath(m, "timing.samples.gpu_ms.total"); s && s->is_array()) repeats = s->size();
+    // Cells per propagation iteration: every cascade level's (one level without cascades).
     std::string cells;
-    if (const auto* c = findPath(config, "grid.resolved.cells"); c && c->is_array()) {
+    const auto cellsOf = [](const nlohmann::json& counts) {
       long long product = 1;
-      for (const auto& v : *c) product *= v.get<long long>();
-      cells = std::to_string(product);
+      for (const auto& v : counts) product *= v.get<long long>();
+      return product;
+    };
+    if (const auto* levels = findPath(m, "cascade_levels"); levels && levels->is_array()) {
+      long long total = 0;
+      for (const auto& level : *levels) total += cellsOf(level.at("cells"));
+      cells = std::to_string(total);
+    } else if (const auto* c = findPath(config, "grid.resolved.cells"); c && c->is_array()) {
+      cells = std::to_string(cellsOf(*c));
     }
     for (std::size_t r = 0; r < repeats; ++r) {
       std::vector<std::string> row = {id, names.count(id) ? names[id] : "", std::to_string(r), id};

@@ -6,6 +6,9 @@
 //                           the child replaces the base's, sub-tables merge, arrays (of tables,
 //                           e.g. [[lights]]) replace whole. A relative scene.file stays relative to
 //                           the file that wrote it. A cycle is an error naming the files.
+//   include = ["a.toml"]    parameter files (relative to this file; e.g. a fit's fitted.toml),
+//                           merged like `extends` in order over the base, and under this file's
+//                           own keys.
 //   [sweep]                 product = { "a.b" = [..], ... }   Cartesian product
 //                           zip     = { "c.d" = [..], ... }   lists of equal length, together
 //                           Both: every zip entry times every product entry. Each configuration

@@ -4,23 +4,36 @@
 
 namespace lpvlab {
 
+namespace {
+
+// A stage with a main table and [[<stage>.also]] tables: "injection", "injection.also[0]", ...
+template <class S>
+void listStage(const std::string& stage, const std::vector<std::unique_ptr<S>>& strategies,
+               std::vector<std::pair<std::string, Strategy*>>& out) {
+  for (std::size_t i = 0; i < strategies.size(); ++i)
+    out.emplace_back(i == 0 ? stage : stage + ".also[" + std::to_string(i - 1) + "]",
+                     strategies[i].get());
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, Strategy*>> Strategies::all() const {
   std::vector<std::pair<std::string, Strategy*>> out;
-  for (std::size_t i = 0; i < injection.size(); ++i)
-    out.emplace_back(i == 0 ? "injection" : "injection.also[" + std::to_string(i - 1) + "]",
-                     injection[i].get());
+  listStage("injection", injection, out);
   out.emplace_back("occlusion", occlusion.get());
   out.emplace_back("propagation", propagation.get());
-  out.emplace_back("rendering", rendering.get());
+  listStage("rendering", rendering, out);
   return out;
 }
 
-Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance) {
+Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
+                                 int cascadeLevels) {
   if (strategies.injection.empty() || !strategies.occlusion || !strategies.propagation ||
-      !strategies.rendering)
+      strategies.rendering.empty())
     throw Error("pipeline: every stage needs a strategy");
   Requirements requirements;
   requirements.shOrder = shOrder;
+  requirements.cascadeLevels = cascadeLevels;
   for (const auto& [table, strategy] : strategies.all()) strategy->declare(requirements);
   for (const auto& [table, strategy] : strategies.all()) {
     const std::string who = "[" + table + "] type = \"" + strategy->name() + "\"";

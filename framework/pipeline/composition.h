@@ -1,5 +1,5 @@
 #pragma once
-// A composition of strategies, one per stage (several for injection), and the check that they
+// A composition of strategies, one per stage (several for injection and rendering), and the check that they
 // can run together: their merged Requirements, or an Error naming the strategy that refuses.
 
 #include <memory>
@@ -17,14 +17,16 @@ struct Strategies {
   std::vector<std::unique_ptr<InjectionStrategy>> injection;  // run in order, adding to the grid
   std::unique_ptr<OcclusionStrategy> occlusion;
   std::unique_ptr<PropagationStrategy> propagation;
-  std::unique_ptr<RenderingStrategy> rendering;
+  std::vector<std::unique_ptr<RenderingStrategy>> rendering;  // run in order, adding to `indirect`
 
   // Every strategy with the experiment-file table it came from, e.g. ("propagation", strategy).
   std::vector<std::pair<std::string, Strategy*>> all() const;
 };
 
-// Every strategy's declare() merged, starting from the grid's SH order, after checking that each
-// strategy handles that order and has no refusal, and that a sky (radiance > 0) is injected.
-Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance);
+// Every strategy's declare() merged, starting from the grid's SH order and cascade levels, after
+// checking that each strategy handles that order and has no refusal, and that a sky (radiance > 0)
+// is injected.
+Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
+                                 int cascadeLevels = 1);
 
 }  // namespace lpvlab

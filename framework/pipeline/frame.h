@@ -1,6 +1,8 @@
 #pragma once
 // What one frame's stages read and write. The pipeline owns all of it; strategies get a Frame.
 
+#include <span>
+
 #include <glm/glm.hpp>
 
 #include "framework/gl/resources.h"
@@ -43,16 +45,26 @@ struct LightMaps {
 class SceneGpu;
 struct Camera;
 
+// With cascades ([cascades] levels > 1, framework/pipeline/cascade.h) occlusion, injection and
+// propagation are called once per level, with lightGrid, geometryVolume and normalGrid of that
+// level; rendering is called once and reads every level.
 struct Frame {
   const SceneGpu* scene = nullptr;      // for strategies that rasterise the scene themselves
   const Camera* camera = nullptr;
   const GBuffer& gbuffer;
   const LightMaps& lightMaps;
-  LightGrid& lightGrid;
+  LightGrid& lightGrid;                 // the level being filled
   gl::Texture& indirect;                // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
   GeometryVolume* geometryVolume = nullptr;  // only if a strategy declared Requirements::geometryVolume
   NormalGrid* normalGrid = nullptr;          // only if a strategy declared Requirements::normalGrid
   glm::vec3 skyRadiance{0.0f};               // constant sky, W/(m^2 sr) ([sky] radiance)
+  std::span<LightGrid> levels;               // every level, finest first; empty: lightGrid alone
+  float cascadeBlendCells = 0.0f;            // [cascades] blend_cells
+
+  // What rendering reads: every level, finest first (one level without cascades).
+  std::span<const LightGrid> renderedLevels() const {
+    return levels.empty() ? std::span<const LightGrid>(&lightGrid, 1) : std::span<const LightGrid>(levels);
+  }
 };
 
 }  // namespace lpvlab

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "framework/core/error.h"
+#include "framework/math/cascade_placement.h"
 #include "framework/math/shared.h"
 
 namespace lpvlab {
@@ -49,7 +50,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
                 "under [[lights]] in the experiment");
-  requirements_ = resolveRequirements(strategies_, settings.shOrder, settings.skyRadiance);
+  requirements_ = resolveRequirements(strategies_, settings.shOrder, settings.skyRadiance,
+                                      settings.cascades.levels);
 
   scene_ = std::make_unique<SceneGpu>(scene);
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height);
@@ -57,10 +59,17 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
       shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,
       settings.shadowResolution);
   direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow);
-  lightGrid_ = LightGrid(settings.grid, requirements_.shOrder);
-  if (requirements_.geometryVolume)
-    geometryVolume_ = std::make_unique<GeometryVolume>(settings.grid, requirements_.surfaceAlbedo);
-  if (requirements_.normalGrid) normalGrid_ = std::make_unique<NormalGrid>(settings.grid);
+  // Every level has the grid's cell counts, so strategies size their scratch once, from `grid`.
+  for (int level = 0; level < requirements_.cascadeLevels; ++level) {
+    levels_.emplace_back(settings.grid, requirements_.shOrder);
+    if (requirements_.geometryVolume)
+      geometryVolumes_.push_back(
+          std::make_unique<GeometryVolume>(settings.grid, requirements_.surfaceAlbedo));
+    if (requirements_.normalGrid) normalGrids_.push_back(std::make_unique<NormalGrid>(settings.grid));
+  }
+  placeLevels();
+  if (levels_.size() > 1 && settings.cascades.carry)
+    carry_ = std::make_unique<CascadeCarry>(shaders, requirements_.shOrder);
   directImage_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "direct");
   indirectImage_ =
       gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "indirect");
@@ -82,31 +91,57 @@ void Pipeline::stage(const std::string& name, FrameTimes& times, F&& work) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-Frame Pipeline::frame() {
+Frame Pipeline::frame(int level) {
+  const std::size_t l = std::size_t(level);
   return Frame{.scene = scene_.get(),
                .camera = &camera_,
                .gbuffer = gbufferPass_->gbuffer(),
                .lightMaps = lightMapsPass_->lightMaps(),
-               .lightGrid = lightGrid_,
+               .lightGrid = levels_[l],
                .indirect = indirectImage_,
-               .geometryVolume = geometryVolume_.get(),
-               .normalGrid = normalGrid_.get(),
-               .skyRadiance = settings_.skyRadiance};
+               .geometryVolume = geometryVolumes_.empty() ? nullptr : geometryVolumes_[l].get(),
+               .normalGrid = normalGrids_.empty() ? nullptr : normalGrids_[l].get(),
+               .skyRadiance = settings_.skyRadiance,
+               .levels = levels_,
+               .cascadeBlendCells = settings_.cascades.blendCells};
+}
+
+void Pipeline::setCamera(const Camera& camera) {
+  camera_ = camera;
+  placeLevels();
+}
+
+void Pipeline::placeLevels() {
+  const std::vector<GridGeometry> placed =
+      placeCascadeLevels(settings_.grid, int(levels_.size()), camera_.position, camera_.forward,
+                         settings_.cascades.viewShift);
+  for (std::size_t level = 0; level < levels_.size(); ++level) {
+    levels_[level].geometry = placed[level];
+    if (!geometryVolumes_.empty())
+      geometryVolumes_[level]->geometry = GeometryVolume::placementFor(placed[level]);
+  }
+}
+
+std::size_t Pipeline::propagatedCells() const {
+  std::size_t cells = 0;
+  for (const LightGrid& grid : levels_) cells += std::size_t(grid.geometry.cellCount());
+  return cells;
 }
 
 void Pipeline::clearGrids() {
-  lightGrid_.current.zero();
-  if (geometryVolume_) geometryVolume_->clear();
-  if (normalGrid_) normalGrid_->clear();
+  for (LightGrid& grid : levels_) grid.current.zero();
+  for (const auto& gv : geometryVolumes_) gv->clear();
+  for (const auto& normals : normalGrids_) normals->clear();
 }
 
-void Pipeline::injectAll(Frame& frame) {
+void Pipeline::injectAll(int level) {
+  Frame frame = this->frame(level);
   for (const auto& injection : strategies_.injection) injection->inject(frame);
 }
 
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
-  Frame frame = this->frame();
+  const int levels = int(levels_.size());
   stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
   stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
@@ -114,15 +149,34 @@ FrameTimes Pipeline::renderFrame() {
     direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_);
   });
   stage("clear", times, [&] { clearGrids(); });
-  stage("occlusion", times, [&] { strategies_.occlusion->inject(frame); });
-  stage("injection", times, [&] {
-    injectAll(frame);
-    // The accumulated light starts as the injected light (thesis 6.9.1).
-    glCopyNamedBufferSubData(lightGrid_.current.id(), lightGrid_.accumulated.id(), 0, 0,
-                             GLsizeiptr(lightGrid_.bytesPerGrid()));
+  stage("occlusion", times, [&] {
+    for (int level = 0; level < levels; ++level) {
+      Frame frame = this->frame(level);
+      strategies_.occlusion->inject(frame);
+    }
   });
-  stage("propagation", times, [&] { strategies_.propagation->propagate(frame); });
-  stage("indirect", times, [&] { strategies_.rendering->render(frame); });
+  stage("injection", times, [&] {
+    for (int level = 0; level < levels; ++level) injectAll(level);
+    if (carry_)
+      for (int level = 0; level + 1 < levels; ++level)
+        carry_->carry(levels_[std::size_t(level)], levels_[std::size_t(level) + 1]);
+    // The accumulated light starts as the injected light (thesis 6.9.1).
+    for (LightGrid& grid : levels_)
+      glCopyNamedBufferSubData(grid.current.id(), grid.accumulated.id(), 0, 0,
+                               GLsizeiptr(grid.bytesPerGrid()));
+  });
+  stage("propagation", times, [&] {
+    for (int level = 0; level < levels; ++level) {
+      Frame frame = this->frame(level);
+      strategies_.propagation->propagate(frame);
+    }
+  });
+  stage("indirect", times, [&] {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(indirectImage_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    Frame frame = this->frame(0);
+    for (const auto& rendering : strategies_.rendering) rendering->render(frame);
+  });
   times.gpuMs = gpuTimer_.collectMs();
   checkGl("frame");
   return times;
@@ -142,15 +196,17 @@ std::vector<NamedImage> Pipeline::readOutputs() const {
           {"depth", readTexture(g.normal, 1, 3)}};
 }
 
-std::vector<float> Pipeline::readGrid(bool accumulated) const {
-  std::vector<float> data(lightGrid_.floatsPerGrid());
-  (accumulated ? lightGrid_.accumulated : lightGrid_.current)
-      .download(data.data(), data.size() * sizeof(float));
+std::vector<float> Pipeline::readGrid(bool accumulated, int level) const {
+  const LightGrid& grid = levels_.at(std::size_t(level));
+  std::vector<float> data(grid.floatsPerGrid());
+  (accumulated ? grid.accumulated : grid.current).download(data.data(), data.size() * sizeof(float));
   return data;
 }
 
 InjectionBalance Pipeline::measureInjection() {
-  Frame frame = this->frame();
+  const int coarsest = int(levels_.size()) - 1;
+  Frame frame = this->frame(coarsest);
+  const LightGrid& grid = levels_.back();
   clearGrids();
   strategies_.occlusion->inject(frame);
   InjectionBalance balance;
@@ -158,7 +214,7 @@ InjectionBalance Pipeline::measureInjection() {
   for (std::size_t i = 0; i < strategies_.injection.size(); ++i) {
     strategies_.injection[i]->inject(frame);
     const double total =
-        gridFlux(readGrid(false), lightGrid_.geometry.cellCount(), lightGrid_.coefficients);
+        gridFlux(readGrid(false, coarsest), grid.geometry.cellCount(), grid.coefficients);
     balance.byInjection.emplace_back(all[i].first, total - balance.gridFlux);
     balance.gridFlux = total;
   }
@@ -171,13 +227,18 @@ InjectionBalance Pipeline::measureInjection() {
 }
 
 nlohmann::json Pipeline::memoryReport() const {
+  const auto sum = [](const auto& items, auto bytesOf) {
+    std::size_t total = 0;
+    for (const auto& item : items) total += bytesOf(item);
+    return total;
+  };
   nlohmann::json bytes = {
       {"scene", scene_->memoryBytes()},
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
-      {"light_grid", lightGrid_.memoryBytes()},
-      {"geometry_volume", geometryVolume_ ? geometryVolume_->memoryBytes() : 0},
-      {"normal_grid", normalGrid_ ? normalGrid_->memoryBytes() : 0},
+      {"light_grid", sum(levels_, [](const LightGrid& g) { return g.memoryBytes(); })},
+      {"geometry_volume", sum(geometryVolumes_, [](const auto& gv) { return gv->memoryBytes(); })},
+      {"normal_grid", sum(normalGrids_, [](const auto& n) { return n->memoryBytes(); })},
       {"output_images", directImage_.bytes() + indirectImage_.bytes()}};
   for (const auto& [table, strategy] : strategies_.all())
     bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();

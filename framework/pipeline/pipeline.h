@@ -2,8 +2,10 @@
 // The LPV pipeline: per frame, (1) shadow maps and RSMs per light view, (2) the camera's
 // G-buffer and direct light, (3) clearing the grids, (4) occlusion (the GV's blocking
 // potential), (5) injection, (6) propagation, (7) rendering of indirect light. Stages 4-7 are the
-// experiment's strategies; the GV and the normal grid exist only if a strategy asks for them. Every stage is
-// timed on the GPU (timestamp queries) and on the wall clock (the stage ends with glFinish).
+// experiment's strategies; the GV and the normal grid exist only if a strategy asks for them.
+// With cascades (cascade.h) stages 3-6 run once per level, and injection ends by carrying each
+// level's light into its parent. Every stage is timed on the GPU (timestamp queries) and on the
+// wall clock (the stage ends with glFinish).
 
 #include <map>
 #include <memory>
@@ -17,6 +19,7 @@
 #include "framework/io/image.h"
 #include "framework/pipeline/direct_lighting.h"
 #include "framework/pipeline/raster_passes.h"
+#include "framework/pipeline/cascade.h"
 #include "framework/pipeline/composition.h"
 
 namespace lpvlab {
@@ -28,6 +31,7 @@ struct PipelineSettings {
   int shadowResolution = 1024; // shadow-map texels per side per light view
   GridGeometry grid;           // where the light grid sits (resolved by the experiment)
   int shOrder = 1;             // SH order of the light grid, 1..3
+  CascadeSettings cascades;    // levels = 1: `grid` alone
   glm::vec3 skyRadiance{0.0f}; // constant sky, W/(m^2 sr): needs an injection strategy for it
   ShadowSettings shadow;
 };
@@ -60,13 +64,19 @@ public:
   // The last frame's outputs, top row first: direct, indirect, combined, albedo, normal, depth
   // (view depth in metres; 0 where no surface was hit).
   std::vector<NamedImage> readOutputs() const;
-  // Re-runs clearing and injection alone and measures the flux balance (a diagnostic: reads
-  // the RSM and the grid back to the CPU).
+  // Re-runs clearing and injection alone and measures the flux balance on the coarsest level
+  // (which holds the whole scene; a diagnostic: reads the RSM and the grid back to the CPU).
   InjectionBalance measureInjection();
-  // The light grid's current / accumulated coefficients as floats (grid.glsl layout).
-  std::vector<float> readGrid(bool accumulated) const;
+  // A level's current / accumulated coefficients as floats (grid.glsl layout); level 0 is the
+  // finest (the only one without cascades).
+  std::vector<float> readGrid(bool accumulated, int level = 0) const;
 
-  const LightGrid& lightGrid() const { return lightGrid_; }
+  // Moves the camera; finer cascade levels follow it from the next frame on.
+  void setCamera(const Camera& camera);
+  // The light grids, finest first, where the last frame placed them.
+  const std::vector<LightGrid>& levels() const { return levels_; }
+  // Cells one propagation iteration updates, over every level (for cell-iterations/s).
+  std::size_t propagatedCells() const;
   const Requirements& requirements() const { return requirements_; }
   const Strategies& strategies() const { return strategies_; }
   // Bytes of GPU memory per resource group.
@@ -75,9 +85,10 @@ public:
 private:
   template <class F>
   void stage(const std::string& name, FrameTimes& times, F&& work);
-  Frame frame();
+  Frame frame(int level);
+  void placeLevels();
   void clearGrids();
-  void injectAll(Frame& frame);
+  void injectAll(int level);
 
   PipelineSettings settings_;
   Camera camera_;
@@ -87,9 +98,10 @@ private:
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   std::unique_ptr<DirectLighting> direct_;
   Requirements requirements_;
-  LightGrid lightGrid_;
-  std::unique_ptr<GeometryVolume> geometryVolume_;
-  std::unique_ptr<NormalGrid> normalGrid_;
+  std::vector<LightGrid> levels_;  // finest first
+  std::vector<std::unique_ptr<GeometryVolume>> geometryVolumes_;  // per level, if required
+  std::vector<std::unique_ptr<NormalGrid>> normalGrids_;          // per level, if required
+  std::unique_ptr<CascadeCarry> carry_;                            // with carrying cascades only
   gl::Texture directImage_, indirectImage_;
   GpuTimer gpuTimer_;
 };

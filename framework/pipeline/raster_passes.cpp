@@ -37,13 +37,16 @@ GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height)
   framebuffer_.checkComplete("G-buffer");
 }
 
-glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
+glm::mat4 cameraClipFromWorld(const Camera& camera, int width, int height) {
   const glm::mat4 viewFromWorld =
       glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
-  const glm::mat4 clipFromView =
-      glm::perspective(camera.verticalFov, float(gbuffer_.width) / float(gbuffer_.height),
-                       camera.nearPlane, camera.farPlane);
+  const glm::mat4 clipFromView = glm::perspective(camera.verticalFov, float(width) / float(height),
+                                                  camera.nearPlane, camera.farPlane);
   return clipFromView * viewFromWorld;
+}
+
+glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
+  return cameraClipFromWorld(camera, gbuffer_.width, gbuffer_.height);
 }
 
 void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
@@ -57,6 +60,25 @@ void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int views,
+                                         const std::string& label) {
+  const int r = resolution;
+  maps.rsmPosition = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " position");
+  maps.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " normal");
+  maps.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " flux");
+  maps.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, views, label + " depth");
+  std::vector<gl::Framebuffer> framebuffers(static_cast<std::size_t>(views));
+  for (int layer = 0; layer < views; ++layer) {
+    gl::Framebuffer& fb = framebuffers[static_cast<std::size_t>(layer)];
+    fb.attach(GL_COLOR_ATTACHMENT0, maps.rsmPosition, layer);
+    fb.attach(GL_COLOR_ATTACHMENT1, maps.rsmNormal, layer);
+    fb.attach(GL_COLOR_ATTACHMENT2, maps.rsmFlux, layer);
+    fb.attach(GL_DEPTH_ATTACHMENT, maps.rsmDepth, layer);
+    fb.checkComplete(label + " layer " + std::to_string(layer));
+  }
+  return framebuffers;
+}
+
 LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
                              int shadowResolution)
     : shadowProgram_(shaders.graphics("raster/scene.vert", "raster/shadow.frag")),
@@ -68,10 +90,7 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   maps_.shadowResolution = shadowResolution;
   for (const GpuView& view : views.views) clipFromWorld_.push_back(view.clipFromWorld);
   const int r = rsmResolution, s = shadowResolution;
-  maps_.rsmPosition = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm position");
-  maps_.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm normal");
-  maps_.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, "rsm flux");
-  maps_.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, layers, "rsm depth");
+  rsmFramebuffers_ = allocateRsm(maps_, r, layers, "rsm");
   maps_.shadowDepth =
       gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, s, s, layers, "shadow maps");
   // Hardware depth comparison with bilinear filtering: each shadow tap is a 2x2 PCF.
@@ -95,12 +114,6 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
     glNamedFramebufferDrawBuffer(shadow.id(), GL_NONE);
     glNamedFramebufferReadBuffer(shadow.id(), GL_NONE);
     shadow.checkComplete("shadow map layer " + std::to_string(layer));
-    gl::Framebuffer& rsm = rsmFramebuffers_.emplace_back();
-    rsm.attach(GL_COLOR_ATTACHMENT0, maps_.rsmPosition, layer);
-    rsm.attach(GL_COLOR_ATTACHMENT1, maps_.rsmNormal, layer);
-    rsm.attach(GL_COLOR_ATTACHMENT2, maps_.rsmFlux, layer);
-    rsm.attach(GL_DEPTH_ATTACHMENT, maps_.rsmDepth, layer);
-    rsm.checkComplete("RSM layer " + std::to_string(layer));
   }
 }
 

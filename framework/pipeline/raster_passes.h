@@ -2,6 +2,9 @@
 // The rasterised stages every LPV variant stands on: the camera's G-buffer, and per light view
 // the shadow map and the reflective shadow map.
 
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "framework/gl/resources.h"
@@ -16,6 +19,16 @@ namespace lpvlab {
 // (0: depth only): viewport, depth test (less), two-sided, colours cleared to 0, depth to 1.
 // Strategies that rasterise the scene themselves (e.g. injection "sky_columns") start with it.
 void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int colourTargets);
+
+// The camera's view and projection for an image of width x height (vertical FOV, aspect =
+// width / height): the G-buffer's, and that of any pass that must see exactly what it sees.
+glm::mat4 cameraClipFromWorld(const Camera& camera, int width, int height);
+
+// Allocates `maps`' RSM textures (position, normal, flux, depth; `views` layers of resolution^2,
+// labelled "<label> position" etc.) and returns one framebuffer per layer drawing into them: the
+// light maps' RSMs, and any strategy's own RSM (e.g. rendering "subsurface").
+std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int views,
+                                         const std::string& label);
 
 class GBufferPass {
 public:

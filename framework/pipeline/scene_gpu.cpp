@@ -30,7 +30,11 @@ gl::Texture uploadTexture(const TextureImage& source) {
 
 }  // namespace
 
-SceneGpu::SceneGpu(const Scene& scene) {
+SceneGpu::SceneGpu(const Scene& scene)
+    : sceneMaterials_(scene.materials), materialBounds_(scene.materials.size()) {
+  for (const Mesh& mesh : scene.meshes)
+    if (mesh.material >= 0 && mesh.material < int(materialBounds_.size()))
+      for (std::uint32_t index : mesh.indices) materialBounds_[mesh.material].extend(mesh.positions[index]);
   // Group meshes by material so each material is one draw call.
   std::vector<int> order(scene.meshes.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);

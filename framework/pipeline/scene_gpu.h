@@ -28,6 +28,11 @@ public:
   // (materialIndex) and texture unit 0 per material.
   void draw() const;
   std::size_t memoryBytes() const;
+  // The scene's materials as given (for strategies that treat some materials apart, e.g. the
+  // translucent ones of rendering "subsurface"), and the bounds of each one's triangles (empty
+  // bounds for a material no mesh uses).
+  const std::vector<Material>& materials() const { return sceneMaterials_; }
+  const Bounds& materialBounds(int material) const { return materialBounds_.at(material); }
 
 private:
   struct DrawRange {
@@ -41,6 +46,8 @@ private:
   gl::Texture white_;                      // bound for untextured materials
   std::vector<int> textureOfMaterial_;
   std::vector<DrawRange> draws_;
+  std::vector<Material> sceneMaterials_;
+  std::vector<Bounds> materialBounds_;  // per material
 };
 
 }  // namespace lpvlab

@@ -26,6 +26,8 @@ struct Requirements {
   bool surfaceAlbedo = false;   // the GV also keeps its surfels' albedo (re-injecting blocked light)
   bool skyInjected = false;     // an injection strategy adds the [sky] radiance to the grid
   bool normalGrid = false;      // the injected VPLs' flux-weighted normal per cell (directed propagation)
+  int cascadeLevels = 1;        // light grids in the cascade ([cascades] levels); the GV and the
+                                // normal grid exist once per level
 };
 
 class Strategy {
@@ -78,7 +80,9 @@ public:
   virtual int iterations() const = 0;  // for the throughput figure: cells * iterations / time
 };
 
-// Writes the indirect radiance seen through each G-buffer pixel into frame.indirect.
+// Adds the indirect radiance seen through each G-buffer pixel to frame.indirect (which the
+// pipeline zeroes first; [rendering] and each [[rendering.also]] add their share), reading every
+// level of frame.renderedLevels() (see framework/pipeline/cascade.h).
 class RenderingStrategy : public Strategy {
 public:
   virtual void render(Frame& frame) = 0;

@@ -1,15 +1,20 @@
 #version 450
 // Geometry-volume injection from the reflective shadow maps: every covered RSM texel is a surfel
 // whose area is its footprint on the surface (surfel_area.glsl), perspective for the cube faces
-// of point and spot lights, orthographic for a directional light's box.
+// of point and spot lights, orthographic for a directional light's box. With WITH_ALBEDO, the
+// surfel's albedo is its reflected flux (the RSM) over the flux arriving at it
+// (raster/rsm_texel.glsl, the very function the RSM multiplied by the albedo); a texel whose
+// arriving light is 0 in some channel (outside a spot's cone, a light without that colour) tells
+// nothing about the albedo and adds blocking only.
 #extension GL_EXT_shader_atomic_float : require
 #include "gv_surfel.glsl"
 #include "surfel_area.glsl"
-#include "../common/lights_gpu.glsl"
+#include "../raster/rsm_texel.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2DArray rsmPosition;
 layout(binding = 1) uniform sampler2DArray rsmNormal;
+layout(binding = 2) uniform sampler2DArray rsmFlux;
 layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 2) readonly buffer Views { GpuView views[]; };
 layout(location = 3) uniform int rsmResolution;
@@ -34,5 +39,12 @@ void main() {
     area = perspectiveSurfelArea(2.0 * view.params.y / float(rsmResolution), depth, distance,
                                  dot(n, toLight) / distance);
   }
-  gvAddSurfel(p, n, area);
+  vec3 albedo = vec3(0.0);
+  bool albedoKnown = false;
+  if (WITH_ALBEDO) {
+    vec3 arriving = rsmTexelLight(view, light, p, n, vec2(texel.xy) + 0.5, rsmResolution).flux;
+    albedoKnown = min(arriving.r, min(arriving.g, arriving.b)) > 0.0;
+    if (albedoKnown) albedo = texelFetch(rsmFlux, texel, 0).rgb / arriving;
+  }
+  gvAddSurfel(p, n, area, albedo, albedoKnown);
 }

@@ -1,16 +1,14 @@
 #version 450
 // One iteration of directed propagation by gathering: as standard_gather.comp, with the second
 // reprojection of alg. 6.3 about this (the receiving) cell's dilated normal applied to what each
-// face passes (directed_faces.glsl). Order 1. With a geometry volume, the light crossing the
-// shared face is attenuated by its blocking potential (thesis alg. 6.2 lines 11-15) from the
-// occlusion strategy's first occluded iteration on.
-#include "directed_faces.glsl"
-#include "../common/grid.glsl"
-
+// face passes (directed_faces.glsl). Any SH order: SH_COEFFICIENTS per channel. With a geometry
+// volume, the light crossing the shared face is attenuated by its blocking potential (thesis
+// alg. 6.2 lines 11-15) from the occlusion strategy's first occluded iteration on.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const bool GEOMETRY_VOLUME = false;
+layout(constant_id = 3) const int SH_COEFFICIENTS = 4;
 
 layout(std430, binding = 0) readonly buffer Source { float source[]; };
 layout(std430, binding = 1) writeonly buffer Target { float target[]; };
@@ -20,6 +18,9 @@ layout(std430, binding = 4) readonly buffer GeometryVolume { float gvBlocking[];
 layout(location = 0) uniform ivec3 resolution;
 layout(location = 1) uniform int occludeThisIteration;  // 0 or 1
 
+const int N = SH_COEFFICIENTS;  // arrays sized by the specialisation constant stay in registers
+#include "directed_faces.glsl"
+#include "../common/grid.glsl"
 #include "../common/geometry_volume_lookup.glsl"
 
 void main() {
@@ -28,9 +29,14 @@ void main() {
   int cells = cellCount(resolution);
   int index = cellIndex(cell, resolution);
   vec3 normal = directedUnitNormal(normals[index]);
-  float gain = directedGainOf(normals[index], FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
+  float gain = directedGainOf(normals[index], FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE, N);
+  bool reproject = gain != 0.0;
   bool occluded = GEOMETRY_VOLUME && occludeThisIteration != 0;
-  vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  // Without a normal: the standard transfer's coefficients. With one, every face re-emits a
+  // multiple of cosLobe(normal): only that multiple is summed, per channel.
+  float gathered[3 * N];
+  for (int i = 0; i < 3 * N; ++i) gathered[i] = 0.0;
+  float reprojected[3] = float[3](0.0, 0.0, 0.0);
   for (int axis = 0; axis < 3; ++axis) {
     for (int sign = -1; sign <= 1; sign += 2) {
       ivec3 offset = ivec3(0);
@@ -38,9 +44,9 @@ void main() {
       ivec3 neighbour = cell + offset;
       if (!cellInside(neighbour, resolution)) continue;
       int n = cellIndex(neighbour, resolution);
-      vec4 c[3];
+      float c[3 * N];
       for (int channel = 0; channel < 3; ++channel)
-        for (int k = 0; k < 4; ++k) c[channel][k] = source[coefficientIndex(channel, k, 4, n, cells)];
+        for (int k = 0; k < N; ++k) c[channel * N + k] = source[coefficientIndex(channel, k, N, n, cells)];
       vec3 towardsUs = vec3(-offset);
       for (int f = 0; f < STANDARD_FACES; ++f) {
         vec3 direction = standardFaceDirection(towardsUs, f);
@@ -51,16 +57,33 @@ void main() {
           vec3 crossing = standardFaceCrossing(vec3(neighbour) + 0.5, towardsUs, f);
           transmittance = gvTransmittance(gvBlockingAt(crossing, resolution + 1), direction);
         }
-        for (int channel = 0; channel < 3; ++channel)
-          gathered[channel] += directedThroughFace(c[channel], direction, faceNormal, solidAngle,
-                                                   transmittance, normal, gain);
+        float basis[N];
+        float lobe[N];  // the standard transfer's lobe, for a cell without a normal
+        for (int k = 0; k < N; ++k) {
+          basis[k] = shBasisAt(k, direction);
+          lobe[k] = reproject ? 0.0 : shCosineLobeAt(k, faceNormal) / PI;
+        }
+        float factor = reproject ? directedReprojection(faceNormal, normal, gain, N) : 0.0;
+        for (int channel = 0; channel < 3; ++channel) {
+          float intensity = 0.0;
+          for (int k = 0; k < N; ++k) intensity += c[channel * N + k] * basis[k];
+          float flux = standardFaceFlux(intensity, solidAngle, transmittance);
+          if (reproject) {
+            reprojected[channel] += flux * factor;
+          } else {
+            for (int k = 0; k < N; ++k) gathered[channel * N + k] += flux * lobe[k];
+          }
+        }
       }
     }
   }
+  if (reproject)
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < N; ++k) gathered[channel * N + k] = reprojected[channel] * shCosineLobeAt(k, normal);
   for (int channel = 0; channel < 3; ++channel)
-    for (int k = 0; k < 4; ++k) {
-      int i = coefficientIndex(channel, k, 4, index, cells);
-      target[i] = gathered[channel][k];
-      accumulated[i] += gathered[channel][k];
+    for (int k = 0; k < N; ++k) {
+      int i = coefficientIndex(channel, k, N, index, cells);
+      target[i] = gathered[channel * N + k];
+      accumulated[i] += gathered[channel * N + k];
     }
 }

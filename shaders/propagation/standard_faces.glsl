@@ -69,6 +69,52 @@ vec4 propagateThroughOccludedFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, re
   return (flux / PI) * shCosineLobe(faceNormal);
 }
 
+// ---- multiple bounces (standard.cpp's `bounces`) ------------------------------------------------
+// The light a face crossing blocks, Phi_b = (1 - T) Omega_f max(0, I(w_f)), has hit the GV's
+// surfaces there. Lambertian surfaces of albedo rho re-emit rho Phi_b as a clamped cosine lobe
+// about their normal n, into the cell the light came from (it never left it):
+//     I_b(w) = rho Phi_b / pi * max(0, n . w)   ->   coefficients  rho Phi_b / pi * shCosineLobe(n)
+// whose integral is rho Phi_b, so with rho <= 1 a face never sends on more than Phi_f in all.
+
+// The blocked flux (W) of one face: standardFaceFlux with the fraction the GV stops.
+real standardBlockedFlux(real intensity, real solidAngle, real transmittance) {
+  return standardFaceFlux(intensity, solidAngle, 1.0 - transmittance);
+}
+
+// Below this |band 1| / |c0| the blocking potential has no usable direction (opposite surfels
+// cancelled, or isotropic blocking): a single surfel has 2 / sqrt(3).
+const real GV_NORMAL_MIN_BAND1 = 1e-4;
+
+// The normal of the surfaces behind blocking potential b, on the side that light travelling in w
+// arrives at. A surfel adds A / s^2 cosLobe(-n) (shaders/common/geometry_volume.glsl), whose
+// band-1 coefficients (c1, c2, c3) are proportional to (n.y, -n.z, n.x) (sh.glsl's basis), so
+// n ~ (c3, c1, -c2). The light was blocked, so it arrived at the surface's lit side: a normal
+// facing along w (interpolation across surfels of mixed orientation, or light blocked at grazing
+// incidence from behind by the order-1 lobe's tail) is turned round, and without a usable
+// direction the surface is taken to face the light, n = -w.
+vec3 gvSurfaceNormal(vec4 b, vec3 w) {
+  vec3 v = vec3(b.w, b.y, -b.z);
+  real band1 = length(v);
+  if (!(band1 > GV_NORMAL_MIN_BAND1 * abs(b.x))) return -w;
+  vec3 n = v / band1;
+  return dot(n, w) > 0.0 ? -n : n;
+}
+
+// The mean albedo of the GV's surfels from their (sum rho A, sum A) (geometry_volume.h's albedo
+// layout, interpolated like the blocking potential); 0 where no surfel with an albedo was seen.
+// Clamped to [0, 1] so that re-emission never adds energy, whatever the rounding.
+vec3 gvMeanAlbedo(vec4 weighted) {
+  if (!(weighted.w > 0.0)) return vec3(0.0);
+  return clamp(vec3(weighted.x, weighted.y, weighted.z) / weighted.w, 0.0, 1.0);
+}
+
+// Order 1: coefficients re-emitted into the source cell `c` by the surfaces (normal n, one
+// channel's albedo rho) at the crossing of the face towards `toFaceCentre`.
+vec4 bounceAtFace(vec4 c, vec3 toFaceCentre, real solidAngle, real transmittance, vec3 n, real rho) {
+  real blocked = standardBlockedFlux(shEvaluate(c, toFaceCentre), solidAngle, transmittance);
+  return (rho * blocked / PI) * shCosineLobe(n);
+}
+
 // Order 1, without a GV.
 vec4 propagateThroughFace(vec4 c, vec3 toFaceCentre, vec3 faceNormal, real solidAngle) {
   return propagateThroughOccludedFace(c, toFaceCentre, faceNormal, solidAngle, 1.0);

@@ -3,17 +3,21 @@
 // neighbours what each sends it through its five faces (standard_transfer.glsl), writes that as
 // the next iteration's light and adds it to the accumulated grid. Light that would leave the grid
 // is lost. Any SH order: SH_COEFFICIENTS per channel. With the GV (HAS_GV) and from the
-// iteration `firstOccludedIteration` on, each face's flux is attenuated by the GV's transmittance.
+// iteration `firstOccludedIteration` on, each face's flux is attenuated by the GV's transmittance;
+// with BOUNCES the cell also runs its own outgoing transfers (all six, the grid's edge included)
+// for what the GV blocked of them, which its surfaces re-emit into this cell: twice the face work.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 3) const bool HAS_GV = false;
+layout(constant_id = 4) const bool BOUNCES = false;  // re-emit blocked light (only with HAS_GV)
 
 layout(std430, binding = 0) readonly buffer Source { float source[]; };
 layout(std430, binding = 1) writeonly buffer Target { float target[]; };
 layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
 layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = 4) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
 layout(location = 0) uniform ivec3 resolution;
 layout(location = 1) uniform int iteration;               // 0 for the first step after injection
 layout(location = 2) uniform int firstOccludedIteration;  // GeometryVolume::firstOccludedIteration
@@ -36,9 +40,21 @@ void main() {
       ivec3 neighbour = cell + offset;
       if (!cellInside(neighbour, resolution)) continue;
       loadSourceCell(cellIndex(neighbour, resolution), cells);
-      standardTransfer(neighbour, vec3(-offset), occluded, resolution, FAR_FACE_SOLID_ANGLE,
-                       SIDE_FACE_SOLID_ANGLE);
+      standardTransfer(neighbour, vec3(-offset), occluded, true, false, resolution,
+                       FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
       for (int i = 0; i < 3 * N; ++i) gathered[i] += transferred[i];
+    }
+  }
+  if (BOUNCES && occluded) {
+    loadSourceCell(cellIndex(cell, resolution), cells);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int sign = -1; sign <= 1; sign += 2) {
+        vec3 d = vec3(0.0);
+        d[axis] = float(sign);
+        standardTransfer(cell, d, occluded, false, true, resolution, FAR_FACE_SOLID_ANGLE,
+                         SIDE_FACE_SOLID_ANGLE);
+        for (int i = 0; i < 3 * N; ++i) gathered[i] += bounced[i];
+      }
     }
   }
   int index = cellIndex(cell, resolution);

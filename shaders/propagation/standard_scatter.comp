@@ -3,18 +3,22 @@
 // six face neighbours what it sends them through their five faces (standard_transfer.glsl, the
 // same transfer the gather kernel pulls), adding it with float atomics to the next iteration's
 // light (cleared before the dispatch) and to the accumulated grid. Light that would leave the
-// grid is lost. Gives the gather kernel's grid up to the order of float additions.
+// grid is lost. With BOUNCES, what the GV blocked of its transfers (the grid's edge included) is
+// re-emitted into the cell itself. Gives the gather kernel's grid up to the order of float
+// additions.
 #extension GL_EXT_shader_atomic_float : require
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 3) const bool HAS_GV = false;
+layout(constant_id = 4) const bool BOUNCES = false;  // re-emit blocked light (only with HAS_GV)
 
 layout(std430, binding = 0) readonly buffer Source { float source[]; };
 layout(std430, binding = 1) buffer Target { float target[]; };
 layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
 layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = 4) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
 layout(location = 0) uniform ivec3 resolution;
 layout(location = 1) uniform int iteration;               // 0 for the first step after injection
 layout(location = 2) uniform int firstOccludedIteration;  // GeometryVolume::firstOccludedIteration
@@ -28,15 +32,23 @@ void main() {
   int cells = cellCount(resolution);
   bool occluded = iteration >= firstOccludedIteration;
   if (HAS_GV && occluded) loadGvCorners(cell, resolution + 1);  // every face crossed is this cell's
-  loadSourceCell(cellIndex(cell, resolution), cells);
+  int index = cellIndex(cell, resolution);
+  loadSourceCell(index, cells);
+  bool bouncing = BOUNCES && occluded;
+  float reemitted[3 * N];
+  for (int i = 0; i < 3 * N; ++i) reemitted[i] = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     for (int sign = -1; sign <= 1; sign += 2) {
       ivec3 offset = ivec3(0);
       offset[axis] = sign;
       ivec3 neighbour = cell + offset;
-      if (!cellInside(neighbour, resolution)) continue;
-      standardTransfer(cell, vec3(offset), occluded, resolution, FAR_FACE_SOLID_ANGLE,
-                       SIDE_FACE_SOLID_ANGLE);
+      bool inside = cellInside(neighbour, resolution);
+      if (!inside && !bouncing) continue;
+      standardTransfer(cell, vec3(offset), occluded, inside, true, resolution,
+                       FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
+      if (bouncing)
+        for (int i = 0; i < 3 * N; ++i) reemitted[i] += bounced[i];
+      if (!inside) continue;
       int n = cellIndex(neighbour, resolution);
       for (int channel = 0; channel < 3; ++channel)
         for (int k = 0; k < N; ++k) {
@@ -46,4 +58,11 @@ void main() {
         }
     }
   }
+  if (bouncing)
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < N; ++k) {
+        int i = coefficientIndex(channel, k, N, index, cells);
+        atomicAdd(target[i], reemitted[channel * N + k]);
+        atomicAdd(accumulated[i], reemitted[channel * N + k]);
+      }
 }

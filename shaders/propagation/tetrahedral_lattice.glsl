@@ -23,7 +23,7 @@
 // cell (tetInside) and stay zero, so the lattice covers the grid's interior between cube centres.
 #ifndef LPVLAB_TETRAHEDRAL_LATTICE_GLSL
 #define LPVLAB_TETRAHEDRAL_LATTICE_GLSL
-#include "../common/sh.glsl"
+#include "standard_faces.glsl"
 #include "../common/grid.glsl"
 
 #ifdef LPVLAB_SHARED_CPP
@@ -172,17 +172,29 @@ vec3 tetFarFaceDirection(int code, int sharedFace, int face) {
   return normalize(tetFaceCentroidFromCentroid(code, face) - sourceCentroid);
 }
 
-// Order 1: what the cell `code` receives through its faces other than j from the coefficients
-// `c` of its neighbour across face j.
-vec4 tetReceiveFrom(vec4 c, int code, int sharedFace, real smallAngle, real largeAngle) {
-  vec4 sum = vec4(0.0);
-  for (int k = 0; k < TET_FACES; ++k) {
-    if (k == sharedFace) continue;
-    real solidAngle = tetFarFaceSolidAngle(sharedFace, k, smallAngle, largeAngle);
-    real flux = solidAngle * max(0.0, shEvaluate(c, tetFarFaceDirection(code, sharedFace, k)));
-    sum += (flux / PI) * shCosineLobe(tetFaceNormal(code, k));
-  }
-  return sum;
+// At any SH order (the kernel's face loop, and the tests' C++ reference, which run per face k):
+//   Phi_k = T_k * Omega_k * max(0, sum_i c_i Y_i(w_k))       (standardFaceFlux)
+//   target coefficients += Phi_k / pi * shCosineLobeAt(i, n_k)
+// Only the number of coefficients changes with the order: the far faces tile the sphere whatever
+// the basis, and the lobe integrates to Phi_k at every order (only Y00 has an integral).
+//
+// With the geometry volume (alg. 6.2 lines 11-14 on this lattice), T_k is the GV's transmittance
+// for w_k where w_k, leaving the source's centroid, crosses the shared face j: that point lies on
+// the shared triangle (face k is a back face seen from G_s, seen through face j), and the shared
+// face is sqrt(2)/8 from G_s along -n_j. Light-grid coordinates, where the GV is interpolated.
+vec3 tetFarFaceCrossing(ivec4 tet, int sharedFace, int face) {
+  vec3 n = tetFaceNormal(tet.w, sharedFace);
+  vec3 sourceCentroid = tetCentroid(tet) + (0.25 * TET_SQRT2) * n;
+  vec3 w = tetFarFaceDirection(tet.w, sharedFace, face);
+  return sourceCentroid + w * ((0.125 * TET_SQRT2) / dot(w, -n));
+}
+
+// The first lattice step the GV attenuates: the GV's firstOccludedIteration counts standard steps
+// of one cube edge (1 lets light leave the injected cube unblocked, as its own surfels would
+// block it); a lattice step moves light sqrt(2)/4 edges, so the lattice occludes once light has
+// travelled as far: from step ceil(2 sqrt(2) firstOccludedIteration) on (3 for 1).
+int tetFirstOccludedStep(int firstOccludedIteration) {
+  return int(ceil(real(firstOccludedIteration) * 2.0 * TET_SQRT2));
 }
 
 // ---- resampling between the cubic light grid and the lattice ---------------------------------
@@ -204,7 +216,8 @@ real tetSplitWeight(ivec3 cube, ivec3 res) {
 }
 
 // Cells -> cube: each cell gives half of its coefficients to each of its two cubes (both inside,
-// as the cell exists). Both directions conserve flux (shIntegral is linear in c0).
+// as the cell exists). Both directions conserve flux (shIntegral is linear in c0) and are linear
+// maps applied to every coefficient alike, so they hold at every SH order.
 const real TET_MERGE_WEIGHT = 0.5;
 
 #endif

@@ -2,10 +2,9 @@
 // Tetrahedral lattice -> cubic light grid: every cube takes half of each of its 24 cells (the 12
 // for which it is the lower cube and the 12 for which it is the upper one; flux conserving).
 // The lattice's last step becomes the grid's `current`, and its running sum is added to
-// `accumulated`.
-#include "tetrahedral_lattice.glsl"
-
+// `accumulated`. Any SH order: SH_COEFFICIENTS per channel.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
 layout(std430, binding = 0) readonly buffer Last { float last[]; };
 layout(std430, binding = 1) readonly buffer Sum { float sum[]; };
@@ -13,12 +12,19 @@ layout(std430, binding = 2) writeonly buffer Current { float current[]; };
 layout(std430, binding = 3) buffer Accumulated { float accumulated[]; };
 layout(location = 0) uniform ivec3 resolution;
 
+const int N = SH_COEFFICIENTS;
+#include "tetrahedral_lattice.glsl"
+
 void main() {
   ivec3 cube = ivec3(gl_GlobalInvocationID);
   if (!cellInside(cube, resolution)) return;
   int slots = tetSlotCount(resolution);
-  vec4 lastSum[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-  vec4 sumSum[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  float lastSum[3 * N];
+  float sumSum[3 * N];
+  for (int i = 0; i < 3 * N; ++i) {
+    lastSum[i] = 0.0;
+    sumSum[i] = 0.0;
+  }
   for (int code = 0; code < TET_PER_CUBE; ++code) {
     for (int side = 0; side < 2; ++side) {
       ivec3 lower = cube - side * tetUnitOffset(tetAxis(code));
@@ -26,18 +32,18 @@ void main() {
       if (!tetInside(tet, resolution)) continue;
       int slot = tetSlot(tet, resolution);
       for (int channel = 0; channel < 3; ++channel)
-        for (int k = 0; k < 4; ++k) {
-          lastSum[channel][k] += last[coefficientIndex(channel, k, 4, slot, slots)];
-          sumSum[channel][k] += sum[coefficientIndex(channel, k, 4, slot, slots)];
+        for (int k = 0; k < N; ++k) {
+          lastSum[channel * N + k] += last[coefficientIndex(channel, k, N, slot, slots)];
+          sumSum[channel * N + k] += sum[coefficientIndex(channel, k, N, slot, slots)];
         }
     }
   }
   int cells = cellCount(resolution);
   int index = cellIndex(cube, resolution);
   for (int channel = 0; channel < 3; ++channel)
-    for (int k = 0; k < 4; ++k) {
-      int i = coefficientIndex(channel, k, 4, index, cells);
-      current[i] = TET_MERGE_WEIGHT * lastSum[channel][k];
-      accumulated[i] += TET_MERGE_WEIGHT * sumSum[channel][k];
+    for (int k = 0; k < N; ++k) {
+      int i = coefficientIndex(channel, k, N, index, cells);
+      current[i] = TET_MERGE_WEIGHT * lastSum[channel * N + k];
+      accumulated[i] += TET_MERGE_WEIGHT * sumSum[channel * N + k];
     }
 }

@@ -1,13 +1,16 @@
 #version 450
 // Cubic light grid -> tetrahedral lattice: every cell takes its share of each of its two cubes'
 // coefficients (tetSplitWeight, flux conserving); slots of cells that do not exist get zero.
-#include "tetrahedral_slot.glsl"
-
+// Any SH order: SH_COEFFICIENTS per channel.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
 layout(std430, binding = 0) readonly buffer Cubes { float cubes[]; };
 layout(std430, binding = 1) writeonly buffer Cells { float cells[]; };
 layout(location = 0) uniform ivec3 resolution;
+
+const int N = SH_COEFFICIENTS;
+#include "tetrahedral_slot.glsl"
 
 void main() {
   ivec4 tet = tetOfInvocation(gl_GlobalInvocationID);
@@ -23,11 +26,11 @@ void main() {
   float lowerWeight = tetSplitWeight(cube, resolution);
   float upperWeight = inside ? tetSplitWeight(upper, resolution) : 0.0;
   for (int channel = 0; channel < 3; ++channel)
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < N; ++k) {
       float value = 0.0;
       if (inside)
-        value = lowerWeight * cubes[coefficientIndex(channel, k, 4, lowerIndex, cubeCells)] +
-                upperWeight * cubes[coefficientIndex(channel, k, 4, upperIndex, cubeCells)];
-      cells[coefficientIndex(channel, k, 4, slot, slots)] = value;
+        value = lowerWeight * cubes[coefficientIndex(channel, k, N, lowerIndex, cubeCells)] +
+                upperWeight * cubes[coefficientIndex(channel, k, N, upperIndex, cubeCells)];
+      cells[coefficientIndex(channel, k, N, slot, slots)] = value;
     }
 }

@@ -1,11 +1,8 @@
 #version 450
 // Reflective shadow map of one light view. Each texel stores the surface it sees and the flux
-// that surface patch reflects: albedo * (light's intensity towards it) * (texel solid angle) for
-// point and spot lights, albedo * irradiance * (texel area) for directional ones. The patch's
-// slope cancels: its area times cos / r^2 is exactly the texel's solid angle.
+// that surface patch reflects: albedo times the flux arriving at it (rsm_texel.glsl).
 #include "material.glsl"
-#include "../common/lights_gpu.glsl"
-#include "../common/lights.glsl"
+#include "rsm_texel.glsl"
 
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
@@ -23,27 +20,9 @@ layout(location = 2) out vec4 outFlux;
 void main() {
   vec3 albedo = materialAlbedo(texcoord);
   GpuView view = views[viewIndex];
-  GpuLight light = lights[int(view.params.z)];
-  vec3 n = normalize(worldNormal);
-  vec3 flux;
-  if (view.params.x > 0.5) {
-    if (dot(n, light.directionCosOuter.xyz) > 0.0) n = -n;
-    float texelSize = view.params.y / float(resolution);
-    flux = albedo * light.intensityCosInner.rgb * texelSize * texelSize;
-  } else {
-    vec3 toSurface = normalize(worldPosition - light.positionType.xyz);
-    if (dot(n, toSurface) > 0.0) n = -n;
-    // Texel centre in the view's image plane at unit distance (tan(fov/2) = params.y).
-    vec2 plane = (2.0 * gl_FragCoord.xy / float(resolution) - 1.0) * view.params.y;
-    float texel = 2.0 * view.params.y / float(resolution);
-    float solidAngle = texel * texel / pow(1.0 + dot(plane, plane), 1.5);
-    float falloff = 1.0;
-    if (int(light.positionType.w) == LIGHT_SPOT)
-      falloff = spotFalloff(dot(toSurface, light.directionCosOuter.xyz), light.intensityCosInner.w,
-                            light.directionCosOuter.w);
-    flux = albedo * light.intensityCosInner.rgb * falloff * solidAngle;
-  }
+  RsmTexelLight arriving = rsmTexelLight(view, lights[int(view.params.z)], worldPosition,
+                                         worldNormal, gl_FragCoord.xy, resolution);
   outPosition = vec4(worldPosition, 1.0);
-  outNormal = vec4(n, 0.0);
-  outFlux = vec4(flux, 1.0);
+  outNormal = vec4(arriving.normal, 0.0);
+  outFlux = vec4(albedo * arriving.flux, 1.0);
 }

@@ -1,6 +1,8 @@
 #version 450
 // Indirect light at every G-buffer pixel from the accumulated light grid, trilinearly
 // interpolated between the 8 nearest cell centres (clamped at the grid's edge), at any SH order.
+// One dispatch per cascade level: each adds its light times the level's weight
+// (cascade_blend.glsl) to the output, which the pipeline zeroed.
 // The grid holds intensity I (W/sr) per cell; spread over the cell's cross-section it is the
 // radiance L = I / cellSize^2 (Kaplanyan and Dachsbacher 2010). The irradiance from the light
 // arriving at a surface with normal n is E = integral L(w) max(0, -n . w) dw = <L, cosLobe(-n)>,
@@ -13,6 +15,7 @@
 //                 over samples marched along r (docs/variants.md#glossy).
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
+#include "../common/cascade_blend.glsl"
 #include "trilinear_weights.glsl"
 #include "leak_damping.glsl"
 #include "phong_lobe.glsl"
@@ -26,7 +29,7 @@ layout(binding = 0) uniform sampler2D gPosition;
 layout(binding = 1) uniform sampler2D gNormal;
 layout(binding = 2) uniform sampler2D gAlbedo;
 layout(std430, binding = 0) readonly buffer Accumulated { float grid[]; };
-layout(binding = 0, rgba32f) uniform writeonly image2D outIndirect;
+layout(binding = 0, rgba32f) uniform image2D outIndirect;
 
 layout(location = 0) uniform vec3 gridOrigin;
 layout(location = 1) uniform float cellSize;
@@ -38,6 +41,7 @@ layout(location = 6) uniform float specularAlbedo;
 layout(location = 7) uniform float phongExponent;
 layout(location = 8) uniform float marchStepCells;
 layout(location = 9) uniform int marchSamples;
+layout(location = 10) uniform float indirectScale;  // [rendering] scale
 
 // The grid's intensity projected on `lobe`, per channel, trilinearly interpolated at grid
 // coordinates g, and (if withSlope) its derivative per cell along the unit direction d.
@@ -67,20 +71,25 @@ LobeSample sampleLobe(vec3 g, float lobe[SH_MAX_COEFFICIENTS], bool withSlope, v
 }
 
 // Mean lobe-weighted intensity (W/sr) arriving at p from around the reflected direction r, read
-// at marchSamples points p + (j + 1/2) marchStepCells r. The march ends where it leaves the grid,
-// but always reads its first sample (clamped to the grid's edge, as the diffuse read is), so a
-// surface next to the edge still gets a glossy term.
+// at marchSamples points p + (j + 1/2) marchStepCells r, in cells of the coarsest level (the only
+// level without cascades), each weighted by this level's cascade weight there. The march ends
+// where it leaves the coarsest level, but always reads its first sample (clamped to the grid's
+// edge, as the diffuse read is), so a surface next to the edge still gets a glossy term.
 vec3 glossyIntensity(vec3 p, vec3 r) {
   float lobe[SH_MAX_COEFFICIENTS];
   // Light arriving from r travels along -r.
   for (int k = 0; k < SH_COEFFICIENTS; ++k) lobe[k] = shPhongLobeAt(k, -r, phongExponent);
-  vec3 start = gridFromWorld(p, gridOrigin, cellSize);
+  int coarsest = cascadeLevels - 1;
+  float step = marchStepCells * cascadeLevel[coarsest].w;
   vec3 sum = vec3(0.0);
   int inside = 0;
   for (int j = 0; j < marchSamples; ++j) {
-    vec3 g = start + r * ((float(j) + 0.5) * marchStepCells);
+    vec3 x = p + r * ((float(j) + 0.5) * step);
+    vec3 g = cascadeGridCoordinates(x, coarsest);
     if (j > 0 && (any(lessThan(g, vec3(0.0))) || any(greaterThan(g, vec3(resolution))))) break;
-    sum += sampleLobe(g, lobe, false, r).value;
+    float weight = cascadeWeight(x);
+    if (weight > 0.0)
+      sum += weight * sampleLobe(gridFromWorld(x, gridOrigin, cellSize), lobe, false, r).value;
     ++inside;
   }
   return inside > 0 ? max(sum / float(inside), vec3(0.0)) : vec3(0.0);
@@ -90,10 +99,9 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, imageSize(outIndirect)))) return;
   vec4 position = texelFetch(gPosition, pixel, 0);
-  if (position.w == 0.0) {
-    imageStore(outIndirect, pixel, vec4(0.0));
-    return;
-  }
+  if (position.w == 0.0) return;
+  float weight = cascadeWeight(position.xyz);
+  if (weight == 0.0 && !GLOSSY) return;
   vec3 n = texelFetch(gNormal, pixel, 0).xyz;
   vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
   vec3 p = position.xyz + n * (normalOffsetCells * cellSize);
@@ -107,11 +115,11 @@ void main() {
                            leakDampingStrength);
   }
   float cs2 = cellSize * cellSize;
-  vec3 radiance = albedo / PI * max(e, vec3(0.0)) / cs2;
+  vec3 radiance = weight * albedo / PI * max(e, vec3(0.0)) / cs2;
   if (GLOSSY) {
     vec3 toCamera = cameraPosition - position.xyz;
     vec3 v = dot(toCamera, toCamera) > 0.0 ? normalize(toCamera) : n;
     radiance += specularAlbedo * glossyIntensity(p, reflect(-v, n)) / cs2;
   }
-  imageStore(outIndirect, pixel, vec4(radiance, 1.0));
+  imageStore(outIndirect, pixel, imageLoad(outIndirect, pixel) + vec4(indirectScale * radiance, weight));
 }

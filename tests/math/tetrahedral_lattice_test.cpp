@@ -7,7 +7,9 @@
 //   - face solid angles: a cell's four faces seen from its centroid are pi each (4 pi); the three
 //     far faces of each neighbour are back faces that fill exactly the shared face's pi, and the
 //     values the kernel uses (framework/math/tetrahedral_solid_angles.h) are those of every face
-//     of every cell, against closed forms.
+//     of every cell, against closed forms;
+//   - where the GV is read: the crossing of each far face's direction with the shared face lies
+//     on that direction's ray from the source's centroid and inside the shared triangle.
 
 #include <gtest/gtest.h>
 
@@ -232,6 +234,33 @@ TEST(TetrahedralLattice, NeighboursFarFacesTileTheSphere) {
       total += covered;
     }
     EXPECT_NEAR(total, 4.0 * M_PI, 1e-12);
+  }
+}
+
+TEST(TetrahedralLattice, FarFaceCrossingsLieOnTheSharedTriangle) {
+  for (int code = 0; code < shared::TET_PER_CUBE; ++code) {
+    const ivec4 tet{kCube.x, kCube.y, kCube.z, code};
+    const Vertices v = verticesOf(tet);
+    for (int j = 0; j < shared::TET_FACES; ++j) {
+      const dvec3 source = shared::tetCentroid(shared::tetNeighbour(tet, j));
+      const std::array<dvec3, 3> f = faceOf(v, j);
+      const dvec3 normal = glm::cross(f[1] - f[0], f[2] - f[0]);
+      for (int k = 0; k < shared::TET_FACES; ++k) {
+        if (k == j) continue;
+        const dvec3 p = shared::tetFarFaceCrossing(tet, j, k);
+        const dvec3 w = shared::tetFarFaceDirection(code, j, k);
+        EXPECT_NEAR(glm::length(glm::cross(p - source, w)), 0.0, 1e-13) << "on the ray";
+        EXPECT_GT(glm::dot(p - source, w), 0.0) << "ahead of the source";
+        EXPECT_NEAR(glm::dot(p - f[0], normal), 0.0, 1e-13) << "in the shared face's plane";
+        // Inside the triangle: on the inner side of each of its edges.
+        for (int e = 0; e < 3; ++e) {
+          const dvec3 a = f[e], b = f[(e + 1) % 3], c = f[(e + 2) % 3];
+          const dvec3 edgeNormal = glm::cross(normal, b - a);
+          EXPECT_GT(glm::dot(p - a, edgeNormal) * glm::dot(c - a, edgeNormal), 0.0)
+              << "code " << code << " face " << j << " -> " << k << " edge " << e;
+        }
+      }
+    }
   }
 }
 

@@ -147,9 +147,6 @@ TEST_F(Cli, UnknownStrategyIsNamedWithTheKnownOnes) {
 
 // A composition that cannot work stops before running, naming the strategy, the key and why.
 TEST_F(Cli, ImpossibleCompositionIsRefusedWithTheReason) {
-  const std::string order = expectOneErrorLine("run -s grid.sh_order=2 -s propagation.type=directed");
-  EXPECT_NE(order.find("[propagation] type = \"directed\""), std::string::npos) << order;
-  EXPECT_NE(order.find("sh_order"), std::string::npos) << order;
   const std::string sky = expectOneErrorLine("run -s 'sky.radiance=[1, 1, 1]'");
   EXPECT_NE(sky.find("[sky] radiance"), std::string::npos) << sky;
   EXPECT_NE(sky.find("[[injection.also]]"), std::string::npos) << sky;

@@ -196,7 +196,7 @@ height = 80
   EXPECT_EQ(e.strategies.propagation->iterations(), 7);
   ASSERT_EQ(e.strategies.injection.size(), 1u);
   ASSERT_TRUE(e.strategies.occlusion);
-  ASSERT_TRUE(e.strategies.rendering);
+  ASSERT_EQ(e.strategies.rendering.size(), 1u);
   EXPECT_EQ(e.configuration["propagation"]["iterations"], 7);
   EXPECT_EQ(e.configuration["grid"]["resolution"], 12);
   EXPECT_EQ(e.configuration["lights"].size(), 3u);

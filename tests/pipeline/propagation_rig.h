@@ -47,7 +47,7 @@ public:
     strategy_->prepare(shaders_, geometry_, requirements);
     grid_ = LightGrid(geometry_, requirements.shOrder);
     if (requirements.normalGrid) normals_ = std::make_unique<NormalGrid>(geometry_);
-    if (withGv) gv_ = std::make_unique<GeometryVolume>(geometry_, false);
+    if (withGv) gv_ = std::make_unique<GeometryVolume>(geometry_, requirements.surfaceAlbedo);
   }
 
   void load(const Grid& current, const Grid& accumulated) {
@@ -66,6 +66,11 @@ public:
     ASSERT_TRUE(gv_) << "the rig was made without a geometry volume";
     gv_->blocking.upload(blocking.data(), blocking.size() * sizeof(float));
     gv_->firstOccludedIteration = firstOccludedIteration;
+  }
+  // The GV's albedo (rho A, A per GV cell), when the strategy declared surfaceAlbedo.
+  void loadAlbedo(const std::vector<float>& albedo) {
+    ASSERT_TRUE(gv_ && gv_->albedo.size() > 0) << "the rig's GV keeps no albedo";
+    gv_->albedo.upload(albedo.data(), albedo.size() * sizeof(float));
   }
   void propagate() {
     Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_,

@@ -30,6 +30,7 @@
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
 #include "pipeline_test_support.h"
+#include "rendering_rig.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/rendering/trilinear_weights.glsl"
@@ -41,101 +42,9 @@ namespace lpvlab {
 namespace {
 
 using glm::dvec3;
-
-struct SurfacePixel {
-  dvec3 position;  // world, metres
-  dvec3 normal;    // unit
-  dvec3 albedo;
-};
-
-// A light grid in grid.glsl's layout, with its placement and SH order.
-struct HandGrid {
-  GridGeometry geometry;
-  int order = 1;
-  std::vector<float> data;
-
-  HandGrid(const GridGeometry& g, int shOrder)
-      : geometry(g), order(shOrder),
-        data(std::size_t(3) * coefficients() * g.cellCount(), 0.0f) {}
-  int coefficients() const { return shared::shCoefficientCount(order); }
-  float& at(glm::ivec3 cell, int channel, int k) {
-    return data[shared::coefficientIndex(channel, k, coefficients(),
-                                         shared::cellIndex(cell, geometry.resolution),
-                                         geometry.cellCount())];
-  }
-  float at(glm::ivec3 cell, int channel, int k) const {
-    return const_cast<HandGrid*>(this)->at(cell, channel, k);
-  }
-  // f(cell, channel, c) sets the channel's coefficients in `c` (coefficients() zeros on entry);
-  // cells in z, y, x order, channels in order.
-  template <class F>
-  void fill(F f) {
-    const glm::ivec3 r = geometry.resolution;
-    std::vector<double> c;
-    for (int z = 0; z < r.z; ++z)
-      for (int y = 0; y < r.y; ++y)
-        for (int x = 0; x < r.x; ++x)
-          for (int channel = 0; channel < 3; ++channel) {
-            c.assign(coefficients(), 0.0);
-            f(glm::ivec3(x, y, z), channel, c);
-            for (int k = 0; k < coefficients(); ++k) at({x, y, z}, channel, k) = float(c[k]);
-          }
-  }
-};
-
-// Renders `pixels` (one row) with the strategy `type` and its [rendering] table `table`.
-std::vector<dvec3> renderPixels(const std::string& type, toml::table table, const HandGrid& grid,
-                                const std::vector<SurfacePixel>& pixels,
-                                const glm::vec3& cameraPosition) {
-  test::glTestContext();
-  table.insert_or_assign("type", type);
-  Params params(table, "rendering test", "rendering");
-  std::unique_ptr<RenderingStrategy> rendering =
-      Registry<RenderingStrategy>::instance().create(params, "trilinear");
-  params.finish();
-  Requirements requirements;
-  requirements.shOrder = grid.order;
-  rendering->declare(requirements);
-  EXPECT_LE(grid.order, rendering->maxShOrder());
-  ShaderCompiler shaders;
-  rendering->prepare(shaders, grid.geometry, requirements);
-  LightGrid lightGrid(grid.geometry, grid.order);
-  lightGrid.accumulated.upload(grid.data.data(), grid.data.size() * sizeof(float));
-
-  const int w = int(pixels.size());
-  GBuffer gbuffer;
-  gbuffer.width = w;
-  gbuffer.height = 1;
-  std::vector<float> position, normal, albedo;
-  for (const SurfacePixel& p : pixels)
-    for (int c = 0; c < 4; ++c) {
-      position.push_back(c < 3 ? float(p.position[c]) : 1.0f);
-      normal.push_back(c < 3 ? float(p.normal[c]) : 1.0f);
-      albedo.push_back(c < 3 ? float(p.albedo[c]) : 1.0f);
-    }
-  auto texture = [&](const std::vector<float>& texels, const char* label) {
-    gl::Texture t(GL_TEXTURE_2D, GL_RGBA32F, w, 1, 1, label);
-    glTextureSubImage2D(t.id(), 0, 0, 0, w, 1, GL_RGBA, GL_FLOAT, texels.data());
-    return t;
-  };
-  gbuffer.position = texture(position, "position (test)");
-  gbuffer.normal = texture(normal, "normal (test)");
-  gbuffer.albedo = texture(albedo, "albedo (test)");
-  gl::Texture indirect(GL_TEXTURE_2D, GL_RGBA32F, w, 1, 1, "indirect (test)");
-  const LightMaps noLightMaps;
-  Camera camera;
-  camera.position = cameraPosition;
-  Frame frame{.camera = &camera, .gbuffer = gbuffer, .lightMaps = noLightMaps,
-              .lightGrid = lightGrid, .indirect = indirect};
-  rendering->render(frame);
-  std::vector<float> out(std::size_t(w) * 4);
-  glGetTextureImage(indirect.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)),
-                    out.data());
-  checkGl("rendering variants test");
-  std::vector<dvec3> result;
-  for (int i = 0; i < w; ++i) result.emplace_back(out[4 * i], out[4 * i + 1], out[4 * i + 2]);
-  return result;
-}
+using test::HandGrid;
+using test::SurfacePixel;
+using test::renderPixels;
 
 // --- The kernel in double precision, from the same shared functions ----------------------------
 

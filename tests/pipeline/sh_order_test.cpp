@@ -6,7 +6,8 @@
 //     clamp a cell sends exactly its flux; an isotropic source (no clamp at the first step) keeps
 //     it exactly, and every step's flux is what the C++ gather's clamp predicts;
 //   - rendering an order-2 grid that only has order-1 content is the order-1 rendering;
-//   - a composition asking order 2 of an order-1-only strategy ("directed") is refused.
+//   - every shipped propagation runs at orders 1-3; a composition asking more of a strategy than
+//     its maxShOrder() is refused, naming the key and the strategy (a test-only order-1 rendering).
 
 #include <cmath>
 #include <functional>
@@ -19,6 +20,7 @@
 #include "framework/io/image.h"
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/composition.h"
+#include "order_grid_support.h"
 #include "propagation_rig.h"
 
 namespace lpvlab {
@@ -30,24 +32,8 @@ using test::Grid;
 using test::kAxes;
 using test::maxAbs;
 
-// A grid of `coefficients` per channel in grid.glsl's layout.
-struct OrderGrid {
-  glm::ivec3 res;
-  int coefficients;
-  int cells() const { return shared::cellCount(res); }
-  std::size_t floats() const { return std::size_t(3) * coefficients * cells(); }
-  std::size_t at(const glm::ivec3& cell, int channel, int k) const {
-    return std::size_t(shared::coefficientIndex(channel, k, coefficients, shared::cellIndex(cell, res), cells()));
-  }
-};
-
-double flux(const Grid& g, const OrderGrid& o) {
-  double sum = 0.0;
-  forEachCell(o.res, [&](const glm::ivec3& c) {
-    for (int channel = 0; channel < 3; ++channel) sum += shared::shIntegralOfC0(g[o.at(c, channel, 0)]);
-  });
-  return sum;
-}
+using test::flux;
+using test::OrderGrid;
 
 // The standard gather at any order, in double precision, added to `accumulated`.
 Grid gatherAnyOrder(const Grid& g, const OrderGrid& o, Grid& accumulated) {
@@ -253,21 +239,40 @@ std::unique_ptr<Interface> createDefault(const std::string& type) {
   return strategy;
 }
 
-TEST(ShOrderComposition, OrderTwoOfAnOrderOneStrategyIsRefusedNamingTheGridKey) {
-  test::glTestContext();
+// No shipped strategy is order-1 only any more; the refusal is the composition's, so a
+// strategy that keeps the default maxShOrder() of 1 shows it.
+class OrderOneRendering final : public RenderingStrategy {
+public:
+  void prepare(ShaderCompiler&, const GridGeometry&, const Requirements&) override {}
+  void render(Frame&) override {}
+};
+
+Strategies composition(const std::string& propagation) {
   Strategies strategies;
   strategies.injection.push_back(createDefault<InjectionStrategy>("rsm_vpl"));
   strategies.occlusion = createDefault<OcclusionStrategy>("none");
-  strategies.propagation = createDefault<PropagationStrategy>("directed");
-  strategies.rendering = createDefault<RenderingStrategy>("trilinear");
+  strategies.propagation = createDefault<PropagationStrategy>(propagation);
+  strategies.rendering.push_back(createDefault<RenderingStrategy>("trilinear"));
+  return strategies;
+}
+
+TEST(ShOrderComposition, EveryPropagationRunsAtOrdersOneToThree) {
+  test::glTestContext();
+  for (const std::string type : {"standard", "directed", "tetrahedral"})
+    for (int order = 1; order <= 3; ++order)
+      EXPECT_EQ(resolveRequirements(composition(type), order, glm::vec3(0.0f)).shOrder, order) << type;
+}
+
+TEST(ShOrderComposition, OrderTwoOfAnOrderOneStrategyIsRefusedNamingTheGridKey) {
+  test::glTestContext();
+  Strategies strategies = composition("directed");
+  strategies.rendering.push_back(std::make_unique<OrderOneRendering>());
+  strategies.rendering.back()->setRegisteredName("order_one");
   EXPECT_TRUE(resolveRequirements(strategies, 1, glm::vec3(0.0f)).normalGrid);
   const std::string message =
       test::errorOf([&] { resolveRequirements(strategies, 2, glm::vec3(0.0f)); });
-  EXPECT_TRUE(test::contains(message, "[grid] sh_order"));
-  EXPECT_TRUE(test::contains(message, "[propagation] type = \"directed\""));
-  // The same composition with standard propagation runs at order 2.
-  strategies.propagation = createDefault<PropagationStrategy>("standard");
-  EXPECT_EQ(resolveRequirements(strategies, 2, glm::vec3(0.0f)).shOrder, 2);
+  EXPECT_TRUE(test::contains(message, "[grid] sh_order")) << message;
+  EXPECT_TRUE(test::contains(message, "[rendering.also[0]] type = \"order_one\"")) << message;
 }
 
 }  // namespace

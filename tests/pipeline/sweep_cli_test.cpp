@@ -136,7 +136,8 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
                                             "param.propagation.iterations", "param.injection.type",
                                             "param.occlusion.type", "param.propagation.type",
                                             "param.rendering.type", "param.grid.resolution",
-                                            "param.grid.sh_order", "param.scene.file"};
+                                            "param.grid.sh_order", "param.cascades.levels",
+                                            "param.scene.file"};
   ASSERT_GE(before.header.size(), leading.size());
   for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(before.header[i], leading[i]);
   for (const char* column : {"gpu_ms.total", "wall_ms.total", "gpu_ms.propagation", "memory_bytes",

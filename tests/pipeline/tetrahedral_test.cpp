@@ -1,7 +1,8 @@
 // Tetrahedral propagation ("tetrahedral": shaders/propagation/tetrahedral_*.comp) through the
-// whole strategy on hand-made cubic grids:
-//   - the GPU (split, gather steps, merge) against the double-precision C++ of the same shared
-//     GLSL (tetrahedral_lattice.glsl) on random grids;
+// whole strategy on hand-made cubic grids, at SH orders 1-3:
+//   - the GPU (split, gather steps, merge) against a double-precision C++ reference of any order
+//     built from the same shared GLSL (tetrahedral_lattice.glsl) on random grids, without and
+//     with a random geometry volume (unoccluded steps, then occluded ones);
 //   - resampling cubic -> lattice -> cubic conserves flux (zero steps);
 //   - flux per step against the normalisation: the 12 far faces of a cell's four neighbours
 //     tile the sphere, so a step from an isotropic source sends exactly its flux; the clamp can
@@ -9,7 +10,8 @@
 //     (the closed shell here) nothing is lost, and `accumulated` is the injected light plus
 //     every step's;
 //   - a single VPL in the middle keeps the lattice's symmetries (it keeps all 48 of the cube's
-//     about a cube centre: tests/math/tetrahedral_lattice_test.cpp).
+//     about a cube centre: tests/math/tetrahedral_lattice_test.cpp), at orders 1 and 2;
+//   - the GV: an opaque wall stops all light (0 W beyond it), a transparent GV changes nothing.
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/math/tetrahedral_solid_angles.h"
+#include "order_grid_support.h"
 #include "propagation_rig.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -33,21 +36,16 @@ namespace {
 using namespace test;
 using Cells = std::vector<double>;  // the lattice, grid.glsl's layout over tetSlotCount slots
 
-// The tetrahedral strategy and its light grid of cubes; run: load current and accumulated, then
-// propagate.
-PropagationRig tetrahedralRig(const glm::ivec3& resolution, int iterations) {
-  return PropagationRig("tetrahedral", resolution, iterationsTable(iterations));
+// The tetrahedral strategy and its light grid of cubes at `order`, with a GV if asked.
+PropagationRig tetrahedralRig(const glm::ivec3& resolution, int iterations, int order = 1,
+                              bool withGv = false) {
+  return PropagationRig("tetrahedral", resolution, iterationsTable(iterations), order, withGv);
 }
 void run(PropagationRig& rig, const Grid& current, const Grid& accumulated) {
   rig.load(current, accumulated);
   rig.propagate();
 }
 void run(PropagationRig& rig, const Grid& injected) { run(rig, injected, injected); }
-
-std::size_t slotAt(const glm::ivec3& res, const glm::ivec4& tet, int channel, int k) {
-  return std::size_t(shared::coefficientIndex(channel, k, kCoefficients,
-                                              shared::tetSlot(tet, res), shared::tetSlotCount(res)));
-}
 
 // Every tetrahedral cell of the lattice inside the grid.
 void forEachTet(const glm::ivec3& res, const std::function<void(const glm::ivec4&)>& f) {
@@ -59,56 +57,83 @@ void forEachTet(const glm::ivec3& res, const std::function<void(const glm::ivec4
   });
 }
 
-glm::dvec4 coefficientsOf(const Cells& cells, const glm::ivec3& res, const glm::ivec4& tet, int channel) {
-  glm::dvec4 c;
-  for (int k = 0; k < kCoefficients; ++k) c[k] = cells[slotAt(res, tet, channel, k)];
-  return c;
-}
+// ---- the double-precision reference of split, gather and merge, at any order ------------------
 
-// ---- the double-precision reference of split, gather and merge --------------------------------
+struct Lattice {
+  OrderGrid cubes;
+  int slots() const { return shared::tetSlotCount(cubes.res); }
+  std::size_t at(const glm::ivec4& tet, int channel, int k) const {
+    return std::size_t(shared::coefficientIndex(channel, k, cubes.coefficients,
+                                                shared::tetSlot(tet, cubes.res), slots()));
+  }
+  Cells zero() const { return Cells(std::size_t(3) * cubes.coefficients * slots(), 0.0); }
+};
 
-Cells split(const Grid& g, const glm::ivec3& res) {
-  Cells cells(std::size_t(3) * kCoefficients * shared::tetSlotCount(res), 0.0);
-  forEachTet(res, [&](const glm::ivec4& tet) {
+Cells split(const Grid& g, const Lattice& l) {
+  Cells cells = l.zero();
+  forEachTet(l.cubes.res, [&](const glm::ivec4& tet) {
     const glm::ivec3 lower{tet.x, tet.y, tet.z};
     const glm::ivec3 upper = lower + shared::tetUnitOffset(shared::tetAxis(tet.w));
-    for (int channel = 0; channel < 3; ++channel) {
-      const glm::dvec4 c = shared::tetSplitWeight(lower, res) * cellOf(g, res, lower, channel) +
-                           shared::tetSplitWeight(upper, res) * cellOf(g, res, upper, channel);
-      for (int k = 0; k < kCoefficients; ++k) cells[slotAt(res, tet, channel, k)] = c[k];
-    }
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < l.cubes.coefficients; ++k)
+        cells[l.at(tet, channel, k)] = shared::tetSplitWeight(lower, l.cubes.res) * g[l.cubes.at(lower, channel, k)] +
+                                       shared::tetSplitWeight(upper, l.cubes.res) * g[l.cubes.at(upper, channel, k)];
   });
   return cells;
 }
 
 const TetrahedralFaceSolidAngles kAngles = tetrahedralFaceSolidAngles();
 
-Cells step(const Cells& source, const glm::ivec3& res) {
-  Cells target(source.size(), 0.0);
-  forEachTet(res, [&](const glm::ivec4& tet) {
+// What `tet` receives through its faces other than `sharedFace` from coefficients `c` (one
+// channel) of its neighbour across it; `occluded`: through the GV in shared::gvBlocking.
+std::vector<double> receive(const std::vector<double>& c, const glm::ivec4& tet, int sharedFace,
+                            bool occluded, const glm::ivec3& res) {
+  std::vector<double> out(c.size(), 0.0);
+  for (int k = 0; k < shared::TET_FACES; ++k) {
+    if (k == sharedFace) continue;
+    const glm::dvec3 w = shared::tetFarFaceDirection(tet.w, sharedFace, k);
+    const glm::dvec3 normal = shared::tetFaceNormal(tet.w, k);
+    const double omega = shared::tetFarFaceSolidAngle(sharedFace, k, kAngles.smallFace, kAngles.largeFace);
+    const double transmittance =
+        occluded ? shared::gvTransmittance(
+                       shared::gvBlockingAt(shared::tetFarFaceCrossing(tet, sharedFace, k), res + 1), w)
+                 : 1.0;
+    double intensity = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) intensity += c[i] * shared::shBasisAt(int(i), w);
+    const double phi = shared::standardFaceFlux(intensity, omega, transmittance);
+    for (std::size_t i = 0; i < c.size(); ++i) out[i] += phi / M_PI * shared::shCosineLobeAt(int(i), normal);
+  }
+  return out;
+}
+
+Cells step(const Cells& source, const Lattice& l, bool occluded = false) {
+  Cells target = l.zero();
+  const int n = l.cubes.coefficients;
+  forEachTet(l.cubes.res, [&](const glm::ivec4& tet) {
     for (int face = 0; face < shared::TET_FACES; ++face) {
-      const glm::ivec4 n = shared::tetNeighbour(tet, face);
-      if (!shared::tetInside(n, res)) continue;
+      const glm::ivec4 neighbour = shared::tetNeighbour(tet, face);
+      if (!shared::tetInside(neighbour, l.cubes.res)) continue;
       for (int channel = 0; channel < 3; ++channel) {
-        const glm::dvec4 got = shared::tetReceiveFrom(coefficientsOf(source, res, n, channel), tet.w,
-                                                      face, kAngles.smallFace, kAngles.largeFace);
-        for (int k = 0; k < kCoefficients; ++k) target[slotAt(res, tet, channel, k)] += got[k];
+        std::vector<double> c(n);
+        for (int k = 0; k < n; ++k) c[k] = source[l.at(neighbour, channel, k)];
+        const std::vector<double> got = receive(c, tet, face, occluded, l.cubes.res);
+        for (int k = 0; k < n; ++k) target[l.at(tet, channel, k)] += got[k];
       }
     }
   });
   return target;
 }
 
-Grid merge(const Cells& cells, const glm::ivec3& res) {
-  std::vector<double> sum(std::size_t(3) * kCoefficients * test::cells(res), 0.0);
-  forEachTet(res, [&](const glm::ivec4& tet) {
+Grid merge(const Cells& cells, const Lattice& l) {
+  std::vector<double> sum(l.cubes.floats(), 0.0);
+  forEachTet(l.cubes.res, [&](const glm::ivec4& tet) {
     const glm::ivec3 lower{tet.x, tet.y, tet.z};
     const glm::ivec3 upper = lower + shared::tetUnitOffset(shared::tetAxis(tet.w));
     for (int channel = 0; channel < 3; ++channel)
-      for (int k = 0; k < kCoefficients; ++k) {
-        const double v = shared::TET_MERGE_WEIGHT * cells[slotAt(res, tet, channel, k)];
-        sum[at(res, lower, channel, k)] += v;
-        sum[at(res, upper, channel, k)] += v;
+      for (int k = 0; k < l.cubes.coefficients; ++k) {
+        const double v = shared::TET_MERGE_WEIGHT * cells[l.at(tet, channel, k)];
+        sum[l.cubes.at(lower, channel, k)] += v;
+        sum[l.cubes.at(upper, channel, k)] += v;
       }
   });
   return Grid(sum.begin(), sum.end());
@@ -117,24 +142,26 @@ Grid merge(const Cells& cells, const glm::ivec3& res) {
 // ---- the clamp's gain -----------------------------------------------------------------------------
 
 // The largest factor by which one step can multiply a cell's flux, over cells holding one
-// clamped-cosine lobe Phi / pi * cosLobe(n) (n sampled densely, every cell orientation); a
-// non-negative sum of lobes gains at most as much. Without the clamp it is exactly 1.
-double maxStepGain() {
+// clamped-cosine lobe Phi / pi * cosLobe(n) at `order` (n sampled densely, every cell
+// orientation); a non-negative sum of lobes gains at most as much. Without the clamp it is
+// exactly 1.
+double maxStepGain(int order) {
   double gain = 1.0;
-  const int n = 4000;
+  const int n = 2000, coefficients = shared::shCoefficientCount(order);
   for (int code = 0; code < shared::TET_PER_CUBE; ++code) {
     const glm::ivec4 source{0, 0, 0, code};
     for (int i = 0; i < n; ++i) {
       const double z = 1.0 - 2.0 * (i + 0.5) / n, r = std::sqrt(1.0 - z * z);
       const double phi = M_PI * (3.0 - std::sqrt(5.0)) * i;
-      const glm::dvec4 lobe = shared::shCosineLobe({r * std::cos(phi), r * std::sin(phi), z}) / M_PI;
+      std::vector<double> lobe(coefficients);
+      for (int k = 0; k < coefficients; ++k)
+        lobe[k] = shared::shCosineLobeAt(k, {r * std::cos(phi), r * std::sin(phi), z}) / M_PI;
       double out = 0.0;
       for (int face = 0; face < shared::TET_FACES; ++face) {
         const glm::ivec4 target = shared::tetNeighbour(source, face);
         for (int back = 0; back < shared::TET_FACES; ++back)
           if (shared::tetNeighbour(target, back) == source)
-            out += shared::shIntegral(shared::tetReceiveFrom(lobe, target.w, back, kAngles.smallFace,
-                                                             kAngles.largeFace));
+            out += shared::shIntegralOfC0(receive(lobe, target, back, false, {1, 1, 1})[0]);
       }
       gain = std::max(gain, out);
     }
@@ -142,72 +169,91 @@ double maxStepGain() {
   return gain;
 }
 
+class TetrahedralOrder : public ::testing::TestWithParam<int> {};
+
 // ---- a. the kernels against the C++ ------------------------------------------------------------
 
-TEST(TetrahedralPropagation, GpuMatchesTheSharedCppOnRandomGrids) {
-  const glm::ivec3 res{5, 4, 3};  // not multiples of the work group, nor a cube; many boundary cells
-  const int iterations = 3;
-  const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
-  std::mt19937 random(2024);
-  const Grid current = randomFloats(n, random), accumulated = randomFloats(n, random);
+// With a GV: firstOccludedIteration 1, so the first tetFirstOccludedStep(1) = 3 steps are
+// unoccluded and the rest read the random GV.
+void gpuMatchesTheCpp(int order, bool withGv) {
+  const Lattice l{orderGrid({5, 4, 3}, order)};  // not multiples of the work group, nor a cube
+  const int iterations = withGv ? 5 : 3;
+  std::mt19937 random(2024 + order);
+  const Grid current = randomFloats(l.cubes.floats(), random);
+  const Grid accumulated = randomFloats(l.cubes.floats(), random);
 
-  PropagationRig rig = tetrahedralRig(res, iterations);
+  PropagationRig rig = tetrahedralRig(l.cubes.res, iterations, order, withGv);
+  const int firstOccludedStep = shared::tetFirstOccludedStep(1);
+  if (withGv) {
+    ASSERT_EQ(firstOccludedStep, 3);
+    // Blocking potential of random surfels: c0 in [0, 0.6], the linear part smaller, so that
+    // 1 - B ranges over (0, 1] and the clamp sometimes acts.
+    std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+    const int gvCells = shared::cellCount(l.cubes.res + 1);
+    std::vector<float> blocking(std::size_t(4) * gvCells);
+    for (int i = 0; i < gvCells; ++i) {
+      blocking[i] = 0.3f * (uniform(random) + 1.0f);
+      for (int k = 1; k < 4; ++k) blocking[std::size_t(k) * gvCells + i] = 0.4f * uniform(random);
+    }
+    shared::gvBlocking.assign(blocking.begin(), blocking.end());
+    rig.loadGv(blocking, 1);
+  }
   run(rig, current, accumulated);
   const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
 
-  Cells cells = split(current, res), sum(cells.size(), 0.0);
+  Cells cells = split(current, l), sum = l.zero();
   for (int i = 0; i < iterations; ++i) {
-    cells = step(cells, res);
+    cells = step(cells, l, withGv && i >= firstOccludedStep);
     for (std::size_t j = 0; j < sum.size(); ++j) sum[j] += cells[j];
   }
-  const Grid expectedCurrent = merge(cells, res), merged = merge(sum, res);
-  const double tolerance = 1e-5 * std::max(maxAbs(expectedCurrent), maxAbs(merged));
+  const Grid expectedCurrent = merge(cells, l), merged = merge(sum, l);
   ASSERT_GT(maxAbs(expectedCurrent), 1e-3);
-  for (std::size_t i = 0; i < n; ++i) {
-    ASSERT_NEAR(gpuCurrent[i], expectedCurrent[i], tolerance) << "current float " << i;
-    ASSERT_NEAR(gpuAccumulated[i], accumulated[i] + merged[i], tolerance) << "accumulated float " << i;
-  }
+  Grid expectedAccumulated = accumulated;
+  for (std::size_t i = 0; i < merged.size(); ++i) expectedAccumulated[i] += merged[i];
+  expectClose(gpuCurrent, expectedCurrent, 1e-5, "current");
+  expectClose(gpuAccumulated, expectedAccumulated, 1e-5, "accumulated");
+}
+
+TEST_P(TetrahedralOrder, GpuMatchesTheSharedCppOnRandomGrids) { gpuMatchesTheCpp(GetParam(), false); }
+TEST_P(TetrahedralOrder, GpuThroughARandomGeometryVolumeMatchesTheSharedCpp) {
+  gpuMatchesTheCpp(GetParam(), true);
 }
 
 // ---- b. resampling and the normalisation ------------------------------------------------------
 
-TEST(TetrahedralPropagation, ResamplingConservesFlux) {
-  const glm::ivec3 res{4, 3, 5};
-  const std::size_t n = std::size_t(3) * kCoefficients * cells(res);
+TEST_P(TetrahedralOrder, ResamplingConservesFlux) {
+  const OrderGrid o = orderGrid({4, 3, 5}, GetParam());
   std::mt19937 random(99);
-  const Grid g = randomFloats(n, random);
-  PropagationRig rig = tetrahedralRig(res, 0);
+  const Grid g = randomFloats(o.floats(), random);
+  PropagationRig rig = tetrahedralRig(o.res, 0, GetParam());
   run(rig, g);
   EXPECT_EQ(rig.accumulated(), g) << "no steps add nothing";
   const Grid resampled = rig.current();
-  EXPECT_NEAR(flux(resampled, res), flux(g, res), 1e-5 * maxAbs(g) * double(n));
-  double differs = 0.0;  // the round trip smooths (half the cube, half its face neighbours)
-  for (std::size_t i = 0; i < n; ++i) differs = std::max(differs, double(std::abs(resampled[i] - g[i])));
-  EXPECT_GT(differs, 0.1);
+  EXPECT_NEAR(flux(resampled, o), flux(g, o), 1e-5 * maxAbs(g) * double(o.floats()));
+  EXPECT_GT(maxDifference(resampled, g), 0.1) << "the round trip smooths (half the cube, half its face neighbours)";
   // Every cube alone, corner ones included, keeps its flux.
   for (const glm::ivec3& cube : {glm::ivec3(0, 0, 0), glm::ivec3(3, 2, 4), glm::ivec3(1, 1, 2)}) {
-    const Grid one = pointSource(res, cube, true);
-    run(rig, one);
-    EXPECT_NEAR(flux(rig.current(), res), injectedFlux(), 1e-6 * injectedFlux());
+    run(rig, orderSource(o, cube, false, glm::normalize(glm::dvec3(1, -2, 3))));
+    EXPECT_NEAR(flux(rig.current(), o), injectedFlux(), 1e-6 * injectedFlux());
   }
 }
 
-void fluxPerStep(bool isotropic) {
-  const glm::ivec3 res{13, 13, 13};
-  const glm::ivec3 centre{6, 6, 6};
-  const int steps = 8;  // light moves 0.35 cubes per step (plus one cube of resampling each way):
+void fluxPerStep(int order, bool isotropic) {
+  const OrderGrid o = orderGrid({11, 11, 11}, order);
+  const glm::ivec3 centre{5, 5, 5};
+  const int steps = 6;  // light moves 0.35 cubes per step (plus one cube of resampling each way):
                         // it stays well inside until then
-  const double phi = injectedFlux(), gMax = maxStepGain();
-  const Grid injected = pointSource(res, centre, isotropic);
-  std::cout << "[ tetrahedral ] " << (isotropic ? "isotropic" : "+z cosine-lobe")
+  const double phi = injectedFlux(), gMax = maxStepGain(order);
+  const Grid injected = orderSource(o, centre, isotropic);
+  std::cout << "[ tetrahedral ] order " << order << ", " << (isotropic ? "isotropic" : "+z cosine-lobe")
             << " source; largest clamp gain per step " << gMax << "\n";
   double before = phi, stepsFlux = 0.0;
   for (int k = 1; k <= steps; ++k) {
-    PropagationRig rig = tetrahedralRig(res, k);
+    PropagationRig rig = tetrahedralRig(o.res, k, order);
     run(rig, injected);
-    const double now = flux(rig.current(), res), accumulated = flux(rig.accumulated(), res);
-    std::cout << "[ tetrahedral ] step " << k << ": flux " << now << " W (" << now / phi
-              << " of injected), accumulated " << accumulated << " W\n";
+    const double now = flux(rig.current(), o), accumulated = flux(rig.accumulated(), o);
+    std::cout << "[ tetrahedral ] order " << order << " step " << k << ": flux " << now / phi
+              << " of injected, accumulated " << accumulated << " W\n";
     if (isotropic && k == 1) {
       EXPECT_NEAR(now, phi, 1e-5 * phi) << "the far faces tile the sphere";
     }
@@ -220,14 +266,14 @@ void fluxPerStep(bool isotropic) {
   EXPECT_GT(gMax, 1.0) << "the clamp adds for some lobe";
 }
 
-TEST(TetrahedralPropagation, FluxPerStepFromAnIsotropicSource) { fluxPerStep(true); }
-TEST(TetrahedralPropagation, FluxPerStepFromALobe) { fluxPerStep(false); }
+TEST_P(TetrahedralOrder, FluxPerStepFromAnIsotropicSource) { fluxPerStep(GetParam(), true); }
+TEST_P(TetrahedralOrder, FluxPerStepFromALobe) { fluxPerStep(GetParam(), false); }
 
 TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
-  const glm::ivec3 res{5, 5, 5};
-  PropagationRig rig = tetrahedralRig(res, 300);
-  run(rig, pointSource(res, {2, 2, 2}, false));
-  const double now = flux(rig.current(), res);
+  const OrderGrid o = orderGrid({5, 5, 5}, 1);
+  PropagationRig rig = tetrahedralRig(o.res, 300);
+  run(rig, orderSource(o, {2, 2, 2}, false));
+  const double now = flux(rig.current(), o);
   ASSERT_TRUE(std::isfinite(now));
   EXPECT_GE(now, 0.0);
   EXPECT_LT(now, 1e-4 * injectedFlux());
@@ -235,29 +281,94 @@ TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
 
 // ---- c. symmetry -------------------------------------------------------------------------------
 
-// The cube's symmetries about the centre cube's centre (grid_test_support.h).
+// The cube's symmetries about the centre cube's centre (grid_test_support.h), at orders 1 and 2.
 const glm::ivec3 kRes11{11, 11, 11};
 const glm::ivec3 kCentre11{5, 5, 5};
 
-TEST(TetrahedralPropagation, IsotropicVplKeepsTheCubesSymmetries) {
-  PropagationRig rig = tetrahedralRig(kRes11, 7);
-  run(rig, pointSource(kRes11, kCentre11, true));
+class TetrahedralSymmetry : public ::testing::TestWithParam<int> {};
+
+TEST_P(TetrahedralSymmetry, IsotropicVplKeepsTheCubesSymmetries) {
+  const OrderGrid o = orderGrid(kRes11, GetParam());
+  PropagationRig rig = tetrahedralRig(kRes11, 7, GetParam());
+  run(rig, orderSource(o, kCentre11, true));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     ASSERT_GT(maxAbs(g), 0.0);
     for (const Symmetry& s : {kMirrorX, kMirrorY, kMirrorZ, kSwapXY, kRotateZ, kRotateX, kRotateXYZ})
-      EXPECT_LE(asymmetry(g, kRes11, kCentre11, s), 1e-5 * maxAbs(g)) << s.name;
+      EXPECT_LE(asymmetry(g, o, kCentre11, s), 1e-5 * maxAbs(g)) << s.name;
   }
 }
 
-TEST(TetrahedralPropagation, LobeAlongZKeepsTheSymmetriesAboutZ) {
-  PropagationRig rig = tetrahedralRig(kRes11, 7);
-  run(rig, pointSource(kRes11, kCentre11, false));
+TEST_P(TetrahedralSymmetry, LobeAlongZKeepsTheSymmetriesAboutZ) {
+  const OrderGrid o = orderGrid(kRes11, GetParam());
+  PropagationRig rig = tetrahedralRig(kRes11, 7, GetParam());
+  run(rig, orderSource(o, kCentre11, false));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     for (const Symmetry& s : {kMirrorX, kMirrorY, kSwapXY, kRotateZ})
-      EXPECT_LE(asymmetry(g, kRes11, kCentre11, s), 1e-5 * maxAbs(g)) << s.name;
-    EXPECT_GT(asymmetry(g, kRes11, kCentre11, kMirrorZ), 0.1 * maxAbs(g)) << "the light goes up";
+      EXPECT_LE(asymmetry(g, o, kCentre11, s), 1e-5 * maxAbs(g)) << s.name;
+    EXPECT_GT(asymmetry(g, o, kCentre11, kMirrorZ), 0.1 * maxAbs(g)) << "the light goes up";
   }
 }
+
+// ---- d. the geometry volume ---------------------------------------------------------------------
+
+// A GV whose cells with x in [xLow, xHigh] block isotropically with B = blocking everywhere else
+// zero (geometry_volume.h layout: c0 only).
+std::vector<float> gvWall(const glm::ivec3& res, int xLow, int xHigh, double blocking) {
+  const glm::ivec3 gvRes = res + 1;
+  std::vector<float> gv(std::size_t(4) * shared::cellCount(gvRes), 0.0f);
+  forEachCell(gvRes, [&](const glm::ivec3& c) {
+    if (c.x >= xLow && c.x <= xHigh) gv[shared::cellIndex(c, gvRes)] = float(blocking / shared::SH_Y0);
+  });
+  return gv;
+}
+
+// GV cell centres sit on light-grid cube corners: cells x = 4..6 blocking B = 1000 make every
+// crossing point with 3.001 < x < 6.999 opaque; a lattice step moves light 0.35 cube edges and
+// crosses a face between its two centroids, so no light gets from x < 4 to x > 7 (cubes x >= 7
+// are fed only by lattice cells whose centroids have x > 6.75).
+TEST_P(TetrahedralOrder, AnOpaqueGvWallStopsTheLight) {
+  const OrderGrid o = orderGrid({12, 5, 5}, GetParam());
+  const glm::ivec3 source{1, 2, 2};
+  const int steps = 40;  // enough to cross the grid about once without the wall
+  auto beyond = [](const glm::ivec3& c) { return c.x >= 7; };
+  PropagationRig open = tetrahedralRig(o.res, steps, GetParam());
+  run(open, orderSource(o, source, false, {1, 0, 0}));
+  const double openBeyond = flux(open.accumulated(), o, beyond);
+  PropagationRig walled = tetrahedralRig(o.res, steps, GetParam(), true);
+  walled.loadGv(gvWall(o.res, 4, 6, 1000.0), 0);
+  run(walled, orderSource(o, source, false, {1, 0, 0}));
+  const Grid g = walled.accumulated();
+  double walledBeyond = 0.0;
+  forEachCell(o.res, [&](const glm::ivec3& c) {
+    if (!beyond(c)) return;
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < o.coefficients; ++k) walledBeyond += std::abs(g[o.at(c, channel, k)]);
+  });
+  std::cout << "[ tetrahedral ] order " << GetParam() << ": accumulated beyond the wall: open "
+            << openBeyond << " W, walled " << walledBeyond << " (sum of |coefficients|)\n";
+  EXPECT_GT(openBeyond, 1e-3 * injectedFlux()) << "without the wall light gets there";
+  EXPECT_EQ(walledBeyond, 0.0);
+  EXPECT_GT(flux(g, o, [](const glm::ivec3& c) { return c.x < 4; }), injectedFlux())
+      << "the light before the wall is still there";
+}
+
+TEST_P(TetrahedralOrder, ATransparentGvChangesNothing) {
+  const OrderGrid o = orderGrid({6, 5, 4}, GetParam());
+  std::mt19937 random(7);
+  const Grid current = randomFloats(o.floats(), random), accumulated = randomFloats(o.floats(), random);
+  PropagationRig plain = tetrahedralRig(o.res, 6, GetParam());
+  run(plain, current, accumulated);
+  PropagationRig withGv = tetrahedralRig(o.res, 6, GetParam(), true);
+  withGv.loadGv(gvWall(o.res, 0, o.res.x, 0.0), 0);
+  run(withGv, current, accumulated);
+  expectClose(withGv.current(), plain.current(), 1e-6, "current");
+  expectClose(withGv.accumulated(), plain.accumulated(), 1e-6, "accumulated");
+}
+
+INSTANTIATE_TEST_SUITE_P(Orders, TetrahedralOrder, ::testing::Values(1, 2, 3),
+                         [](const auto& info) { return "order" + std::to_string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Orders, TetrahedralSymmetry, ::testing::Values(1, 2),
+                         [](const auto& info) { return "order" + std::to_string(info.param); });
 
 }  // namespace
 }  // namespace lpvlab

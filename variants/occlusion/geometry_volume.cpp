@@ -6,6 +6,10 @@
 // A_s / s^2 * cosLobe(-n) to the GV cell containing it (shaders/occlusion/gv_surfel.glsl). With
 // both sources, each fills a GV of its own and the two are merged "by the larger coefficients":
 // per GV cell the whole cell of the source with the larger c0 (shaders/occlusion/gv_merge.comp).
+// When a strategy asks for the surfaces' albedo (Requirements::surfaceAlbedo: multiple bounces),
+// each surfel also adds its albedo, weighted by its A_s / s^2, to the GV's albedo: a camera
+// surfel the G-buffer's, an RSM surfel its reflected flux over the flux arriving at it. Albedo is
+// a weighted mean, not a sum, so both sources add to the one albedo buffer without merging.
 // docs/variants.md#geometry_volume has the mathematics.
 //
 // | parameter            | type     | default             | meaning                              |
@@ -19,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/gl/dispatch.h"
@@ -53,9 +58,12 @@ public:
   void declare(Requirements& requirements) const override { requirements.geometryVolume = true; }
   int maxShOrder() const override { return 3; }  // the GV is order 1 whatever the light grid's
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid, const Requirements&) override {
-    if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp");
-    if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp");
+  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
+               const Requirements& requirements) override {
+    withAlbedo_ = requirements.surfaceAlbedo;
+    const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
+    if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
+    if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);
     if (fromCamera_ && fromLight_) {
       merge_ = shaders.compute("occlusion/gv_merge.comp");
       const GridGeometry gv = GeometryVolume::placementFor(grid);
@@ -88,10 +96,11 @@ public:
 
 private:
   // What both injection kernels read first: the GV's placement (uniforms 0-2), the surfels'
-  // positions and normals (texture units 0, 1), and the GV they add to (storage 0).
-  static void useInjection(const Program& program, const GeometryVolume& gv,
-                           const gl::Texture& position, const gl::Texture& normal,
-                           const gl::Buffer& target) {
+  // positions, normals and what gives their albedo (texture units 0, 1, 2), the GV they add to
+  // (storage 0) and, when asked for, the GV's albedo (storage 3).
+  void useInjection(const Program& program, const GeometryVolume& gv, const gl::Texture& position,
+                    const gl::Texture& normal, const gl::Texture& albedoSource,
+                    const gl::Buffer& target) const {
     program.use();
     glUniform3fv(0, 1, &gv.geometry.origin[0]);
     glUniform1f(1, gv.geometry.cellSize);
@@ -99,11 +108,15 @@ private:
     glBindTextureUnit(0, position.id());
     glBindTextureUnit(1, normal.id());
     target.bindStorage(0);
+    if (withAlbedo_) {
+      glBindTextureUnit(2, albedoSource.id());
+      gv.albedo.bindStorage(3);
+    }
   }
 
   void injectCamera(Frame& frame, const gl::Buffer& target) {
     const GBuffer& g = frame.gbuffer;
-    useInjection(camera_, *frame.geometryVolume, g.position, g.normal, target);
+    useInjection(camera_, *frame.geometryVolume, g.position, g.normal, g.albedo, target);
     glUniform3fv(3, 1, &frame.camera->position[0]);
     glUniform1f(4, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
     glUniform2i(5, g.width, g.height);
@@ -112,7 +125,8 @@ private:
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
     const LightMaps& maps = frame.lightMaps;
-    useInjection(rsm_, *frame.geometryVolume, maps.rsmPosition, maps.rsmNormal, target);
+    useInjection(rsm_, *frame.geometryVolume, maps.rsmPosition, maps.rsmNormal, maps.rsmFlux,
+                 target);
     maps.lightRecords.bindStorage(1);
     maps.viewRecords.bindStorage(2);
     glUniform1i(3, maps.rsmResolution);
@@ -122,6 +136,7 @@ private:
 
   bool skipFirstIteration_;
   bool fromLight_ = false, fromCamera_ = false;
+  bool withAlbedo_ = false;
   Program camera_, rsm_, merge_;
   gl::Buffer lightScratch_;
 };

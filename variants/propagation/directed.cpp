@@ -6,8 +6,9 @@
 // face passes into a cell is reprojected a second time about the cell's dilated normal, which
 // removes what travels against it. The mathematics and the normalisation (a gain G(n) per
 // cell, so that light travelling along agreeing normals keeps its flux) are in
-// shaders/propagation/directed_faces.glsl and docs/variants.md#directed. Order 1 only. A geometry volume, if the occlusion strategy provides
-// one, attenuates the light crossing each shared face as in thesis alg. 6.2.
+// shaders/propagation/directed_faces.glsl and docs/variants.md#directed, at SH orders 1-3 (the
+// gain derived for the grid's order). A geometry volume, if the occlusion strategy provides one,
+// attenuates the light crossing each shared face as in thesis alg. 6.2.
 //
 // | parameter  | type | default | meaning                                                       |
 // |------------|------|---------|---------------------------------------------------------------|
@@ -21,6 +22,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
@@ -35,6 +37,7 @@ public:
         dilation_(params.get<bool>("dilation", true)) {}
 
   void declare(Requirements& requirements) const override { requirements.normalGrid = true; }
+  int maxShOrder() const override { return 3; }
 
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override {
@@ -42,7 +45,8 @@ public:
     gather_ = shaders.compute("propagation/directed_gather.comp",
                               {SpecConstant::f(0, float(angles.farFace)),
                                SpecConstant::f(1, float(angles.sideFace)),
-                               SpecConstant::b(2, requirements.geometryVolume)});
+                               SpecConstant::b(2, requirements.geometryVolume),
+                               SpecConstant::i(3, shared::shCoefficientCount(requirements.shOrder))});
     dilate_ = shaders.compute("propagation/directed_dilate.comp");
     scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");

@@ -8,7 +8,10 @@
 // its normalisation and the geometry volume's attenuation are in standard_faces.glsl.
 // When an occlusion strategy provides a geometry volume, each face's flux is multiplied by the
 // GV's transmittance from iteration GeometryVolume::firstOccludedIteration on (alg. 6.2
-// lines 11-14).
+// lines 11-14). With `bounces`, the light a face crossing blocks is re-emitted by the GV's
+// surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
+// from, every occluded iteration, so light bounces as often as iterations allow
+// (standard_faces.glsl has the mathematics).
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
@@ -16,7 +19,15 @@
 // |            |        |          | a 32-cell grid needs about 32 for light to cross it           |
 // | method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
 // |            |        |          | different memory traffic (scatter uses atomics)               |
+// | bounces    | bool   | false    | re-emit the light the GV blocks with its surfaces' albedo     |
+// |            |        |          | (multiple bounces); needs [occlusion] "geometry_volume"       |
+// | far_face_solid_angle  | real | 0.40066968 | Omega of the far face (solid_angle.h); a     |
+// | side_face_solid_angle | real | 0.42343135 | side face's; both for `lpvlab fit` to vary   |
+// | damping    | real   | 1        | every step's transfer times this (0..2): both solid angles    |
+// |            |        |          | scaled, since the transfer is linear in them                  |
 
+#include <cmath>
+#include <string>
 #include <utility>
 
 #include "framework/gl/dispatch.h"
@@ -34,18 +45,33 @@ class StandardPropagation final : public PropagationStrategy {
 public:
   explicit StandardPropagation(Params& params)
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
-        scatter_(params.getChoice("method", "gather", {"gather", "scatter"}) == "scatter") {}
+        scatter_(params.getChoice("method", "gather", {"gather", "scatter"}) == "scatter"),
+        bounces_(params.get<bool>("bounces", false)),
+        farFace_(params.get<double>("far_face_solid_angle", cubeFaceSolidAngles().farFace,
+                                    {.min = 0.0, .max = 4.0 * M_PI})),
+        sideFace_(params.get<double>("side_face_solid_angle", cubeFaceSolidAngles().sideFace,
+                                     {.min = 0.0, .max = 4.0 * M_PI})),
+        damping_(params.get<double>("damping", 1.0, {.min = 0.0, .max = 2.0})) {}
 
   int maxShOrder() const override { return 3; }
+  void declare(Requirements& requirements) const override {
+    if (bounces_) requirements.surfaceAlbedo = true;
+  }
+  std::string refusal(const Requirements& requirements) const override {
+    if (bounces_ && !requirements.geometryVolume)
+      return "bounces = true re-emits the light the geometry volume blocks, and there is no "
+             "geometry volume: set [occlusion] type = \"geometry_volume\" or bounces = false";
+    return {};
+  }
 
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override {
-    const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
     program_ = shaders.compute(
         scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
-        {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
-         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.geometryVolume)});
+        {SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
+         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.geometryVolume),
+         SpecConstant::b(4, bounces_)});
     scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
   }
@@ -59,6 +85,7 @@ public:
     if (gv) {
       glUniform1i(2, gv->firstOccludedIteration);
       gv->blocking.bindStorage(3);
+      if (bounces_) gv->albedo.bindStorage(4);
     }
     grid.accumulated.bindStorage(2);
     for (int i = 0; i < iterations_; ++i) {
@@ -80,6 +107,8 @@ public:
 private:
   int iterations_;
   bool scatter_;
+  bool bounces_;
+  double farFace_, sideFace_, damping_;
   Program program_;
   gl::Buffer scratch_;
 };

@@ -10,6 +10,11 @@
 //      step, resampled, becomes the cubic `current`.
 // A step moves light sqrt(2)/4 = 0.354 cube edges (the distance between neighbouring centroids),
 // so crossing a grid takes about 2.8 times the standard method's iterations.
+// Any SH order up to 3 (the lattice holds as many coefficients per cell as the grid). When an
+// occlusion strategy provides a geometry volume, each face's flux is multiplied by the GV's
+// transmittance where its direction crosses the shared face (thesis alg. 6.2 lines 11-14 on the
+// lattice), from the lattice step at which light has travelled the GV's firstOccludedIteration
+// cube edges on (tetFirstOccludedStep).
 //
 // | parameter  | type | default | meaning                                                     |
 // |------------|------|---------|-------------------------------------------------------------|
@@ -20,32 +25,40 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
 #include "framework/math/tetrahedral_solid_angles.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/propagation/tetrahedral_lattice.glsl"
+LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
 
 constexpr int kCellsPerCube = 12;
-constexpr int kFloatsPerCell = 3 * 4;  // RGB, SH order 1
 
 class TetrahedralPropagation final : public PropagationStrategy {
 public:
   explicit TetrahedralPropagation(Params& params)
       : iterations_(params.get<int>("iterations", 90, {.min = 0, .max = 16384})) {}
 
+  int maxShOrder() const override { return 3; }
+
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override {
-    (void)requirements;  // order 1 only: maxShOrder() refuses the rest
     const TetrahedralFaceSolidAngles angles = tetrahedralFaceSolidAngles();
-    split_ = shaders.compute("propagation/tetrahedral_split.comp", {});
+    const int coefficients = shared::shCoefficientCount(requirements.shOrder);
+    split_ = shaders.compute("propagation/tetrahedral_split.comp", {SpecConstant::i(0, coefficients)});
     gather_ = shaders.compute("propagation/tetrahedral_gather.comp",
                               {SpecConstant::f(0, float(angles.smallFace)),
-                               SpecConstant::f(1, float(angles.largeFace))});
-    merge_ = shaders.compute("propagation/tetrahedral_merge.comp", {});
-    const std::size_t bytes =
-        std::size_t(kCellsPerCube) * kFloatsPerCell * grid.cellCount() * sizeof(float);
+                               SpecConstant::f(1, float(angles.largeFace)),
+                               SpecConstant::i(2, coefficients),
+                               SpecConstant::b(3, requirements.geometryVolume)});
+    merge_ = shaders.compute("propagation/tetrahedral_merge.comp", {SpecConstant::i(0, coefficients)});
+    // The lattice holds 12 cells per cube, each with the light grid's coefficients.
+    const std::size_t bytes = std::size_t(kCellsPerCube) * LightGrid::bytesPerGrid(grid, requirements.shOrder);
     current_ = gl::Buffer(bytes, "tetrahedral lattice (current)");
     scratch_ = gl::Buffer(bytes, "tetrahedral lattice (propagation scratch)");
     sum_ = gl::Buffer(bytes, "tetrahedral lattice (sum of steps)");
@@ -67,7 +80,12 @@ public:
     gather_.use();
     glUniform3iv(0, 1, &res[0]);
     sum_.bindStorage(2);
+    // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
+    const GeometryVolume* gv = frame.geometryVolume;
+    if (gv) gv->blocking.bindStorage(3);
+    const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
     for (int i = 0; i < iterations_; ++i) {
+      if (gv) glUniform1i(1, i >= firstOccluded);
       current_.bindStorage(0);
       scratch_.bindStorage(1);
       dispatchCovering(cellDomain, group, GL_SHADER_STORAGE_BARRIER_BIT);
@@ -96,7 +114,8 @@ private:
 
 LPVLAB_REGISTER(PropagationStrategy, "tetrahedral",
                 "propagation on the BCC lattice's tetrahedra, four face neighbours each, "
-                "resampled from and to the cubic grid",
+                "resampled from and to the cubic grid, attenuated by the geometry volume when "
+                "there is one",
                 TetrahedralPropagation);
 
 }  // namespace

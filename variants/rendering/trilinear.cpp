@@ -13,6 +13,8 @@
 // | leak_damping  | float | 0.0     | strength k of the damping exp(-k g), g = the light's     |
 // |               |       |         | relative growth per cell towards the surface (0..16);    |
 // |               |       |         | 0 = off                                                  |
+// | scale         | float | 1.0     | the indirect light times this (0..100): a constant for   |
+// |               |       |         | `lpvlab fit` (docs/fitting.md)                           |
 
 #include "variants/rendering/trilinear_kernel.h"
 
@@ -20,6 +22,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
+#include "framework/pipeline/cascade.h"
 #include "framework/pipeline/frame.h"
 #include "framework/scene/scene.h"
 
@@ -29,6 +32,7 @@ TrilinearKernelOptions TrilinearKernelOptions::readDiffuse(Params& params) {
   TrilinearKernelOptions options;
   options.normalOffsetCells = params.get<float>("normal_offset", 0.0f, {.min = -2.0f, .max = 2.0f});
   options.leakDamping = params.get<float>("leak_damping", 0.0f, {.min = 0.0f, .max = 16.0f});
+  options.scale = params.get<float>("scale", 1.0f, {.min = 0.0f, .max = 100.0f});
   return options;
 }
 
@@ -41,19 +45,15 @@ void TrilinearKernelRendering::prepare(ShaderCompiler& shaders, const GridGeomet
 }
 
 void TrilinearKernelRendering::render(Frame& frame) {
-  const GridGeometry& grid = frame.lightGrid.geometry;
   // The camera is needed only by the glossy march (the view direction).
   const glm::vec3 cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f);
   program_.use();
   glBindTextureUnit(0, frame.gbuffer.position.id());
   glBindTextureUnit(1, frame.gbuffer.normal.id());
   glBindTextureUnit(2, frame.gbuffer.albedo.id());
-  frame.lightGrid.accumulated.bindStorage(0);
-  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glUniform3fv(0, 1, &grid.origin[0]);
-  glUniform1f(1, grid.cellSize);
-  glUniform3iv(2, 1, &grid.resolution[0]);
+  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUniform1f(3, options_.normalOffsetCells);
+  glUniform1f(10, options_.scale);
   // An option that is off is compiled out with its uniforms, which then must not be set.
   if (options_.leakDamping > 0.0f) glUniform1f(4, options_.leakDamping);
   if (options_.specularAlbedo > 0.0f) {
@@ -63,7 +63,17 @@ void TrilinearKernelRendering::render(Frame& frame) {
     glUniform1f(8, options_.marchStepCells);
     glUniform1i(9, options_.marchSamples);
   }
-  dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+  // One dispatch per cascade level, each adding its weighted share.
+  const std::span<const LightGrid> levels = frame.renderedLevels();
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    const GridGeometry& grid = levels[level].geometry;
+    levels[level].accumulated.bindStorage(0);
+    glUniform3fv(0, 1, &grid.origin[0]);
+    glUniform1f(1, grid.cellSize);
+    glUniform3iv(2, 1, &grid.resolution[0]);
+    setCascadeBlendUniforms(frame, int(level));
+    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+  }
 }
 
 namespace {

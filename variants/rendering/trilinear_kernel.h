@@ -14,12 +14,13 @@ class Params;
 struct TrilinearKernelOptions {
   float normalOffsetCells = 0.0f;   // normal_offset
   float leakDamping = 0.0f;         // leak_damping: 0 disables it (the kernel skips the slope)
+  float scale = 1.0f;               // scale: the indirect light times this (for lpvlab fit)
   float specularAlbedo = 0.0f;      // glossy only; 0 disables the march
   float phongExponent = 1.0f;
   float marchStepCells = 1.0f;
   int marchSamples = 0;
 
-  // normal_offset and leak_damping (both strategies).
+  // normal_offset, leak_damping and scale (both strategies).
   static TrilinearKernelOptions readDiffuse(Params& params);
   // The diffuse keys plus specular_albedo, exponent, step and max_distance ("glossy").
   static TrilinearKernelOptions readGlossy(Params& params);

@@ -1,0 +1,87 @@
+// `lpvlab fit FILE`: fits the strategy constants named by FILE's [fit] table to the path-traced
+// references of its views (docs/fitting.md), printing a line per iteration, and writes
+// DIR/fit.json and DIR/fitted.toml (framework/fit/fit_output.h).
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "framework/cli/commands.h"
+#include "framework/core/progress.h"
+#include "framework/fit/fit_output.h"
+#include "framework/gl/context.h"
+
+namespace lpvlab::cli {
+
+namespace {
+
+std::string parameterLine(const FitSpec& spec, const std::vector<double>& x) {
+  std::string out;
+  char buffer[64];
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    std::snprintf(buffer, sizeof buffer, "%.6g", x[j]);
+    out += (j ? ", " : "") + spec.parameters[j].key + "=" + buffer;
+  }
+  return out;
+}
+
+void printErrors(const char* when, const nlohmann::json& errors) {
+  for (const auto& view : errors) {
+    const auto& m = view["metrics"];
+    std::printf("  %-6s %-20s %-9s rmse %.5g  rel_mse %.5g  flip %.4f\n", when,
+                view["view"].get<std::string>().c_str(), view["held_out"].get<bool>() ? "held-out" : "fitted",
+                m["rmse"].get<double>(), m["rel_mse"].get<double>(), m["flip"].get<double>());
+  }
+}
+
+}  // namespace
+
+int fitCommand(const Options& options) {
+  const FitSpec spec = readFitSpec(options.experiment, options.overrides);
+  const std::string dir = options.out.empty()
+                              ? "runs/" + std::filesystem::path(options.experiment).stem().string() + "-fit"
+                              : options.out;
+  const toml::node* backend = spec.base.at_path("gl.backend").node();
+  const auto context = GlContext::create(backend && backend->is_string() ? backend->as_string()->get() : "auto");
+  std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
+            << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
+            << context->renderer() << "\n";
+  FitEvaluator evaluator(spec, makeFitViews(spec));
+  std::vector<double> initial;
+  for (const FitParameter& p : spec.parameters) initial.push_back(p.initial);
+  const nlohmann::json before = evaluator.errors(initial);
+
+  const auto start = std::chrono::steady_clock::now();
+  const FitResult result = runFit(evaluator, [&](const FitIteration& it) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double perIteration = it.iteration > 0 ? elapsed / it.iteration : -1.0;  // "?" first
+    std::fprintf(stderr, "fit: iteration %d/%d  cost %.6e  |gradient| %.3e  %s  %s  (%zu renderings, elapsed %s, at most %s more)\n",
+                 it.iteration, spec.maxIterations, it.cost, it.gradientMaxNorm,
+                 it.iteration == 0 ? "initial" : it.successful ? "step taken" : "step rejected",
+                 parameterLine(spec, it.x).c_str(), evaluator.evaluated().size(),
+                 ProgressBar::formatSeconds(elapsed).c_str(),
+                 ProgressBar::formatSeconds(perIteration * (spec.maxIterations - it.iteration)).c_str());
+  });
+  const nlohmann::json after = evaluator.errors(result.values);
+  writeFitOutputs(dir, spec, result, before, after);
+
+  std::printf("%s after %zu iterations, %d renderings, %s: %s\n",
+              result.converged ? "converged" : "NOT converged", result.log.empty() ? 0 : result.log.size() - 1,
+              result.renders, ProgressBar::formatSeconds(result.seconds).c_str(), result.termination.c_str());
+  for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
+    if (result.undetermined[j])
+      std::printf("  %-36s undetermined by the images (not fitted; initial %.6g)\n",
+                  spec.parameters[j].key.c_str(), spec.parameters[j].initial);
+    else
+      std::printf("  %-36s %.6g +- %.2g  (initial %.6g)%s\n", spec.parameters[j].key.c_str(),
+                  result.values[j], result.stdDev[j], spec.parameters[j].initial,
+                  result.atBound[j] ? "  at a bound: the uncertainty assumes it inactive" : "");
+  }
+  printErrors("before", before);
+  printErrors("after", after);
+  std::printf("wrote %s/{fit.json, fitted.toml}\n", dir.c_str());
+  return 0;
+}
+
+}  // namespace lpvlab::cli

@@ -1,0 +1,155 @@
+#include "framework/fit/fit_evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <ceres/loss_function.h>
+
+#include "framework/core/error.h"
+#include "framework/experiment/experiment.h"
+#include "framework/metrics/metrics.h"
+#include "framework/pipeline/pipeline.h"
+#include "framework/reference/reference_cache.h"
+
+namespace lpvlab {
+
+namespace {
+
+// x's values written into the view's table, as `-s key=value` would (keys are <stage>.<name>,
+// checked by readFitSpec).
+toml::table withParameters(const FitSpec& spec, const toml::table& table, const std::vector<double>& x) {
+  toml::table t = table;
+  for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
+    const std::string& key = spec.parameters[i].key;
+    const auto dot = key.find('.');
+    const std::string stage = key.substr(0, dot);
+    if (!t.contains(stage)) t.insert(stage, toml::table{});
+    toml::table* stageTable = t[stage].as_table();
+    if (!stageTable) throw Error(spec.file + ": key '" + stage + "': expected a table");
+    stageTable->insert_or_assign(key.substr(dot + 1), x[i]);
+  }
+  return t;
+}
+
+Image coverage(const Image& depth) {
+  Image mask(depth.width, depth.height, 1);
+  for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = depth.pixels[i] > 0.0f;
+  return mask;
+}
+
+std::unique_ptr<ceres::LossFunction> makeLoss(const FitSpec& spec) {
+  switch (spec.loss) {
+    case LossKind::Huber: return std::make_unique<ceres::HuberLoss>(spec.lossScale);
+    case LossKind::Cauchy: return std::make_unique<ceres::CauchyLoss>(spec.lossScale);
+    case LossKind::None: break;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<FitView> makeFitViews(const FitSpec& spec) {
+  std::vector<FitView> views;
+  for (const bool heldOut : {false, true})
+    for (const FitViewSpec& v : heldOut ? spec.heldOut : spec.views) {
+      FitView view{v.name, heldOut, spec.viewTable(v), {}};
+      Experiment e;
+      try {
+        e = loadExperiment(view.table, spec.file);
+      } catch (const Error& error) {
+        throw Error("view '" + v.name + "': " + error.what());
+      }
+      view.target = findAov(ensureReference(e.scene, e.camera, e.reference).aovs, "indirect1");
+      views.push_back(std::move(view));
+    }
+  return views;
+}
+
+FitEvaluator::FitEvaluator(const FitSpec& spec, std::vector<FitView> views)
+    : spec_(spec), views_(std::move(views)) {
+  for (const FitView& v : views_)
+    if (!v.heldOut) residualCount_ += 3 * v.target.width * v.target.height;
+  if (residualCount_ == 0) throw Error(spec.file + ": key 'fit.views': no views to fit on");
+}
+
+ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& x) {
+  evaluated_.push_back(x);
+  Experiment e;
+  try {
+    e = loadExperiment(withParameters(spec_, view.table, x), spec_.file);
+  } catch (const Error& error) {
+    throw Error("view '" + view.name + "': " + error.what());
+  }
+  if (e.settings.width != view.target.width || e.settings.height != view.target.height)
+    throw Error("view '" + view.name + "': the target is " + std::to_string(view.target.width) +
+                "x" + std::to_string(view.target.height) + ", the run " +
+                std::to_string(e.settings.width) + "x" + std::to_string(e.settings.height));
+  // The pipeline has no state across frames: the first frame is the one `lpvlab run` writes.
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders_);
+  pipeline.renderFrame();
+  const std::vector<NamedImage> aovs = pipeline.readOutputs();
+  ViewRender out{findAov(aovs, "indirect"), coverage(findAov(aovs, "depth"))};
+  for (float v : out.indirect.pixels)
+    if (!std::isfinite(v))
+      throw Error("view '" + view.name + "': the indirect image holds NaN or Inf at parameters " +
+                  nlohmann::json(x).dump());
+  return out;
+}
+
+long long FitEvaluator::viewResiduals(const FitView& view, const ViewRender& render, double* out) const {
+  const std::unique_ptr<ceres::LossFunction> loss = makeLoss(spec_);
+  const std::size_t pixels = std::size_t(view.target.width) * view.target.height;
+  long long covered = 0;
+  for (std::size_t p = 0; p < pixels; ++p) covered += render.mask.pixels[p] > 0.0f;
+  const double weight = covered > 0 ? 1.0 / std::sqrt(3.0 * double(covered)) : 0.0;
+  for (std::size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < 3; ++c) {
+      double& r = out[3 * p + c];
+      if (render.mask.pixels[p] <= 0.0f) {
+        r = 0.0;
+        continue;
+      }
+      const double a = render.indirect.pixels[3 * p + c], b = view.target.pixels[3 * p + c];
+      switch (spec_.residual) {
+        case ResidualKind::Linear: r = a - b; break;
+        case ResidualKind::Relative: r = (a - b) / std::sqrt(b * b + spec_.epsilon); break;
+        case ResidualKind::Log:
+          r = std::log(std::max(a, 0.0) + spec_.epsilon) - std::log(std::max(b, 0.0) + spec_.epsilon);
+          break;
+      }
+      r *= weight;
+      if (loss) {
+        double rho[3];
+        loss->Evaluate(r * r, rho);
+        r = std::copysign(std::sqrt(rho[0]), r);
+      }
+    }
+  return 3 * covered;
+}
+
+void FitEvaluator::residuals(const std::vector<double>& x, double* out) {
+  covered_ = 0;
+  for (const FitView& view : views_) {
+    if (view.heldOut) continue;
+    covered_ += viewResiduals(view, render(view, x), out);
+    out += 3 * std::size_t(view.target.width) * view.target.height;
+  }
+}
+
+nlohmann::json FitEvaluator::errors(const std::vector<double>& x) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const FitView& view : views_) {
+    const ViewRender r = render(view, x);
+    std::vector<double> residuals(3 * std::size_t(view.target.width) * view.target.height);
+    viewResiduals(view, r, residuals.data());
+    double cost = 0.0;
+    for (double v : residuals) cost += 0.5 * v * v;
+    out.push_back({{"view", view.name},
+                   {"held_out", view.heldOut},
+                   {"cost", cost},
+                   {"metrics", computeMetrics(r.indirect, view.target, &r.mask).toJson()}});
+  }
+  return out;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,122 @@
+#include "framework/fit/fit_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "framework/io/atomic_file.h"
+#include "framework/io/provenance.h"
+
+namespace lpvlab {
+
+namespace {
+
+// Enough digits to read the double back exactly, and always a TOML float ("1.0", not "1").
+std::string realText(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  std::string s = buffer;
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string shortText(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  return buffer;
+}
+
+nlohmann::json finiteOrNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+std::string fittedToml(const FitSpec& spec, const FitResult& result) {
+  std::map<std::string, std::string> stages;  // stage -> its lines
+  std::string undetermined;
+  for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
+    const std::string& key = spec.parameters[j].key;
+    const auto dot = key.find('.');
+    if (result.undetermined[j]) {
+      undetermined += (undetermined.empty() ? "" : ", ") + key;
+      continue;
+    }
+    stages[key.substr(0, dot)] += key.substr(dot + 1) + " = " + realText(result.values[j]) +
+                                  "   # +- " + shortText(result.stdDev[j]) + " (1 sigma)" +
+                                  (result.atBound[j] ? ", at a bound of the fit" : "") + "\n";
+  }
+  std::ostringstream s;
+  s << "# Fitted by lpvlab fit " << std::filesystem::absolute(spec.file).lexically_normal().string()
+    << " (" << utcTimestamp() << "): " << (result.converged ? "converged" : "NOT converged") << ", "
+    << result.termination << "\n"
+    << "# Use it in an experiment: include = [\"fitted.toml\"] (a path relative to that file).\n";
+  if (!undetermined.empty())
+    s << "# Undetermined by the images, hence left out: " << undetermined << "\n";
+  for (const auto& [stage, lines] : stages) s << "\n[" << stage << "]\n" << lines;
+  return s.str();
+}
+
+nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohmann::json& before,
+                       const nlohmann::json& after) {
+  nlohmann::json parameters = nlohmann::json::array();
+  for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
+    const FitParameter& p = spec.parameters[j];
+    parameters.push_back({{"key", p.key},
+                          {"initial", p.initial},
+                          {"lower", finiteOrNull(p.lower > -1e300 ? p.lower : NAN)},
+                          {"upper", finiteOrNull(p.upper < 1e300 ? p.upper : NAN)},
+                          {"value", result.values[j]},
+                          {"std_dev", finiteOrNull(result.stdDev[j])},
+                          {"undetermined", bool(result.undetermined[j])},
+                          {"at_bound", bool(result.atBound[j])}});
+  }
+  nlohmann::json log = nlohmann::json::array();
+  for (const FitIteration& it : result.log)
+    log.push_back({{"iteration", it.iteration}, {"cost", it.cost},
+                   {"gradient_max_norm", it.gradientMaxNorm}, {"step_norm", it.stepNorm},
+                   {"step_successful", it.successful}, {"seconds", it.seconds}, {"x", it.x}});
+  nlohmann::json views = nlohmann::json::array(), heldOut = nlohmann::json::array();
+  for (const FitViewSpec& v : spec.views) views.push_back(v.name);
+  for (const FitViewSpec& v : spec.heldOut) heldOut.push_back(v.name);
+  return {{"lpvlab_version", LPVLAB_VERSION},
+          {"experiment_file", std::filesystem::absolute(spec.file).lexically_normal().string()},
+          {"created_utc", utcTimestamp()},
+          {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+          {"settings", {{"residual", residualName(spec.residual)}, {"epsilon", spec.epsilon},
+                        {"loss", lossName(spec.loss)}, {"loss_scale", spec.lossScale},
+                        {"step", spec.relativeStep}, {"max_iterations", spec.maxIterations},
+                        {"rank_tolerance", spec.rankTolerance},
+                        {"derivatives", "central differences through the GL pipeline"},
+                        {"covariance", "Ceres DENSE_SVD, scaled by 2 cost / (n - p)"}}},
+          {"views", views},
+          {"held_out", heldOut},
+          {"parameters", parameters},
+          {"undetermined", [&] {
+             nlohmann::json u = nlohmann::json::array();
+             for (std::size_t j = 0; j < spec.parameters.size(); ++j)
+               if (result.undetermined[j]) u.push_back(spec.parameters[j].key);
+             return u;
+           }()},
+          {"singular_values", result.singularValues},
+          {"initial_cost", result.initialCost},
+          {"final_cost", result.finalCost},
+          {"covered_residuals", result.coveredResiduals},
+          {"converged", result.converged},
+          {"termination", result.termination},
+          {"renders", result.renders},
+          {"seconds", result.seconds},
+          {"convergence", log},
+          {"error_before", before},
+          {"error_after", after}};
+}
+
+void writeFitOutputs(const std::string& dir, const FitSpec& spec, const FitResult& result,
+                     const nlohmann::json& before, const nlohmann::json& after) {
+  const std::filesystem::path d(dir);
+  std::filesystem::create_directories(d);
+  writeTextAtomically((d / "fitted.toml").string(), fittedToml(spec, result));
+  writeTextAtomically((d / "fit.json").string(), fitJson(spec, result, before, after).dump(2) + "\n");
+}
+
+}  // namespace lpvlab

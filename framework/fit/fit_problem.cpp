@@ -1,0 +1,224 @@
+#include "framework/fit/fit_problem.h"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+#include <Eigen/Dense>
+#include <ceres/ceres.h>
+
+#include "framework/core/error.h"
+
+namespace lpvlab {
+
+namespace {
+
+// The magnitude that makes a parameter's step and its Jacobian column unit-free.
+double magnitude(const FitParameter& p, double x) {
+  const double m = std::max(std::abs(x), std::abs(p.initial));
+  return m > 0.0 ? m : 1.0;
+}
+
+// All views' residuals as one block of one-scalar parameter blocks (one per fitted parameter,
+// so each can have bounds and be held constant), differentiated by bounded central differences
+// (fit_problem.h). An Error of the pipeline is kept and rethrown after the solve: Ceres sees a
+// failed evaluation, never an exception.
+class ImageCost final : public ceres::CostFunction {
+public:
+  explicit ImageCost(FitEvaluator& evaluator) : evaluator_(evaluator) {
+    set_num_residuals(evaluator.residualCount());
+    for (std::size_t i = 0; i < evaluator.spec().parameters.size(); ++i)
+      mutable_parameter_block_sizes()->push_back(1);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    try {
+      evaluate(parameters, residuals, jacobians);
+      return true;
+    } catch (const std::exception&) {
+      if (!error_) error_ = std::current_exception();
+      return false;
+    }
+  }
+
+  void rethrow() const {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+private:
+  // Ceres evaluates the same point several times (with and without the Jacobian, and again
+  // for the covariance): the last point's residuals and Jacobian columns are kept.
+  void evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+    const std::vector<FitParameter>& spec = evaluator_.spec().parameters;
+    std::vector<double> x(spec.size());
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = parameters[j][0];
+    const std::size_t n = std::size_t(num_residuals());
+    if (x != x_) {
+      x_.clear();  // until the residuals are complete
+      r_.resize(n);
+      evaluator_.residuals(x, r_.data());
+      columns_.assign(x.size(), {});
+      x_ = x;
+    }
+    std::copy(r_.begin(), r_.end(), residuals);
+    if (!jacobians) return;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      if (!jacobians[j]) continue;
+      if (columns_[j].empty()) columns_[j] = column(x, j);
+      std::copy(columns_[j].begin(), columns_[j].end(), jacobians[j]);
+    }
+  }
+
+  std::vector<double> column(const std::vector<double>& x, std::size_t j) const {
+    const FitParameter& p = evaluator_.spec().parameters[j];
+    const std::size_t n = std::size_t(num_residuals());
+    const double step = p.step > 0.0 ? p.step : evaluator_.spec().relativeStep;
+    const double h = step * magnitude(p, x[j]);
+    const double hi = std::min(x[j] + h, p.upper), lo = std::max(x[j] - h, p.lower);
+    std::vector<double> plus = r_, minus = r_, at = x, out(n);
+    at[j] = hi;
+    if (hi > x[j]) evaluator_.residuals(at, plus.data());
+    at[j] = lo;
+    if (lo < x[j]) evaluator_.residuals(at, minus.data());
+    for (std::size_t i = 0; i < n; ++i) out[i] = (plus[i] - minus[i]) / (hi - lo);
+    return out;
+  }
+
+  FitEvaluator& evaluator_;
+  mutable std::exception_ptr error_;
+  mutable std::vector<double> x_, r_;               // the last point evaluated, its residuals
+  mutable std::vector<std::vector<double>> columns_;  // and its Jacobian columns (empty: not yet)
+};
+
+class LogCallback final : public ceres::IterationCallback {
+public:
+  LogCallback(const std::vector<double>& x, FitResult& result,
+              const std::function<void(const FitIteration&)>& onIteration)
+      : x_(x), result_(result), onIteration_(onIteration) {}
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    FitIteration it{s.iteration, s.cost, s.gradient_max_norm, s.step_norm, s.step_is_successful,
+                    s.cumulative_time_in_seconds, x_};
+    result_.log.push_back(it);
+    if (onIteration_) onIteration_(it);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+private:
+  const std::vector<double>& x_;
+  FitResult& result_;
+  const std::function<void(const FitIteration&)>& onIteration_;
+};
+
+// Marks the parameters along directions the scaled Jacobian does not determine (fit_problem.h);
+// returns the singular values, largest first.
+std::vector<double> findUndetermined(ImageCost& cost, FitEvaluator& evaluator,
+                                     const std::vector<double>& x, std::vector<bool>& undetermined) {
+  const std::vector<FitParameter>& spec = evaluator.spec().parameters;
+  const std::size_t n = std::size_t(cost.num_residuals()), p = x.size();
+  std::vector<double> residuals(n);
+  Eigen::MatrixXd columns(n, p);  // column-major: column j is parameter j's Jacobian
+  std::vector<const double*> blocks(p);
+  std::vector<double*> jacobians(p);
+  for (std::size_t j = 0; j < p; ++j) blocks[j] = &x[j], jacobians[j] = columns.col(Eigen::Index(j)).data();
+  if (!cost.Evaluate(blocks.data(), residuals.data(), jacobians.data())) cost.rethrow();
+  for (std::size_t j = 0; j < p; ++j) columns.col(Eigen::Index(j)) *= magnitude(spec[j], x[j]);
+  // The singular values of J are the square roots of the eigenvalues of J^T J (p x p, small).
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(columns.transpose() * columns);
+  std::vector<double> singular;
+  for (Eigen::Index k = Eigen::Index(p); k-- > 0;)
+    singular.push_back(std::sqrt(std::max(0.0, eigen.eigenvalues()[k])));
+  const double largest = singular.empty() ? 0.0 : singular.front();
+  undetermined.assign(p, false);
+  for (Eigen::Index k = 0; k < Eigen::Index(p); ++k) {
+    const double s = std::sqrt(std::max(0.0, eigen.eigenvalues()[k]));
+    if (largest > 0.0 && s > evaluator.spec().rankTolerance * largest) continue;
+    for (std::size_t j = 0; j < p; ++j)
+      if (std::abs(eigen.eigenvectors()(Eigen::Index(j), k)) > 0.1) undetermined[j] = true;
+  }
+  return singular;
+}
+
+}  // namespace
+
+FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIteration&)>& onIteration) {
+  const auto start = std::chrono::steady_clock::now();
+  const FitSpec& spec = evaluator.spec();
+  const std::size_t p = spec.parameters.size();
+  FitResult result;
+  for (const FitParameter& parameter : spec.parameters) result.initial.push_back(parameter.initial);
+  std::vector<double> x = result.initial;
+
+  ImageCost cost(evaluator);
+  ceres::Problem::Options problemOptions;
+  problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problemOptions);
+  std::vector<double*> blocks;
+  for (double& v : x) blocks.push_back(&v);
+  problem.AddResidualBlock(&cost, nullptr, blocks);
+  for (std::size_t j = 0; j < p; ++j) {
+    if (spec.parameters[j].lower > -1e300) problem.SetParameterLowerBound(blocks[j], 0, spec.parameters[j].lower);
+    if (spec.parameters[j].upper < 1e300) problem.SetParameterUpperBound(blocks[j], 0, spec.parameters[j].upper);
+  }
+
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = spec.maxIterations;
+  options.num_threads = 1;  // one GL context, used from this thread only
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  options.update_state_every_iteration = true;  // the log records x after each iteration
+  // With bounds, Ceres follows a step that leaves them with a projected Armijo line search; its
+  // default cubic interpolation asks for the gradient (1 + 2p renderings per view) at every trial
+  // point, bisection only for the cost (1 per view).
+  options.line_search_interpolation_type = ceres::BISECTION;
+  LogCallback callback(x, result, onIteration);
+  options.callbacks.push_back(&callback);
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  cost.rethrow();
+  result.values = x;
+  result.initialCost = summary.initial_cost;
+  result.finalCost = summary.final_cost;
+  result.termination = summary.message;
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+
+  for (std::size_t j = 0; j < p; ++j)
+    result.atBound.push_back(x[j] == spec.parameters[j].lower || x[j] == spec.parameters[j].upper);
+  result.singularValues = findUndetermined(cost, evaluator, x, result.undetermined);
+  result.coveredResiduals = evaluator.coveredResiduals();
+  result.stdDev.assign(p, std::numeric_limits<double>::quiet_NaN());
+  std::vector<const double*> determined;
+  for (std::size_t j = 0; j < p; ++j) {
+    if (result.undetermined[j]) problem.SetParameterBlockConstant(blocks[j]);
+    else determined.push_back(blocks[j]);
+  }
+  const long long dof = result.coveredResiduals - (long long)determined.size();
+  if (!determined.empty() && dof > 0) {
+    ceres::Covariance::Options covarianceOptions;
+    covarianceOptions.algorithm_type = ceres::DENSE_SVD;
+    covarianceOptions.num_threads = 1;
+    ceres::Covariance covariance(covarianceOptions);
+    std::vector<std::pair<const double*, const double*>> pairs;
+    for (const double* b : determined) pairs.push_back({b, b});
+    const bool computed = covariance.Compute(pairs, &problem);
+    cost.rethrow();
+    if (!computed)
+      throw Error(spec.file + ": the covariance of the fitted parameters could not be computed "
+                  "(rank-deficient beyond rank_tolerance = " + std::to_string(spec.rankTolerance) +
+                  "; raise it)");
+    const double variance = 2.0 * result.finalCost / double(dof);
+    for (std::size_t j = 0; j < p; ++j) {
+      if (result.undetermined[j]) continue;
+      double c = 0.0;
+      covariance.GetCovarianceBlock(blocks[j], blocks[j], &c);
+      result.stdDev[j] = std::sqrt(std::max(0.0, c * variance));
+    }
+  }
+  result.renders = int(evaluator.evaluated().size());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,65 @@
+#pragma once
+// The fit: bounded nonlinear least squares over the evaluator's residuals (Ceres Solver 2.1,
+// Levenberg-Marquardt with dense QR), derivatives by central differences through the GL
+// pipeline, then the parameters' uncertainty from Ceres's covariance (DENSE_SVD).
+//
+// Central differences: the Jacobian column of parameter j is (r(x + h e_j) - r(x - h e_j)) / 2h
+// with h = step * max(|x_j|, |initial_j|) (step * 1 when both are 0; `step` the parameter's own
+// when it gives one, else the fit's); at a bound the difference
+// is one-sided, so no rendering ever sees a value outside the bounds. Why step = 1e-3 by default:
+// the images are float32, so a rendering carries rounding noise of about 1e-6 of its value, which
+// a difference divides by h (1e-3 relative error of the derivative at h = 1e-3, 1e-1 at Ceres's
+// default 1e-6), while the truncation error grows as h^2 (about (h k)^2 / 6 for a damping
+// raised to the k-th power over k iterations: 2e-4 at k = 32). 1e-3 balances the two. A
+// parameter that acts in steps (the injection shift moves each VPL into the cell it lands in,
+// so small shifts change nothing) needs a step of its own wide enough to cross cells.
+//
+// Undetermined parameters: the Jacobian at the solution, each column scaled by its parameter's
+// magnitude (max(|x_j|, |initial_j|), 1 when both are 0) so that the test does not depend on
+// units, is decomposed (SVD); each singular value below rank_tolerance times the largest is a
+// direction the images do not determine, and every parameter with a component above 0.1 along
+// such a direction is reported undetermined (its value is not returned as fitted). The others'
+// covariance is Ceres's (J^T J)^-1 (DENSE_SVD) with the undetermined ones held constant, scaled
+// by the residual variance s^2 = 2 cost / (n - p) (n covered residuals, p determined parameters).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/fit/fit_evaluator.h"
+
+namespace lpvlab {
+
+struct FitIteration {
+  int iteration = 0;
+  double cost = 0.0;              // half the sum of squared residuals
+  double gradientMaxNorm = 0.0;
+  double stepNorm = 0.0;
+  bool successful = false;        // the step was taken
+  double seconds = 0.0;           // since the solve started
+  std::vector<double> x;          // parameter values after the iteration
+};
+
+struct FitResult {
+  std::vector<double> initial, values;
+  std::vector<double> stdDev;     // NaN for undetermined parameters
+  std::vector<bool> undetermined;
+  // At a bound, where the standard deviation (which assumes the bound inactive) says little.
+  std::vector<bool> atBound;
+  std::vector<double> singularValues;  // of the scaled Jacobian, largest first
+  double initialCost = 0.0, finalCost = 0.0;
+  long long coveredResiduals = 0;
+  std::string termination;        // Ceres's message
+  bool converged = false;
+  int renders = 0;                // view renderings done by the solve and the covariance
+  double seconds = 0.0;
+  std::vector<FitIteration> log;
+};
+
+// Runs the fit; `onIteration` is called after each iteration (for progress lines).
+FitResult runFit(FitEvaluator& evaluator,
+                 const std::function<void(const FitIteration&)>& onIteration = {});
+
+}  // namespace lpvlab

@@ -1,0 +1,40 @@
+#pragma once
+// Cascaded light grids (thesis 5.1, [cascades] in an experiment): the levels' placement is
+// framework/math/cascade_placement.h; this file has what the pipeline and rendering kernels do with
+// them. The pipeline runs occlusion, injection and propagation once per level (each level is an
+// independent LPV of its region, with its own GV and normal grid when those exist), optionally
+// carries each level's injected light into its parent before propagation, and calls rendering
+// strategies once: they read every level (Frame::renderedLevels) and weight each by
+// shaders/common/cascade_blend.glsl, whose uniforms setCascadeBlendUniforms binds.
+
+#include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/light_grid.h"
+
+namespace lpvlab {
+
+struct Frame;
+
+struct CascadeSettings {
+  int levels = 1;           // 1: one grid, fitted to the scene (no camera following)
+  float blendCells = 2.0f;  // width of the band, in cells of the finer level, where two levels mix
+  float viewShift = 0.25f;  // a finer level's centre: the eye moved this fraction of its extent
+                            // along the view direction
+  bool carry = true;        // parents propagate their children's injected light (restrict.comp)
+};
+
+// Binds the uniforms of shaders/common/cascade_blend.glsl for a kernel (in use) that renders
+// `level` of frame.renderedLevels().
+void setCascadeBlendUniforms(const Frame& frame, int level);
+
+// Replaces the injected light (`current`) of `parent` inside `child` by the child's, summed over
+// each parent cell's 2x2x2 children (shaders/cascade/restrict.comp).
+class CascadeCarry {
+public:
+  CascadeCarry(ShaderCompiler& shaders, int shOrder);
+  void carry(const LightGrid& child, LightGrid& parent) const;
+
+private:
+  Program program_;
+};
+
+}  // namespace lpvlab

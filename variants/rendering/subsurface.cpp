@@ -1,0 +1,226 @@
+// Rendering "subsurface": the subsurface-scattering LPV (thesis 5.4, 6.9.4). What it does, its
+// parameters and its units: subsurface.h; the mathematics: docs/variants.md#subsurface.
+
+#include "variants/rendering/subsurface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include <toml++/toml.h>
+
+#include "framework/core/error.h"
+#include "framework/core/parameters.h"
+#include "framework/gl/dispatch.h"
+#include "framework/math/bounds.h"
+#include "framework/math/grid_geometry.h"
+#include "framework/math/shared.h"
+#include "framework/math/solid_angle.h"
+#include "framework/pipeline/light_views.h"
+#include "framework/pipeline/raster_passes.h"
+#include "framework/pipeline/scene_gpu.h"
+#include "framework/scene/scene.h"
+
+namespace lpvlab {
+
+namespace {
+
+// The RSM injection as an experiment would create it, with shift 0: the thesis injects the
+// SSLPV's VPLs at their surface (step 2), and this RSM already stores the inward normals.
+std::unique_ptr<InjectionStrategy> unshiftedRsmInjection() {
+  toml::table table;
+  table.insert("shift", 0.0);
+  Params params(table, "rendering \"subsurface\"", "injection");
+  std::unique_ptr<InjectionStrategy> injection =
+      Registry<InjectionStrategy>::instance().create(params, "rsm_vpl");
+  params.finish();
+  return injection;
+}
+
+std::string materialList(const std::vector<const Material*>& materials) {
+  std::string names;
+  for (const Material* m : materials)
+    names += (names.empty() ? "'" : ", '") + m->name + "' (" + std::to_string(m->extinction) + "/m)";
+  return names;
+}
+
+}  // namespace
+
+SubsurfaceRendering::SubsurfaceRendering(Params& params)
+    : resolution_(params.get<int>("resolution", 16, {.min = 2, .max = 256})),
+      iterations_(params.get<int>("iterations", 16, {.min = 0, .max = 4096})),
+      rsmResolution_(params.get<int>("rsm_resolution", 128, {.min = 1, .max = 4096})),
+      marginCells_(params.get<float>("margin", 1.0f, {.min = 0.0f, .max = 16.0f})) {}
+
+SubsurfaceRendering::~SubsurfaceRendering() = default;
+
+float SubsurfaceRendering::stepAttenuation(float extinction, float cellSize) {
+  return float(std::exp(-double(extinction) * double(cellSize)));
+}
+
+void SubsurfaceRendering::prepare(ShaderCompiler& shaders, const GridGeometry& grid,
+                                  const Requirements& requirements) {
+  shOrder_ = requirements.shOrder;
+  const int coefficients = shared::shCoefficientCount(shOrder_);
+  const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+  rsmProgram_ = shaders.graphics("raster/scene.vert", "subsurface/rsm.frag");
+  maskProgram_ = shaders.graphics("raster/scene.vert", "subsurface/mask.frag");
+  propagateProgram_ = shaders.compute(
+      "subsurface/propagate.comp",
+      {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
+       SpecConstant::i(2, coefficients)});
+  renderProgram_ = shaders.compute("subsurface/render.comp", {SpecConstant::i(0, coefficients)});
+  // The SSLPV has no normal grid, GV or cascade of its own, whatever the main LPV has.
+  Requirements own;
+  own.shOrder = shOrder_;
+  injection_ = unshiftedRsmInjection();
+  injection_->prepare(shaders, grid, own);
+}
+
+void SubsurfaceRendering::allocateGrid(const GridGeometry& geometry, float extinction) {
+  grid_ = LightGrid(geometry, shOrder_);
+  scratch_ = gl::Buffer(grid_.bytesPerGrid(), "subsurface LPV (propagation scratch)");
+  attenuation_ = stepAttenuation(extinction, geometry.cellSize);
+}
+
+bool SubsurfaceRendering::setUp(const Frame& frame) {
+  if (!frame.scene) throw Error("rendering \"subsurface\": the frame has no scene to rasterise");
+  scene_ = frame.scene;
+  const std::vector<Material>& materials = frame.scene->materials();
+  std::vector<const Material*> translucent;
+  Bounds bounds;
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    const Bounds& own = frame.scene->materialBounds(int(m));
+    if (!materials[m].translucent() || own.empty()) continue;
+    translucent.push_back(&materials[m]);
+    bounds.extend(own.min);
+    bounds.extend(own.max);
+  }
+  active_ = !translucent.empty();
+  if (!active_) return false;
+  const auto differs = [&](const Material* m) { return m->extinction != translucent[0]->extinction; };
+  if (std::any_of(translucent.begin(), translucent.end(), differs))
+    throw Error("rendering \"subsurface\": the translucent materials " + materialList(translucent) +
+                " differ in extinction; one subsurface LPV has one attenuation per step, so give "
+                "them one extinction in [[materials]]");
+  allocateGrid(GridGeometry::fitted(bounds, resolution_, marginCells_), translucent[0]->extinction);
+
+  std::vector<glm::vec4> records;
+  for (const Material& m : materials) records.emplace_back(m.transmittance, m.extinction);
+  translucency_ = gl::Buffer(records.size() * sizeof(glm::vec4), "subsurface translucency",
+                             records.data());
+
+  // The RSM: one layer per light view of the main light maps, with their view matrices.
+  const int views = frame.lightMaps.views, r = rsmResolution_;
+  std::vector<GpuView> viewRecords(static_cast<std::size_t>(views));
+  frame.lightMaps.viewRecords.download(viewRecords.data(), viewRecords.size() * sizeof(GpuView));
+  rsmClipFromWorld_.clear();
+  for (const GpuView& view : viewRecords) rsmClipFromWorld_.push_back(view.clipFromWorld);
+  rsm_ = LightMaps();
+  rsm_.views = views;
+  rsm_.rsmResolution = r;
+  rsm_.lightCount = frame.lightMaps.lightCount;
+  rsmFramebuffers_ = allocateRsm(rsm_, r, views, "subsurface rsm");
+
+  const int w = frame.gbuffer.width, h = frame.gbuffer.height;
+  mask_ = gl::Texture(GL_TEXTURE_2D, GL_R8, w, h, 1, "subsurface mask");
+  maskDepth_ = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, "subsurface mask depth");
+  maskFramebuffer_.emplace();
+  maskFramebuffer_->attach(GL_COLOR_ATTACHMENT0, mask_);
+  maskFramebuffer_->attach(GL_DEPTH_ATTACHMENT, maskDepth_);
+  maskFramebuffer_->checkComplete("subsurface mask");
+  checkGl("subsurface LPV setup");
+  return true;
+}
+
+void SubsurfaceRendering::renderRsm(const Frame& frame) {
+  rsmProgram_.use();
+  frame.lightMaps.lightRecords.bindStorage(1);
+  frame.lightMaps.viewRecords.bindStorage(2);
+  translucency_.bindStorage(3);
+  glUniform1i(3, rsm_.rsmResolution);
+  for (int layer = 0; layer < rsm_.views; ++layer) {
+    beginRaster(rsmFramebuffers_[std::size_t(layer)], rsm_.rsmResolution, rsm_.rsmResolution, 3);
+    glUniformMatrix4fv(0, 1, GL_FALSE, &rsmClipFromWorld_[std::size_t(layer)][0][0]);
+    glUniform1i(2, layer);
+    frame.scene->draw();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SubsurfaceRendering::inject(const Frame& frame) {
+  grid_.current.zero();
+  Frame own{.scene = frame.scene,
+            .camera = frame.camera,
+            .gbuffer = frame.gbuffer,
+            .lightMaps = rsm_,
+            .lightGrid = grid_,
+            .indirect = frame.indirect};
+  injection_->inject(own);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The accumulated light starts as the injected light, as in the main LPV.
+  glCopyNamedBufferSubData(grid_.current.id(), grid_.accumulated.id(), 0, 0,
+                           GLsizeiptr(grid_.bytesPerGrid()));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void SubsurfaceRendering::propagate() {
+  propagateProgram_.use();
+  glUniform3iv(0, 1, &grid_.geometry.resolution[0]);
+  glUniform1f(1, attenuation_);
+  grid_.accumulated.bindStorage(2);
+  for (int i = 0; i < iterations_; ++i) {
+    grid_.current.bindStorage(0);
+    scratch_.bindStorage(1);
+    dispatchCovering(grid_.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+    std::swap(grid_.current, scratch_);
+  }
+}
+
+void SubsurfaceRendering::shade(Frame& frame) {
+  if (!frame.camera) throw Error("rendering \"subsurface\": the frame has no camera");
+  const int w = frame.gbuffer.width, h = frame.gbuffer.height;
+  beginRaster(*maskFramebuffer_, w, h, 1);
+  maskProgram_.use();
+  const glm::mat4 clip = cameraClipFromWorld(*frame.camera, w, h);
+  glUniformMatrix4fv(0, 1, GL_FALSE, &clip[0][0]);
+  translucency_.bindStorage(3);
+  frame.scene->draw();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  const GridGeometry& g = grid_.geometry;
+  renderProgram_.use();
+  glBindTextureUnit(0, frame.gbuffer.position.id());
+  glBindTextureUnit(1, frame.gbuffer.normal.id());
+  glBindTextureUnit(2, mask_.id());
+  grid_.accumulated.bindStorage(0);
+  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUniform3fv(0, 1, &g.origin[0]);
+  glUniform1f(1, g.cellSize);
+  glUniform3iv(2, 1, &g.resolution[0]);
+  dispatchCovering({w, h, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+}
+
+void SubsurfaceRendering::render(Frame& frame) {
+  if (frame.scene != scene_) setUp(frame);
+  if (!active_) return;
+  renderRsm(frame);
+  inject(frame);
+  propagate();
+  shade(frame);
+}
+
+std::size_t SubsurfaceRendering::memoryBytes() const {
+  if (!active_) return 0;
+  return grid_.memoryBytes() + scratch_.size() + translucency_.size() + rsm_.memoryBytes() +
+         mask_.bytes() + maskDepth_.bytes();
+}
+
+LPVLAB_REGISTER(RenderingStrategy, "subsurface",
+                "subsurface-scattering LPV: light transmitted into translucent materials, "
+                "propagated with attenuation, read at their surfaces (thesis 5.4); for "
+                "[[rendering.also]]",
+                SubsurfaceRendering);
+
+}  // namespace lpvlab
