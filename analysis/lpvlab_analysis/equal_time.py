@@ -95,12 +95,13 @@ def _groups(agg):
 def compare(agg, metric):
     """One row per configuration (baseline ones included, their ratios at equal settings are 1):
 
-    scene, config_name, name (the series label, else config_name), baseline (bool), resolution, total ms, propagation ms, error,
+    scene, config_id, config_name, name (the series label, else config_name), baseline (bool),
+    resolution, total ms, propagation ms, error,
     settings error (the baseline's at the same resolution; NaN when the series lacks it),
     settings ratio, time error (the baseline's at equal time), time ratio, time status
     ("" or why there is no value). Empty DataFrame when the metric or time column is absent.
     """
-    cols = ["scene", "config_name", "name", "baseline", "resolution", "total ms", "propagation ms",
+    cols = ["scene", "config_id", "config_name", "name", "baseline", "resolution", "total ms", "propagation ms",
             "error", "settings error", "settings ratio", "time error", "time ratio", "time status"]
     if metric not in agg.columns or TIME_COL not in agg.columns:
         return pd.DataFrame(columns=cols)
@@ -122,7 +123,8 @@ def compare(agg, metric):
             else:
                 t_err, status = error_at_time(points, r[TIME_COL])
             rows.append({
-                "scene": scene, "config_name": str(r["config_name"]), "name": _name(r),
+                "scene": scene, "config_id": str(r["config_id"]), "config_name": str(r["config_name"]),
+                "name": _name(r),
                 "baseline": bool(base_mask.loc[idx]), "resolution": res,
                 "total ms": float(r[TIME_COL]),
                 "propagation ms": float(r.get("gpu_ms.propagation", math.nan)),

@@ -81,6 +81,19 @@ inline Grid randomFloats(std::size_t n, std::mt19937& random, float low = -1.0f,
   return v;
 }
 
+// Blocking potential of random surfels for a GV of `gvCells` cells (order 1, 4 floats per cell,
+// coefficient-major): c0 in [0, 0.6], the linear part smaller, so that 1 - B ranges over (0, 1]
+// and the clamp sometimes acts.
+inline Grid randomBlocking(int gvCells, std::mt19937& random) {
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  Grid blocking(std::size_t(4) * gvCells);
+  for (int i = 0; i < gvCells; ++i) {
+    blocking[i] = 0.3f * (uniform(random) + 1.0f);
+    for (int k = 1; k < 4; ++k) blocking[std::size_t(k) * gvCells + i] = 0.4f * uniform(random);
+  }
+  return blocking;
+}
+
 // Every float of `gpu` within relative * maxAbs(expected) of `expected` (the first few misses
 // reported, named `what`).
 inline void expectClose(const Grid& gpu, const Grid& expected, double relative, const char* what) {

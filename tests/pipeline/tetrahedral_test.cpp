@@ -186,15 +186,7 @@ void gpuMatchesTheCpp(int order, bool withGv) {
   const int firstOccludedStep = shared::tetFirstOccludedStep(1);
   if (withGv) {
     ASSERT_EQ(firstOccludedStep, 3);
-    // Blocking potential of random surfels: c0 in [0, 0.6], the linear part smaller, so that
-    // 1 - B ranges over (0, 1] and the clamp sometimes acts.
-    std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
-    const int gvCells = shared::cellCount(l.cubes.res + 1);
-    std::vector<float> blocking(std::size_t(4) * gvCells);
-    for (int i = 0; i < gvCells; ++i) {
-      blocking[i] = 0.3f * (uniform(random) + 1.0f);
-      for (int k = 1; k < 4; ++k) blocking[std::size_t(k) * gvCells + i] = 0.4f * uniform(random);
-    }
+    const std::vector<float> blocking = test::randomBlocking(shared::cellCount(l.cubes.res + 1), random);
     shared::gvBlocking.assign(blocking.begin(), blocking.end());
     rig.loadGv(blocking, 1);
   }
