@@ -3,6 +3,8 @@
 // recovers the constant within its reported uncertainty, keeps to its bounds, and reports a
 // parameter without effect as undetermined.
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -110,9 +112,11 @@ TEST(FitConstants, TrilinearScaleMultipliesTheIndirectLight) {
   FitEvaluator evaluator(spec, {FitView{"main", false, spec.viewTable(spec.views[0]), Image(64, 64, 3)}});
   const Image one = evaluator.render(evaluator.views()[0], {1.0}).indirect;
   const Image two = evaluator.render(evaluator.views()[0], {2.0}).indirect;
-  double sum = 0.0;
+  // Injection adds VPLs with float atomics in any order, so two renderings agree to rounding only.
+  double sum = 0.0, largest = 0.0;
+  for (const float v : one.pixels) largest = std::max(largest, double(std::abs(v)));
   for (std::size_t i = 0; i < one.pixels.size(); ++i) {
-    ASSERT_EQ(two.pixels[i], 2.0f * one.pixels[i]) << "value " << i;
+    ASSERT_NEAR(two.pixels[i], 2.0f * one.pixels[i], 1e-5 * largest) << "value " << i;
     sum += one.pixels[i];
   }
   EXPECT_GT(sum, 0.0);
