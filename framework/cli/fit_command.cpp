@@ -1,6 +1,6 @@
 // `lpvlab fit FILE`: fits the strategy constants named by FILE's [fit] table to the path-traced
 // references of its views (docs/fitting.md), printing a line per iteration, and writes
-// DIR/fit.json and DIR/fitted.toml (framework/fit/fit_output.h).
+// DIR/fit.json, DIR/fitted.toml and DIR/fit.md (framework/fit/fit_output.h).
 
 #include <chrono>
 #include <cstdio>
@@ -47,7 +47,9 @@ int fitCommand(const Options& options) {
   std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
             << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
             << context->renderer() << "\n";
-  FitEvaluator evaluator(spec, makeFitViews(spec));
+  SceneCache scenes;
+  std::vector<FitView> views = makeFitViews(spec, scenes);
+  FitEvaluator evaluator(spec, std::move(views), std::move(scenes));
   std::vector<double> initial;
   for (const FitParameter& p : spec.parameters) initial.push_back(p.initial);
   const nlohmann::json before = evaluator.errors(initial);
@@ -74,13 +76,13 @@ int fitCommand(const Options& options) {
       std::printf("  %-36s undetermined by the images (not fitted; initial %.6g)\n",
                   spec.parameters[j].key.c_str(), spec.parameters[j].initial);
     else
-      std::printf("  %-36s %.6g +- %.2g  (initial %.6g)%s\n", spec.parameters[j].key.c_str(),
-                  result.values[j], result.stdDev[j], spec.parameters[j].initial,
+      std::printf("  %-36s %.6g +- %.2g (sandwich %.2g)  (initial %.6g)%s\n", spec.parameters[j].key.c_str(),
+                  result.values[j], result.stdDev[j], result.sandwichStdDev[j], spec.parameters[j].initial,
                   result.atBound[j] ? "  at a bound: the uncertainty assumes it inactive" : "");
   }
   printErrors("before", before);
   printErrors("after", after);
-  std::printf("wrote %s/{fit.json, fitted.toml}\n", dir.c_str());
+  std::printf("wrote %s/{fit.json, fitted.toml, fit.md}\n", dir.c_str());
   return 0;
 }
 

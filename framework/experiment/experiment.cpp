@@ -170,7 +170,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   return loadExperiment(root, path);
 }
 
-Experiment loadExperiment(const toml::table& root, const std::string& path) {
+Experiment loadExperiment(const toml::table& root, const std::string& path, const SceneLoader& loadScene) {
   const std::string file = path.empty() ? "built-in default experiment" : path;
   Params params(root, file);
 
@@ -185,7 +185,8 @@ Experiment loadExperiment(const toml::table& root, const std::string& path) {
   Params sceneParams = params.table("scene");
   const std::string sceneRef = sceneParams.get<std::string>("file", "builtin:cornell_box");
   try {
-    e.scene = loadSceneByName(resolveScenePath(sceneRef, path));
+    const std::string scenePath = resolveScenePath(sceneRef, path);
+    e.scene = loadScene ? loadScene(scenePath) : loadSceneByName(scenePath);
   } catch (const Error& error) {
     throw Error(sceneParams.where("file") + ": " + error.what());
   }
@@ -223,6 +224,9 @@ Experiment loadExperiment(const toml::table& root, const std::string& path) {
   Params cascades = params.table("cascades");
   e.settings.cascades.levels = cascades.get<int>("levels", 1, {.min = 1, .max = 8});
   e.settings.cascades.blendCells = cascades.get<float>("blend_cells", 2.0f, {.min = 0.0f, .max = 16.0f});
+  const bool followsEye = cascades.getChoice("placement", "eye", {"eye", "depth"}) == "eye";
+  e.settings.cascades.placement = followsEye ? CascadePlacement::Eye : CascadePlacement::Depth;
+  // Read with "depth" too: it places the levels of a frame that sees nothing.
   e.settings.cascades.viewShift = cascades.get<float>("view_shift", 0.25f, {.min = -1.0f, .max = 1.0f});
   e.settings.cascades.carry = cascades.get<bool>("carry", true);
 

@@ -6,6 +6,7 @@
 // overrides ("propagation.iterations=16") are applied before reading, so they are checked like
 // the file's keys. Any key nobody reads is an error naming the file, the line and the valid keys.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,9 +68,13 @@ struct Experiment {
 // Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
 // the file and key for anything wrong.
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {});
+// Reads the scene file at a resolved path (loadSceneByName): a fit passes one that loads each
+// scene once and hands out copies (the experiment adds its lights and materials to its copy).
+using SceneLoader = std::function<Scene(const std::string& resolvedPath)>;
 // The same from a table already read (`extends` and `include` merged, overrides applied, no
 // [sweep] or [fit] table); `path` names it in messages and anchors relative scene files.
-Experiment loadExperiment(const toml::table& root, const std::string& path);
+Experiment loadExperiment(const toml::table& root, const std::string& path,
+                          const SceneLoader& loadScene = {});
 
 // Resolves a scene reference from an experiment: "builtin:cornell_box", "shared:<path>" (relative
 // to the shared folder: env LPVLAB_SHARED_DIR, else the build's default), or a path relative to

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <ceres/loss_function.h>
 
@@ -10,6 +11,7 @@
 #include "framework/metrics/metrics.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/reference_cache.h"
+#include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
 
@@ -48,14 +50,20 @@ std::unique_ptr<ceres::LossFunction> makeLoss(const FitSpec& spec) {
 
 }  // namespace
 
-std::vector<FitView> makeFitViews(const FitSpec& spec) {
+Scene SceneCache::operator()(const std::string& resolvedPath) {
+  auto found = scenes_.find(resolvedPath);
+  if (found == scenes_.end()) found = scenes_.emplace(resolvedPath, loadSceneByName(resolvedPath)).first;
+  return found->second;
+}
+
+std::vector<FitView> makeFitViews(const FitSpec& spec, SceneCache& scenes) {
   std::vector<FitView> views;
   for (const bool heldOut : {false, true})
     for (const FitViewSpec& v : heldOut ? spec.heldOut : spec.views) {
       FitView view{v.name, heldOut, spec.viewTable(v), {}};
       Experiment e;
       try {
-        e = loadExperiment(view.table, spec.file);
+        e = loadExperiment(view.table, spec.file, std::ref(scenes));
       } catch (const Error& error) {
         throw Error("view '" + v.name + "': " + error.what());
       }
@@ -65,8 +73,8 @@ std::vector<FitView> makeFitViews(const FitSpec& spec) {
   return views;
 }
 
-FitEvaluator::FitEvaluator(const FitSpec& spec, std::vector<FitView> views)
-    : spec_(spec), views_(std::move(views)) {
+FitEvaluator::FitEvaluator(const FitSpec& spec, std::vector<FitView> views, SceneCache scenes)
+    : spec_(spec), views_(std::move(views)), scenes_(std::move(scenes)) {
   for (const FitView& v : views_)
     if (!v.heldOut) residualCount_ += 3 * v.target.width * v.target.height;
   if (residualCount_ == 0) throw Error(spec.file + ": key 'fit.views': no views to fit on");
@@ -76,7 +84,7 @@ ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& 
   evaluated_.push_back(x);
   Experiment e;
   try {
-    e = loadExperiment(withParameters(spec_, view.table, x), spec_.file);
+    e = loadExperiment(withParameters(spec_, view.table, x), spec_.file, std::ref(scenes_));
   } catch (const Error& error) {
     throw Error("view '" + view.name + "': " + error.what());
   }

@@ -16,6 +16,7 @@
 // evaluation), so the loss is folded into the residuals; the sum of squares is then exactly the
 // robust cost sum rho(r^2).
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,22 @@
 #include "framework/fit/fit_spec.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/io/image.h"
+#include "framework/scene/scene.h"
 
 namespace lpvlab {
+
+// Each scene file read once per fit: every rendering of every view gets a copy of it (the
+// experiment adds its view's lights and material overrides to the copy), so a fit of many
+// renderings reads Sponza once. Strategies are still built per rendering: they read the
+// parameter values.
+class SceneCache {
+public:
+  Scene operator()(const std::string& resolvedPath);
+  int loads() const { return int(scenes_.size()); }  // distinct files read
+
+private:
+  std::map<std::string, Scene> scenes_;
+};
 
 struct FitView {
   std::string name;
@@ -36,8 +51,9 @@ struct FitView {
 };
 
 // The views of `spec` (fitted, then held out), each with its path-traced reference, rendered or
-// reused from the reference cache (framework/reference/reference_cache.h).
-std::vector<FitView> makeFitViews(const FitSpec& spec);
+// reused from the reference cache (framework/reference/reference_cache.h); the scenes are read
+// through `scenes` (pass the evaluator's, so that they are read once).
+std::vector<FitView> makeFitViews(const FitSpec& spec, SceneCache& scenes);
 
 struct ViewRender {
   Image indirect;         // RGB
@@ -48,7 +64,7 @@ class FitEvaluator {
 public:
   // Needs the GL context current, and on the calling thread for every call; `spec` must outlive
   // the evaluator.
-  FitEvaluator(const FitSpec& spec, std::vector<FitView> views);
+  FitEvaluator(const FitSpec& spec, std::vector<FitView> views, SceneCache scenes = {});
 
   // `view` rendered with the parameter values `x` (FitSpec::parameters order).
   ViewRender render(const FitView& view, const std::vector<double>& x);
@@ -67,6 +83,7 @@ public:
   const std::vector<std::vector<double>>& evaluated() const { return evaluated_; }
   const std::vector<FitView>& views() const { return views_; }
   const FitSpec& spec() const { return spec_; }
+  const SceneCache& scenes() const { return scenes_; }
 
 private:
   // Residuals of one view into out[0 .. 3 w h); returns the covered count.
@@ -74,6 +91,7 @@ private:
 
   const FitSpec& spec_;
   std::vector<FitView> views_;
+  SceneCache scenes_;
   ShaderCompiler shaders_;
   int residualCount_ = 0;
   long long covered_ = 0;

@@ -9,6 +9,7 @@
 #include <ceres/ceres.h>
 
 #include "framework/core/error.h"
+#include "framework/fit/fit_covariance.h"
 
 namespace lpvlab {
 
@@ -111,19 +112,26 @@ private:
   const std::function<void(const FitIteration&)>& onIteration_;
 };
 
-// Marks the parameters along directions the scaled Jacobian does not determine (fit_problem.h);
-// returns the singular values, largest first.
-std::vector<double> findUndetermined(ImageCost& cost, FitEvaluator& evaluator,
-                                     const std::vector<double>& x, std::vector<bool>& undetermined) {
-  const std::vector<FitParameter>& spec = evaluator.spec().parameters;
+// The residuals and the Jacobian (column j: parameter j) at `x`; the cost function keeps them,
+// so Ceres's covariance after this renders nothing new.
+void residualsAndJacobian(ImageCost& cost, const std::vector<double>& x, Eigen::VectorXd& residuals,
+                          Eigen::MatrixXd& jacobian) {
   const std::size_t n = std::size_t(cost.num_residuals()), p = x.size();
-  std::vector<double> residuals(n);
-  Eigen::MatrixXd columns(n, p);  // column-major: column j is parameter j's Jacobian
+  residuals.resize(Eigen::Index(n));
+  jacobian.resize(Eigen::Index(n), Eigen::Index(p));  // column-major: column j is contiguous
   std::vector<const double*> blocks(p);
   std::vector<double*> jacobians(p);
-  for (std::size_t j = 0; j < p; ++j) blocks[j] = &x[j], jacobians[j] = columns.col(Eigen::Index(j)).data();
+  for (std::size_t j = 0; j < p; ++j) blocks[j] = &x[j], jacobians[j] = jacobian.col(Eigen::Index(j)).data();
   if (!cost.Evaluate(blocks.data(), residuals.data(), jacobians.data())) cost.rethrow();
-  for (std::size_t j = 0; j < p; ++j) columns.col(Eigen::Index(j)) *= magnitude(spec[j], x[j]);
+}
+
+// Marks the parameters along directions the scaled Jacobian does not determine (fit_problem.h);
+// returns the singular values, largest first.
+std::vector<double> findUndetermined(const FitSpec& spec, const Eigen::MatrixXd& jacobian,
+                                     const std::vector<double>& x, std::vector<bool>& undetermined) {
+  const std::size_t p = x.size();
+  Eigen::MatrixXd columns = jacobian;
+  for (std::size_t j = 0; j < p; ++j) columns.col(Eigen::Index(j)) *= magnitude(spec.parameters[j], x[j]);
   // The singular values of J are the square roots of the eigenvalues of J^T J (p x p, small).
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(columns.transpose() * columns);
   std::vector<double> singular;
@@ -133,11 +141,33 @@ std::vector<double> findUndetermined(ImageCost& cost, FitEvaluator& evaluator,
   undetermined.assign(p, false);
   for (Eigen::Index k = 0; k < Eigen::Index(p); ++k) {
     const double s = std::sqrt(std::max(0.0, eigen.eigenvalues()[k]));
-    if (largest > 0.0 && s > evaluator.spec().rankTolerance * largest) continue;
+    if (largest > 0.0 && s > spec.rankTolerance * largest) continue;
     for (std::size_t j = 0; j < p; ++j)
       if (std::abs(eigen.eigenvectors()(Eigen::Index(j), k)) > 0.1) undetermined[j] = true;
   }
   return singular;
+}
+
+// The sandwich deviations (fit_covariance.h) of the determined parameters, clustered by image
+// tiles of the fitted views; NaN for the undetermined.
+std::vector<double> sandwichDeviations(const FitEvaluator& evaluator, const Eigen::MatrixXd& jacobian,
+                                       const Eigen::VectorXd& residuals, const std::vector<bool>& undetermined) {
+  std::vector<std::pair<int, int>> sizes;
+  for (const FitView& v : evaluator.views())
+    if (!v.heldOut) sizes.emplace_back(v.target.width, v.target.height);
+  std::vector<int> cluster;
+  const int clusters = tileClusters(sizes, evaluator.spec().tile, cluster);
+  std::vector<Eigen::Index> determined;
+  for (std::size_t j = 0; j < undetermined.size(); ++j)
+    if (!undetermined[j]) determined.push_back(Eigen::Index(j));
+  std::vector<double> out(undetermined.size(), std::numeric_limits<double>::quiet_NaN());
+  if (determined.empty()) return out;
+  Eigen::MatrixXd columns(jacobian.rows(), Eigen::Index(determined.size()));
+  for (std::size_t k = 0; k < determined.size(); ++k) columns.col(Eigen::Index(k)) = jacobian.col(determined[k]);
+  const Eigen::MatrixXd c = sandwichCovariance(columns, residuals, cluster, clusters);
+  for (std::size_t k = 0; k < determined.size(); ++k)
+    out[std::size_t(determined[k])] = std::sqrt(std::max(0.0, c(Eigen::Index(k), Eigen::Index(k))));
+  return out;
 }
 
 }  // namespace
@@ -186,7 +216,11 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
 
   for (std::size_t j = 0; j < p; ++j)
     result.atBound.push_back(x[j] == spec.parameters[j].lower || x[j] == spec.parameters[j].upper);
-  result.singularValues = findUndetermined(cost, evaluator, x, result.undetermined);
+  Eigen::VectorXd residuals;
+  Eigen::MatrixXd jacobian;
+  residualsAndJacobian(cost, x, residuals, jacobian);
+  result.singularValues = findUndetermined(spec, jacobian, x, result.undetermined);
+  result.sandwichStdDev = sandwichDeviations(evaluator, jacobian, residuals, result.undetermined);
   result.coveredResiduals = evaluator.coveredResiduals();
   result.stdDev.assign(p, std::numeric_limits<double>::quiet_NaN());
   std::vector<const double*> determined;

@@ -21,6 +21,9 @@
 // such a direction is reported undetermined (its value is not returned as fitted). The others'
 // covariance is Ceres's (J^T J)^-1 (DENSE_SVD) with the undetermined ones held constant, scaled
 // by the residual variance s^2 = 2 cost / (n - p) (n covered residuals, p determined parameters).
+// That assumes independent pixel errors, so it is a lower bound; beside it the sandwich estimate
+// clustered by image tiles of FitSpec::tile pixels (fit_covariance.h) allows for errors
+// correlated within a tile.
 
 #include <functional>
 #include <string>
@@ -45,6 +48,9 @@ struct FitIteration {
 struct FitResult {
   std::vector<double> initial, values;
   std::vector<double> stdDev;     // NaN for undetermined parameters
+  // The sandwich estimate over image tiles (fit_covariance.h), which allows for pixel errors
+  // correlated within a tile; NaN for undetermined parameters.
+  std::vector<double> sandwichStdDev;
   std::vector<bool> undetermined;
   // At a bound, where the standard deviation (which assumes the bound inactive) says little.
   std::vector<bool> atBound;

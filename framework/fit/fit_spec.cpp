@@ -147,6 +147,7 @@ FitSpec readFitSpec(toml::table root, const std::string& path) {
   spec.relativeStep = params.get<double>("step", 1e-3, {.min = 1e-7, .max = 0.1});
   spec.maxIterations = params.get<int>("max_iterations", 20, {.min = 0, .max = 10000});
   spec.rankTolerance = params.get<double>("rank_tolerance", 1e-3, {.min = 0.0, .max = 1.0});
+  spec.tile = params.get<int>("tile", 16, {.min = 1, .max = 16384});
 
   // The keys must be parameters that a strategy of the experiment actually reads: the strategies
   // are constructed (by loading the experiment) and their resolved parameters consulted.

@@ -12,6 +12,8 @@
 //   max_iterations = 20
 //   rank_tolerance = 1e-3      # singular values of the scaled Jacobian below this, relative to
 //                              # the largest, are a direction the images do not determine
+//   tile = 16                  # pixels per side of the tiles of the sandwich covariance, within
+//                              # which pixel errors may be correlated (fit_problem.h)
 //   [[fit.views]]              # the views fitted on: `name`, and any experiment tables (scene,
 //   name = "front"             # camera, lights, ...), each replacing the file's table whole
 //   [[fit.held_out]]           # views only measured, before and after (same form)
@@ -56,6 +58,7 @@ struct FitSpec {
   double relativeStep = 1e-3;
   int maxIterations = 20;
   double rankTolerance = 1e-3;
+  int tile = 16;
 
   // The experiment table of a view: the base with the view's tables in place of its own.
   toml::table viewTable(const FitViewSpec& view) const;

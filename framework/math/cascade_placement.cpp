@@ -41,6 +41,23 @@ std::vector<GridGeometry> placeCascadeLevels(const GridGeometry& coarsest, int l
   return placed;
 }
 
+std::vector<GridGeometry> placeCascadeLevels(const GridGeometry& coarsest, int levels,
+                                             const glm::vec3& focus) {
+  return placeCascadeLevels(coarsest, levels, focus, glm::vec3(0.0f), 0.0f);
+}
+
+std::optional<glm::vec3> visibleFocus(std::vector<glm::vec3> positions) {
+  if (positions.empty()) return std::nullopt;
+  const auto middle = positions.begin() + std::ptrdiff_t(positions.size() / 2);
+  glm::vec3 focus;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::nth_element(positions.begin(), middle, positions.end(),
+                     [axis](const glm::vec3& a, const glm::vec3& b) { return a[axis] < b[axis]; });
+    focus[axis] = (*middle)[axis];
+  }
+  return focus;
+}
+
 glm::ivec3 childOffsetInParentCells(const GridGeometry& child, const GridGeometry& parent) {
   return glm::ivec3(glm::round((child.origin - parent.origin) / parent.cellSize));
 }

@@ -14,11 +14,18 @@ namespace lpvlab {
 
 struct Frame;
 
+// Where the finer levels are centred (framework/math/cascade_placement.h).
+enum class CascadePlacement {
+  Eye,    // the eye moved viewShift of the level's extent along the view direction
+  Depth,  // what the camera sees: the median of the G-buffer's positions, read back every frame
+};
+
 struct CascadeSettings {
   int levels = 1;           // 1: one grid, fitted to the scene (no camera following)
   float blendCells = 2.0f;  // width of the band, in cells of the finer level, where two levels mix
-  float viewShift = 0.25f;  // a finer level's centre: the eye moved this fraction of its extent
-                            // along the view direction
+  CascadePlacement placement = CascadePlacement::Eye;
+  float viewShift = 0.25f;  // "eye" placement (and "depth" when the camera sees nothing): a finer
+                            // level's centre is the eye moved this fraction of its extent ahead
   bool carry = true;        // parents propagate their children's injected light (restrict.comp)
 };
 

@@ -24,6 +24,17 @@ Image readTexture(const gl::Texture& texture, int channels, int firstChannel = 0
   return image;
 }
 
+// The world positions of the surfaces the G-buffer's pixels see (where cascades follow them).
+std::vector<glm::vec3> visiblePositions(const GBuffer& gbuffer) {
+  std::vector<glm::vec4> texels(std::size_t(gbuffer.width) * gbuffer.height);
+  glGetTextureImage(gbuffer.position.id(), 0, GL_RGBA, GL_FLOAT,
+                    GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+  std::vector<glm::vec3> positions;
+  for (const glm::vec4& texel : texels)
+    if (texel.w > 0.0f) positions.emplace_back(texel);
+  return positions;
+}
+
 double gridFlux(const std::vector<float>& coefficients, int cells, int coefficientCount) {
   double flux = 0.0;
   for (int channel = 0; channel < LightGrid::kChannels; ++channel)
@@ -111,10 +122,11 @@ void Pipeline::setCamera(const Camera& camera) {
   placeLevels();
 }
 
-void Pipeline::placeLevels() {
+void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {
   const std::vector<GridGeometry> placed =
-      placeCascadeLevels(settings_.grid, int(levels_.size()), camera_.position, camera_.forward,
-                         settings_.cascades.viewShift);
+      focus ? placeCascadeLevels(settings_.grid, int(levels_.size()), *focus)
+            : placeCascadeLevels(settings_.grid, int(levels_.size()), camera_.position,
+                                 camera_.forward, settings_.cascades.viewShift);
   for (std::size_t level = 0; level < levels_.size(); ++level) {
     levels_[level].geometry = placed[level];
     if (!geometryVolumes_.empty())
@@ -148,7 +160,11 @@ FrameTimes Pipeline::renderFrame() {
   stage("direct", times, [&] {
     direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_);
   });
-  stage("clear", times, [&] { clearGrids(); });
+  stage("clear", times, [&] {
+    if (levels > 1 && settings_.cascades.placement == CascadePlacement::Depth)
+      placeLevels(visibleFocus(visiblePositions(gbufferPass_->gbuffer())));
+    clearGrids();
+  });
   stage("occlusion", times, [&] {
     for (int level = 0; level < levels; ++level) {
       Frame frame = this->frame(level);

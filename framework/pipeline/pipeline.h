@@ -9,6 +9,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,7 +72,8 @@ public:
   // finest (the only one without cascades).
   std::vector<float> readGrid(bool accumulated, int level = 0) const;
 
-  // Moves the camera; finer cascade levels follow it from the next frame on.
+  // Moves the camera; finer cascade levels follow it from the next frame on (with "depth"
+  // placement each frame places them after its G-buffer; the "clear" stage includes that read-back).
   void setCamera(const Camera& camera);
   // The light grids, finest first, where the last frame placed them.
   const std::vector<LightGrid>& levels() const { return levels_; }
@@ -86,7 +88,8 @@ private:
   template <class F>
   void stage(const std::string& name, FrameTimes& times, F&& work);
   Frame frame(int level);
-  void placeLevels();
+  // Places the finer cascade levels around `focus` ("depth" placement), or by the eye rule.
+  void placeLevels(const std::optional<glm::vec3>& focus = std::nullopt);
   void clearGrids();
   void injectAll(int level);
 

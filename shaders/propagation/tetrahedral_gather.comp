@@ -3,18 +3,23 @@
 // face neighbours what each sends it through its three other faces (the face loop of
 // tetrahedral_lattice.glsl, at any SH order: SH_COEFFICIENTS per channel), writes that as the
 // next iteration's light and adds it to the lattice's running sum. Light towards cells that do
-// not exist (past the grid) is lost. With the GV (HAS_GV) and `occluded`, each face's flux is
-// multiplied by the GV's transmittance where its direction crosses the shared face.
+// not exist (past the grid) is lost. A face's flux weighs the neighbour's coefficients with the
+// face's SH integrals (FACE_INTEGRALS, the buffer at binding 4) or with its solid angle times the
+// basis towards its centroid (tetrahedral_lattice.glsl, "face_flux"). With the GV (HAS_GV) and
+// `occluded`, each face's flux is multiplied by the GV's transmittance where its direction
+// crosses the shared face.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const float SMALL_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float LARGE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 3) const bool HAS_GV = false;
+layout(constant_id = 4) const bool FACE_INTEGRALS = true;
 
 layout(std430, binding = 0) readonly buffer Source { float source[]; };
 layout(std430, binding = 1) writeonly buffer Target { float target[]; };
 layout(std430, binding = 2) buffer Sum { float sum[]; };
 layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = 4) readonly buffer FaceIntegrals { float faceIntegral[]; };
 layout(location = 0) uniform ivec3 resolution;
 layout(location = 1) uniform int occludedStep;  // 0 or 1: this step reads the GV (tetFirstOccludedStep)
 
@@ -46,16 +51,17 @@ void main() {
       if (occluded)
         transmittance = gvTransmittance(gvBlockingAt(tetFarFaceCrossing(tet, face, k), resolution + 1),
                                         direction);
-      float basis[N];
+      float weight[N];  // face k's flux is max(0, sum_i c_i weight_i), times the transmittance
       float lobe[N];
       for (int i = 0; i < N; ++i) {
-        basis[i] = shBasisAt(i, direction);
+        weight[i] = FACE_INTEGRALS ? faceIntegral[tetFaceIntegralIndex(tet.w, face, k, i)]
+                                   : solidAngle * shBasisAt(i, direction);
         lobe[i] = shCosineLobeAt(i, normal) / PI;
       }
       for (int channel = 0; channel < 3; ++channel) {
-        float intensity = 0.0;
-        for (int i = 0; i < N; ++i) intensity += c[channel * N + i] * basis[i];
-        float flux = standardFaceFlux(intensity, solidAngle, transmittance);
+        float integral = 0.0;
+        for (int i = 0; i < N; ++i) integral += c[channel * N + i] * weight[i];
+        float flux = standardFaceFlux(integral, 1.0, transmittance);
         for (int i = 0; i < N; ++i) gathered[channel * N + i] += flux * lobe[i];
       }
     }

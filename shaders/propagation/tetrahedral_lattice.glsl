@@ -160,8 +160,8 @@ int tetSlotCount(ivec3 res) {
 // All three are back faces seen from G_s, so every ray from G_s through the shared face leaves
 // the target through exactly one of them: they tile the shared face's solid angle pi, and the 12
 // faces of the 4 neighbours tile the sphere (4 pi) with neither gap nor overlap, so no
-// renormalisation is needed: Phi_k = Omega_k max(0, I(w_k)), re-emitted as Phi_k / pi times a
-// clamped cosine lobe along n_k, conserves a cell's flux up to the clamp and the SH projection.
+// renormalisation is needed: each face's flux Phi_k (below), re-emitted as Phi_k / pi times a
+// clamped cosine lobe along n_k, conserves a cell's flux up to the clamp.
 real tetFarFaceSolidAngle(int sharedFace, int face, real smallAngle, real largeAngle) {
   return face == tetOppositeVertex(sharedFace) ? smallAngle : largeAngle;
 }
@@ -173,11 +173,27 @@ vec3 tetFarFaceDirection(int code, int sharedFace, int face) {
 }
 
 // At any SH order (the kernel's face loop, and the tests' C++ reference, which run per face k):
-//   Phi_k = T_k * Omega_k * max(0, sum_i c_i Y_i(w_k))       (standardFaceFlux)
+//   Phi_k = T_k * max(0, sum_i c_i m_ki)                      (standardFaceFlux with Omega = 1)
 //   target coefficients += Phi_k / pi * shCosineLobeAt(i, n_k)
-// Only the number of coefficients changes with the order: the far faces tile the sphere whatever
-// the basis, and the lobe integrates to Phi_k at every order (only Y00 has an integral).
-//
+// with the face's weights m_ki, by the strategy's `face_flux`:
+//   "integral" (default): m_ki = the integral of Y_i over face k seen from G_s
+//              (tetFaceIntegralIndex; framework/math/tetrahedral_face_integrals.h). The 12 far
+//              faces tile the sphere, so the 12 fluxes sum to the integral of I over the sphere:
+//              a step conserves flux for every SH function, and the clamp acts only where a
+//              whole face's integral is negative.
+//   "centre":  m_ki = Omega_k Y_i(w_k), the standard method's one-point quadrature (the
+//              intensity towards the face's centroid). It conserves flux only for an isotropic
+//              source; the clamp of a lobe's negative side sampled at single directions adds up
+//              to 1.21x (order 1) / 1.26x (orders 2-3) per step, which compounds over a lattice's
+//              many steps (docs/variants.md#tetrahedral).
+// Only the number of coefficients changes with the order: the lobe integrates to Phi_k at every
+// order (only Y00 has an integral).
+const int TET_FACE_INTEGRAL_COUNT = TET_PER_CUBE * TET_FACES * TET_FACES * SH_MAX_COEFFICIENTS;
+
+int tetFaceIntegralIndex(int code, int sharedFace, int face, int i) {
+  return ((code * TET_FACES + sharedFace) * TET_FACES + face) * SH_MAX_COEFFICIENTS + i;
+}
+
 // With the geometry volume (alg. 6.2 lines 11-14 on this lattice), T_k is the GV's transmittance
 // for w_k where w_k, leaving the source's centroid, crosses the shared face j: that point lies on
 // the shared triangle (face k is a back face seen from G_s, seen through face j), and the shared
@@ -219,5 +235,13 @@ real tetSplitWeight(ivec3 cube, ivec3 res) {
 // as the cell exists). Both directions conserve flux (shIntegral is linear in c0) and are linear
 // maps applied to every coefficient alike, so they hold at every SH order.
 const real TET_MERGE_WEIGHT = 0.5;
+
+// The sum of the steps counts light once per step it spends in a cell. The cubic grid's sum counts
+// it once per cube edge travelled (a standard step moves light one edge, which is what makes its
+// radiance I / h^2 the same at every resolution); a lattice step moves light sqrt(2)/4 edges
+// (between neighbouring centroids), so light crossing a cube is in it for 2 sqrt(2) times as
+// many steps. The lattice's sum is weighted by the step length in cube edges so that the same
+// light gives the same accumulated grid on both lattices.
+const real TET_STEP_LENGTH = 0.25 * TET_SQRT2;
 
 #endif

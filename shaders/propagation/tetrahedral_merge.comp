@@ -1,8 +1,8 @@
 #version 450
 // Tetrahedral lattice -> cubic light grid: every cube takes half of each of its 24 cells (the 12
 // for which it is the lower cube and the 12 for which it is the upper one; flux conserving).
-// The lattice's last step becomes the grid's `current`, and its running sum is added to
-// `accumulated`. Any SH order: SH_COEFFICIENTS per channel.
+// The lattice's last step becomes the grid's `current`, and its running sum, weighted by the
+// step length (TET_STEP_LENGTH), is added to `accumulated`. Any SH order: SH_COEFFICIENTS per channel.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
@@ -44,6 +44,6 @@ void main() {
     for (int k = 0; k < N; ++k) {
       int i = coefficientIndex(channel, k, N, index, cells);
       current[i] = TET_MERGE_WEIGHT * lastSum[channel * N + k];
-      accumulated[i] += TET_MERGE_WEIGHT * sumSum[channel * N + k];
+      accumulated[i] += TET_STEP_LENGTH * TET_MERGE_WEIGHT * sumSum[channel * N + k];
     }
 }

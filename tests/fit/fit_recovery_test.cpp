@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "fit/fit_test_support.h"
+#include "framework/experiment/experiment.h"
 #include "framework/fit/fit_output.h"
+#include "framework/pipeline/pipeline.h"
 #include "framework/fit/fit_problem.h"
 #include "gl/gl_test_context.h"
 
@@ -47,7 +50,8 @@ TEST(FitRecovery, RecoversAPerturbedDampingWithinItsUncertainty) {
   test::glTestContext();
   test::FitFiles files("recovery");
   const FitSpec spec = specFor(files, 16,
-      "parameters = [{ key = \"propagation.damping\", initial = 1.0, lower = 0.5, upper = 1.5 }]\n");
+      "parameters = [{ key = \"propagation.damping\", initial = 1.0, lower = 0.5, upper = 1.5 }]\n"
+      "tile = 4\n");  // 256 tiles: the sandwich's own spread is about 5%
   const double truth = 0.85;
   FitEvaluator evaluator(spec, syntheticViews(spec, {truth}));
   const FitResult result = runFit(evaluator);
@@ -59,7 +63,12 @@ TEST(FitRecovery, RecoversAPerturbedDampingWithinItsUncertainty) {
   EXPECT_LE(std::abs(result.values[0] - truth), 3.0 * result.stdDev[0])
       << result.values[0] << " +- " << result.stdDev[0];
   EXPECT_LT(result.finalCost, 0.1 * result.initialCost);
-  RecordProperty("fitted", std::to_string(result.values[0]) + " +- " + std::to_string(result.stdDev[0]));
+  // The only errors left are the targets' independent noise: the tiled sandwich deviation then
+  // agrees with Ceres's.
+  EXPECT_NEAR(result.sandwichStdDev[0] / result.stdDev[0], 1.0, 0.2)
+      << result.sandwichStdDev[0] << " against " << result.stdDev[0];
+  RecordProperty("fitted", std::to_string(result.values[0]) + " +- " + std::to_string(result.stdDev[0]) +
+                               " (sandwich " + std::to_string(result.sandwichStdDev[0]) + ")");
   ASSERT_GE(result.log.size(), 2u);
   EXPECT_EQ(result.log.front().x[0], 1.0);
 }
@@ -93,6 +102,8 @@ TEST(FitRecovery, AParameterWithoutEffectIsUndetermined) {
   const FitResult result = runFit(evaluator);
   EXPECT_TRUE(result.undetermined[0]);
   EXPECT_TRUE(std::isnan(result.stdDev[0]));
+  EXPECT_TRUE(std::isnan(result.sandwichStdDev[0]));
+  EXPECT_GT(result.sandwichStdDev[1], 0.0);
   ASSERT_FALSE(result.undetermined[1]) << "singular values " << nlohmann::json(result.singularValues)
                                        << ", normal_offset " << result.values[1] << ", " << result.termination;
   EXPECT_LE(std::abs(result.values[1] - 0.3), 3.0 * result.stdDev[1])
@@ -120,6 +131,42 @@ TEST(FitConstants, TrilinearScaleMultipliesTheIndirectLight) {
     sum += one.pixels[i];
   }
   EXPECT_GT(sum, 0.0);
+}
+
+// The GV's blocking_scale acts on the image (the transmittance clamp(1 - B, 0, 1) is not
+// saturated everywhere): at 0 the GV blocks nothing, as without occlusion; more blocking lets
+// less light through.
+TEST(FitConstants, GvBlockingScaleActsOnTheIndirectLight) {
+  test::glTestContext();
+  test::FitFiles files("blocking");
+  const std::string base = test::smallCornellBox(16);
+  const FitSpec spec = readFitSpec(files.write(
+      "fit.toml", base + "[occlusion]\ntype = \"geometry_volume\"\n"
+                         "[fit]\nparameters = [{ key = \"occlusion.blocking_scale\" }]\n"
+                         "[[fit.views]]\nname = \"main\"\n"));
+  ASSERT_EQ(spec.parameters[0].initial, 1.0);
+  FitEvaluator evaluator(spec, {FitView{"main", false, spec.viewTable(spec.views[0]), Image(64, 64, 3)}});
+  const auto total = [](const Image& image) {
+    double sum = 0.0;
+    for (const float v : image.pixels) sum += v;
+    return sum;
+  };
+  const Image zero = evaluator.render(evaluator.views()[0], {0.0}).indirect;
+  const double one = total(evaluator.render(evaluator.views()[0], {1.0}).indirect);
+  const double three = total(evaluator.render(evaluator.views()[0], {3.0}).indirect);
+  Experiment open = loadExperiment(files.write("open.toml", base));
+  ShaderCompiler shaders;
+  Pipeline pipeline(open.scene, open.camera, open.settings, std::move(open.strategies), shaders);
+  pipeline.renderFrame();
+  const Image none = findAov(pipeline.readOutputs(), "indirect");
+  double largest = 0.0;
+  for (const float v : none.pixels) largest = std::max(largest, double(std::abs(v)));
+  for (std::size_t i = 0; i < none.pixels.size(); ++i)
+    ASSERT_NEAR(zero.pixels[i], none.pixels[i], 1e-5 * largest) << "value " << i;
+  EXPECT_LT(one, 0.99 * total(zero));
+  EXPECT_LT(three, 0.99 * one);
+  std::cout << "[ fit ] indirect light summed: blocking_scale 0: " << total(zero) << ", 1: " << one
+            << ", 3: " << three << "\n";
 }
 
 }  // namespace

@@ -116,6 +116,7 @@ TEST(FittedToml, IsOneIncludeAwayFromAnExperiment) {
   FitResult result;
   result.values = {1.0 / 3.0, 1.25, 0.5};
   result.stdDev = {0.01, 0.02, NAN};
+  result.sandwichStdDev = {0.03, 0.05, NAN};
   result.undetermined = {false, false, true};
   result.atBound = {false, true, false};
   files.write("fitted.toml", fittedToml(spec, result));
@@ -125,6 +126,44 @@ TEST(FittedToml, IsOneIncludeAwayFromAnExperiment) {
   EXPECT_EQ(c["injection"]["shift"].get<double>(), 1.25);
   // The undetermined parameter is left out: the experiment keeps its default.
   EXPECT_NEAR(c["propagation"]["far_face_solid_angle"].get<double>(), 0.40066968, 1e-8);
+}
+
+// fit.md: per parameter the verdict from z = (fitted - published) / the larger deviation, the
+// undetermined said so; per view, grouped, the error before and after and the gain.
+TEST(FitReport, StatesVerdictsAndGains) {
+  test::FitFiles files("report");
+  const std::string path = files.write(
+      "a.toml", fitFile("parameters = [{ key = \"propagation.damping\" }, "
+                        "{ key = \"injection.shift\" }, { key = \"propagation.far_face_solid_angle\" }]\n" +
+                        kViews + "[[fit.held_out]]\nname = \"other\"\n"));
+  const FitSpec spec = readFitSpec(path);
+  FitResult result;
+  result.values = {0.9, 1.05, 0.5};
+  // damping: z = -0.1 / max(0.01, 0.02) = -5; shift: 0.05 / max(0.02, 0.01) = 2.5.
+  result.stdDev = {0.01, 0.02, NAN};
+  result.sandwichStdDev = {0.02, 0.01, NAN};
+  result.undetermined = {false, false, true};
+  result.atBound = {false, false, false};
+  const auto errors = [](double mainRmse, double otherRmse) {
+    const auto view = [](const char* name, bool heldOut, double rmse) {
+      return nlohmann::json{{"view", name}, {"held_out", heldOut}, {"cost", 0.0},
+                            {"metrics", {{"rmse", rmse}, {"rel_mse", 0.1}, {"flip", 0.5}}}};
+    };
+    return nlohmann::json::array({view("main", false, mainRmse), view("other", true, otherRmse)});
+  };
+  const std::string report = fitReport(spec, result, errors(0.04, 0.02), errors(0.02, 0.03));
+  const auto line = [&](const std::string& start) {
+    const auto at = report.find(start);
+    return at == std::string::npos ? std::string() : report.substr(at, report.find('\n', at) - at);
+  };
+  EXPECT_TRUE(test::contains(line("| `propagation.damping`"), "| -5.00 | differs significantly")) << report;
+  EXPECT_TRUE(test::contains(line("| `injection.shift`"), "| 2.50 | not significantly different")) << report;
+  EXPECT_TRUE(test::contains(line("| `propagation.far_face_solid_angle`"), "undetermined")) << report;
+  EXPECT_TRUE(test::contains(line("| main"), "| 0.04 | 0.02 | +50.0%")) << report;
+  EXPECT_TRUE(test::contains(line("| other"), "| 0.02 | 0.03 | -50.0%")) << report;
+  EXPECT_LT(report.find("### Fitted views"), report.find("| main"));
+  EXPECT_LT(report.find("### Held-out views"), report.find("| other"));
+  EXPECT_GT(report.find("### Held-out views"), report.find("| main"));
 }
 
 }  // namespace

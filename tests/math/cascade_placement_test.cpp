@@ -1,9 +1,14 @@
 // Cascade placement (framework/math/cascade_placement.h): levels nest exactly, stay inside their
 // parents, sit on whole cells of their parents, follow the camera, and do not move when the
-// camera moves by less than a cell.
+// camera moves by less than a cell. "Depth" placement: every level contains the focus (even cell
+// counts), the placement is piecewise constant in the focus (moves only by whole parent cells, at
+// most once per parent cell the focus travels), and the focus is the per-axis median of what the
+// camera sees, which outliers do not move.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "framework/math/cascade_placement.h"
 
@@ -98,6 +103,110 @@ TEST(CascadePlacement, ACameraMoveOfLessThanACellMovesNoLevelByAFractionOfACell)
   }
   // The smallest moves leave every level exactly where it was.
   EXPECT_GE(unchanged, 1);
+}
+
+// Levels nest in their parents on whole parent cells (what carrying and no-flicker rely on).
+void expectNested(const std::vector<GridGeometry>& levels) {
+  for (std::size_t level = 0; level + 1 < levels.size(); ++level) {
+    const GridGeometry& child = levels[level];
+    const GridGeometry& parent = levels[level + 1];
+    EXPECT_FLOAT_EQ(child.cellSize * 2.0f, parent.cellSize);
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_LT(offGrid(child.origin[axis] - parent.origin[axis], parent.cellSize), 1e-4);
+      EXPECT_GE(child.origin[axis], parent.origin[axis] - 1e-5f);
+      EXPECT_LE(child.origin[axis] + child.extent()[axis],
+                parent.origin[axis] + parent.extent()[axis] + 1e-5f);
+    }
+  }
+}
+
+TEST(CascadePlacement, DepthPlacementNestsAndEveryLevelContainsTheFocus) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const glm::ivec3 resolution : {glm::ivec3(32, 16, 24), glm::ivec3(2, 4, 6), glm::ivec3(12)}) {
+    GridGeometry grid = sceneGrid();
+    grid.resolution = resolution;
+    for (int trial = 0; trial < 200; ++trial) {
+      // Anywhere in the scene grid, its corners and faces included.
+      glm::vec3 focus = grid.origin + grid.extent() * glm::vec3(unit(random), unit(random), unit(random));
+      if (trial % 4 == 0) focus.x = grid.origin.x;
+      if (trial % 4 == 1) focus.y = grid.origin.y + grid.extent().y;
+      const std::vector<GridGeometry> levels = placeCascadeLevels(grid, 5, focus);
+      ASSERT_EQ(levels.size(), 5u);
+      EXPECT_EQ(levels[4].origin, grid.origin);
+      expectNested(levels);
+      for (std::size_t level = 0; level < 4; ++level) {
+        const glm::vec3 local = (focus - levels[level].origin) / levels[level].extent();
+        for (int axis = 0; axis < 3; ++axis) {
+          EXPECT_GE(local[axis], -1e-5f) << "level " << level << " axis " << axis;
+          EXPECT_LE(local[axis], 1.0f + 1e-5f) << "level " << level << " axis " << axis;
+        }
+      }
+    }
+  }
+  // The finest level is centred on the focus to within one of its cells, away from the sides.
+  const glm::vec3 focus = sceneGrid().origin + sceneGrid().extent() * glm::vec3(0.45f, 0.55f, 0.5f);
+  const GridGeometry finest = placeCascadeLevels(sceneGrid(), 3, focus)[0];
+  const glm::vec3 off = glm::abs(finest.origin + 0.5f * finest.extent() - focus);
+  for (int axis = 0; axis < 3; ++axis) EXPECT_LE(off[axis], finest.cellSize * (1.0f + 1e-4f));
+}
+
+TEST(CascadePlacement, DepthPlacementMovesOnlyByWholeParentCellsAndOncePerParentCellTravelled) {
+  const glm::vec3 start = sceneGrid().origin + sceneGrid().extent() * glm::vec3(0.4f, 0.5f, 0.45f);
+  const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, 0.3f, -0.2f));
+  const float finestParentCell = sceneGrid().cellSize / 2.0f;  // level 1's cells, of 3 levels
+  const int steps = 400;
+  const float step = finestParentCell / 50.0f;  // 8 of the finest level's parent cells in all
+  std::vector<GridGeometry> previous = placeCascadeLevels(sceneGrid(), 3, start);
+  int moves = 0, unchanged = 0;
+  for (int i = 1; i <= steps; ++i) {
+    const std::vector<GridGeometry> placed =
+        placeCascadeLevels(sceneGrid(), 3, start + direction * (step * float(i)));
+    const glm::vec3 shift = placed[0].origin - previous[0].origin;
+    if (shift == glm::vec3(0.0f)) {
+      ++unchanged;
+    } else {
+      ++moves;
+      // One plane crossed at a time: a single whole parent cell along one axis.
+      float moved = 0.0f;
+      for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_LT(offGrid(shift[axis], finestParentCell), 1e-4);
+        moved += std::abs(shift[axis]) / finestParentCell;
+      }
+      EXPECT_NEAR(moved, 1.0f, 1e-3f) << "step " << i;
+    }
+    previous = placed;
+  }
+  // Along the walk the focus crosses at most 8 + 1 planes per axis (it moves 8 cells in all).
+  const glm::vec3 travelled = glm::abs(direction) * (step * float(steps)) / finestParentCell;
+  EXPECT_LE(moves, int(std::ceil(travelled.x)) + int(std::ceil(travelled.y)) + int(std::ceil(travelled.z)));
+  EXPECT_GE(moves, int(std::floor(travelled.x)));  // it does follow the focus
+  EXPECT_GT(unchanged, steps * 9 / 10);             // sub-cell moves change nothing
+}
+
+TEST(CascadePlacement, TheFocusIsThePerAxisMedianOfTheVisiblePositionsAndIgnoresOutliers) {
+  EXPECT_FALSE(visibleFocus({}).has_value());
+  std::mt19937 random(3);
+  std::normal_distribution<float> spread(0.0f, 0.05f);
+  const glm::vec3 centre(1.0f, 2.0f, -3.0f);
+  std::vector<glm::vec3> positions;
+  for (int i = 0; i < 1001; ++i)
+    positions.push_back(centre + glm::vec3(spread(random), spread(random), spread(random)));
+  // The exact per-axis median of the cluster.
+  glm::vec3 median;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<float> values;
+    for (const glm::vec3& p : positions) values.push_back(p[axis]);
+    std::sort(values.begin(), values.end());
+    median[axis] = values[500];
+  }
+  EXPECT_EQ(*visibleFocus(positions), median);
+  // 40 % more pixels seeing a far wall move the focus by less than the cluster's spread, where
+  // a mean would move 40 / 140 of the way (about 11 m) towards the wall.
+  for (int i = 0; i < 400; ++i) positions.push_back(glm::vec3(40.0f, 2.0f, -3.0f));
+  const glm::vec3 robust = *visibleFocus(positions);
+  EXPECT_LT(glm::length(robust - centre), 0.2f);
+  EXPECT_GT(glm::length(robust - centre), 0.0f);  // the median did move, slightly
 }
 
 TEST(CascadePlacement, DegenerateInputsGiveValidLevels) {

@@ -7,11 +7,16 @@
 //     of several cells moves the finer levels;
 //   - carrying: each parent cell inside its child holds the sum of its 2x2x2 children's injected
 //     light (flux conserved), cells outside keep their own; without carrying they differ;
+//   - "depth" placement: on the ablation view from inside the Cornell box every level injects
+//     light and three levels render differently from two (with "eye" placement the finest level
+//     held only air there); levels sit around the median of the G-buffer's positions, a
+//     sub-cell camera move keeps the light, and a frame that sees nothing uses the eye rule;
 //   - memory: every level has its own light grid (and GV), the strategies' scratch exists once;
 //   - extremes: eight levels of 4^3 cells give finite light.
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -142,7 +147,7 @@ LevelsSnapshot snapshot(const Pipeline& pipeline) {
 TEST(CascadePipeline, ACameraMoveOfLessThanACellLeavesTheLightUnchanged) {
   test::glTestContext();
   // A camera inside the box, near the floor's left corner, so the finest level holds walls.
-  Experiment e = cornell({"cascades.levels=3", "propagation.iterations=6",
+  Experiment e = cornell({"cascades.levels=3", "cascades.placement=\"eye\"", "propagation.iterations=6",
                           "camera.position=[0.12, 0.1, 0.15]", "camera.look_at=[0.05, 0.0, 0.5]",
                           "camera.up=[0.0, 1.0, 0.0]", "camera.fov_deg=60.0"});
   ShaderCompiler shaders;
@@ -185,6 +190,163 @@ TEST(CascadePipeline, ACameraMoveOfLessThanACellLeavesTheLightUnchanged) {
   EXPECT_NE(moved.placement[0].origin, before.placement[0].origin);
   EXPECT_GT(relativeDifference(before.accumulated[0], moved.accumulated[0]), 0.01);
   EXPECT_EQ(moved.placement[2].origin, before.placement[2].origin);  // the coarsest stays put
+}
+
+TEST(CascadePipeline, WithDepthPlacementASubCellCameraMoveLeavesTheLightUnchanged) {
+  test::glTestContext();
+  Experiment e = cornell({"cascades.levels=3", "cascades.placement=\"depth\"",
+                          "propagation.iterations=6", "camera.position=[0.12, 0.1, 0.15]",
+                          "camera.look_at=[0.05, 0.0, 0.5]", "camera.up=[0.0, 1.0, 0.0]",
+                          "camera.fov_deg=60.0"});
+  ShaderCompiler shaders;
+  const Camera start = e.camera;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  pipeline.renderFrame();
+  const LevelsSnapshot before = snapshot(pipeline);
+  for (const std::vector<float>& level : before.accumulated)
+    ASSERT_GT(*std::max_element(level.begin(), level.end()), 0.0f);
+  // The focus (a median of what is seen) moves by about the camera's move or less, so most
+  // sub-cell moves keep every level where it was; where one does, the light is the same. Where
+  // a level moved, it moved by whole cells of its parent.
+  int kept = 0;
+  for (int step = 1; step <= 6; ++step) {
+    Camera moved = start;
+    moved.position += glm::vec3(0.03f, -0.02f, 0.04f) * (before.placement[0].cellSize * float(step));
+    pipeline.setCamera(moved);
+    pipeline.renderFrame();
+    const LevelsSnapshot after = snapshot(pipeline);
+    bool samePlacement = true;
+    for (std::size_t level = 0; level < 3; ++level) {
+      const glm::vec3 shift = after.placement[level].origin - before.placement[level].origin;
+      const float parentCell = before.placement[std::min(level + 1, std::size_t(2))].cellSize;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double cells = shift[axis] / parentCell;
+        EXPECT_NEAR(cells, std::round(cells), 1e-3) << "level " << level;
+      }
+      samePlacement = samePlacement && shift == glm::vec3(0.0f);
+    }
+    if (!samePlacement) continue;
+    for (std::size_t level = 0; level < 3; ++level)
+      EXPECT_LT(relativeDifference(before.accumulated[level], after.accumulated[level]), 1e-5)
+          << "level " << level << ", step " << step;
+    ++kept;
+  }
+  EXPECT_GE(kept, 3);
+}
+
+// The camera of experiments/ablation_cascades.toml: inside the box near the floor, looking along
+// it at the blocks.
+const std::vector<std::string> kAblationView = {
+    "camera.position=[0.42, 0.12, 0.12]", "camera.look_at=[0.1, 0.1, 0.5]",
+    "camera.up=[0.0, 1.0, 0.0]", "camera.fov_deg=65.0"};
+
+// Flux (W, RGB summed) in a grid of `coefficients` per channel (the SH constant term integrated).
+double gridFlux(const std::vector<float>& grid, int cells, int coefficients) {
+  double flux = 0.0;
+  for (int channel = 0; channel < 3; ++channel)
+    for (int cell = 0; cell < cells; ++cell)
+      flux += shared::shIntegral(glm::dvec4(
+          grid[std::size_t(shared::coefficientIndex(channel, 0, coefficients, cell, cells))], 0, 0, 0));
+  return flux;
+}
+
+struct PlacedRun {
+  std::vector<double> injectedFlux;  // per level, finest first (each level's own: no carrying)
+  std::vector<GridGeometry> placement;
+  Image indirect;
+  Image depth;
+};
+
+PlacedRun runAblationView(const std::string& placement, int levels) {
+  test::glTestContext();
+  std::vector<std::string> overrides = kAblationView;
+  overrides.insert(overrides.end(), {"cascades.levels=" + std::to_string(levels),
+                                     "cascades.placement=\"" + placement + "\"",
+                                     "cascades.carry=false", "propagation.iterations=8"});
+  Experiment e = cornell(overrides);
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  pipeline.renderFrame();
+  PlacedRun run;
+  for (int level = 0; level < levels; ++level) {
+    const GridGeometry& g = pipeline.levels()[std::size_t(level)].geometry;
+    run.injectedFlux.push_back(gridFlux(pipeline.readGrid(false, level), g.cellCount(), 4));
+    run.placement.push_back(g);
+  }
+  for (NamedImage& image : pipeline.readOutputs()) {
+    if (image.name == "indirect") run.indirect = std::move(image.image);
+    if (image.name == "depth") run.depth = std::move(image.image);
+  }
+  return run;
+}
+
+// The largest difference between two images relative to the first's mean.
+double imageDifference(const Image& a, const Image& b) {
+  double sum = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    sum += a.pixels[i];
+    largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
+  }
+  return largest / (sum / double(a.pixels.size()));
+}
+
+TEST(CascadePipeline, DepthPlacementPutsSurfacesInTheFinestLevelOnTheAblationView) {
+  const PlacedRun depth = runAblationView("depth", 3);
+  const PlacedRun eye = runAblationView("eye", 3);
+  for (int level = 0; level < 3; ++level)
+    std::cout << "[ flux ] level " << level << ": depth " << depth.injectedFlux[std::size_t(level)]
+              << " W, eye " << eye.injectedFlux[std::size_t(level)] << " W\n";
+  // Every level holds VPLs (measured: the finest 0.9 % of the scene's injected flux in 1/64 of
+  // its volume; the light falls mostly on the floor and blocks far from this corner).
+  for (int level = 0; level < 3; ++level) EXPECT_GT(depth.injectedFlux[std::size_t(level)], 0.0);
+  EXPECT_GT(depth.injectedFlux[0], 0.005 * depth.injectedFlux[2]);
+  // The eye rule's finest level, around the eye, holds no surface (measured: exactly 0 W).
+  EXPECT_LT(eye.injectedFlux[0], 0.1 * depth.injectedFlux[0]);
+
+  // So the third level changes the image with "depth" placement (with "eye" it did not).
+  const PlacedRun twoLevels = runAblationView("depth", 2);
+  EXPECT_GT(imageDifference(twoLevels.indirect, depth.indirect), 0.05);
+  // The coarser finer level (level 1 of 3, the finest of 2) is the same grid in both runs.
+  EXPECT_EQ(twoLevels.placement[0].origin, depth.placement[1].origin);
+}
+
+TEST(CascadePipeline, DepthPlacementCentresTheFinerLevelsOnWhatTheCameraSees) {
+  const PlacedRun run = runAblationView("depth", 3);
+  // The median visible depth, from the depth output (0 where nothing was hit): the finest level,
+  // centred on the per-axis median of the visible positions, lies along the view around it.
+  std::vector<float> depths;
+  for (const float d : run.depth.pixels)
+    if (d > 0.0f) depths.push_back(d);
+  ASSERT_FALSE(depths.empty());
+  std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2), depths.end());
+  const double medianDepth = depths[depths.size() / 2];
+  const Experiment e = cornell(kAblationView);
+  const GridGeometry& finest = run.placement[0];
+  const glm::vec3 centre = finest.origin + 0.5f * finest.extent();
+  const double centreDepth = glm::dot(centre - e.camera.position, e.camera.forward);
+  // Within a quarter of the finest level's extent (the median point is off the view axis).
+  EXPECT_NEAR(centreDepth, medianDepth, 0.25 * finest.extent().x);
+  EXPECT_GT(centreDepth, 0.0);  // ahead of the camera, not around it
+}
+
+TEST(CascadePipeline, WithDepthPlacementAFrameThatSeesNothingFallsBackToTheEyeRule) {
+  test::glTestContext();
+  // The default camera turned round: it looks away from the open box and sees no surface.
+  Experiment e = cornell({"cascades.levels=3", "cascades.placement=\"depth\"",
+                          "cascades.view_shift=0.4", "camera.position=[0.28, 0.27, -0.3]",
+                          "camera.look_at=[0.28, 0.27, -1.0]", "camera.up=[0.0, 1.0, 0.0]"});
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  pipeline.renderFrame();
+  for (const NamedImage& image : pipeline.readOutputs()) {
+    if (image.name == "depth") {
+      ASSERT_EQ(*std::max_element(image.image.pixels.begin(), image.image.pixels.end()), 0.0f);
+    }
+  }
+  const std::vector<GridGeometry> eyeRule = placeCascadeLevels(
+      e.settings.grid, 3, e.camera.position, e.camera.forward, e.settings.cascades.viewShift);
+  for (std::size_t level = 0; level < 3; ++level)
+    EXPECT_EQ(pipeline.levels()[level].geometry.origin, eyeRule[level].origin) << "level " << level;
 }
 
 LevelsSnapshot injectedLight(bool carry) {

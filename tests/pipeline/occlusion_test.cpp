@@ -57,12 +57,13 @@ public:
 
   // The GV's blocking coefficients after the strategy with these sources injected.
   Grid inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
-                bool skipFirst = true) {
+                bool skipFirst = true, double blockingScale = 1.0) {
     toml::table table;
     toml::array list;
     for (const std::string& source : sources) list.push_back(source);
     table.insert("sources", list);
     table.insert("skip_first_iteration", skipFirst);
+    table.insert("blocking_scale", blockingScale);
     Params params(table, "occlusion test", "occlusion");
     auto strategy = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
     params.finish();
@@ -177,6 +178,22 @@ TEST(Occlusion, MergeKeepsPerCellTheSourceWithTheLargerC0) {
             << " from the light views, " << bothEmpty << " empty\n";
   EXPECT_GT(fromCamera, 0);
   EXPECT_GT(fromLight, 0);
+}
+
+// blocking_scale multiplies every surfel's blocking, so the GV (merged by the larger c0, which
+// the common factor does not change) is linear in it.
+TEST(Occlusion, BlockingScaleMultipliesTheGv) {
+  GvScene scene;
+  const Grid one = scene.inject({"light", "camera"});
+  const Grid scaled = scene.inject({"light", "camera"}, nullptr, true, 2.5);
+  const Grid none = scene.inject({"light", "camera"}, nullptr, true, 0.0);
+  double largest = 0.0;
+  for (float v : one) largest = std::max(largest, double(std::abs(v)));
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    ASSERT_NEAR(scaled[i], 2.5 * one[i], 1e-5 * 2.5 * largest) << "coefficient " << i;
+    ASSERT_EQ(none[i], 0.0f) << "coefficient " << i;
+  }
 }
 
 TEST(Occlusion, SkipFirstIterationSetsTheFirstOccludedIteration) {

@@ -20,6 +20,11 @@
 // | skip_first_iteration | bool     | true                | propagation step 0 ignores the GV:   |
 // |                      |          |                     | a VPL's light leaves its cell past   |
 // |                      |          |                     | its own surface's surfels            |
+// | blocking_scale       | float    | 1.0                 | every surfel's blocking potential    |
+// |                      |          |                     | times this (0..100), a constant to   |
+// |                      |          |                     | fit (docs/fitting.md): the GV is     |
+// |                      |          |                     | linear in it; the transmittance      |
+// |                      |          |                     | clamp(1 - B, 0, 1) only where B < 1  |
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +44,8 @@ namespace {
 class GeometryVolumeOcclusion final : public OcclusionStrategy {
 public:
   explicit GeometryVolumeOcclusion(Params& params)
-      : skipFirstIteration_(params.get<bool>("skip_first_iteration", true)) {
+      : skipFirstIteration_(params.get<bool>("skip_first_iteration", true)),
+        blockingScale_(params.get<float>("blocking_scale", 1.0f, {.min = 0.0f, .max = 100.0f})) {
     const auto sources =
         params.get<std::vector<std::string>>("sources", {"light", "camera"});
     for (const std::string& source : sources) {
@@ -95,8 +101,8 @@ public:
   std::size_t memoryBytes() const override { return lightScratch_.size(); }
 
 private:
-  // What both injection kernels read first: the GV's placement (uniforms 0-2), the surfels'
-  // positions, normals and what gives their albedo (texture units 0, 1, 2), the GV they add to
+  // What both injection kernels read first: the GV's placement (uniforms 0-2), the blocking
+  // scale (uniform 6), the surfels' positions, normals and what gives their albedo (texture units 0, 1, 2), the GV they add to
   // (storage 0) and, when asked for, the GV's albedo (storage 3).
   void useInjection(const Program& program, const GeometryVolume& gv, const gl::Texture& position,
                     const gl::Texture& normal, const gl::Texture& albedoSource,
@@ -105,6 +111,7 @@ private:
     glUniform3fv(0, 1, &gv.geometry.origin[0]);
     glUniform1f(1, gv.geometry.cellSize);
     glUniform3iv(2, 1, &gv.geometry.resolution[0]);
+    glUniform1f(6, blockingScale_);
     glBindTextureUnit(0, position.id());
     glBindTextureUnit(1, normal.id());
     target.bindStorage(0);
@@ -135,6 +142,7 @@ private:
   }
 
   bool skipFirstIteration_;
+  float blockingScale_;
   bool fromLight_ = false, fromCamera_ = false;
   bool withAlbedo_ = false;
   Program camera_, rsm_, merge_;

@@ -8,6 +8,11 @@
 //   2. `iterations` gather steps on the lattice (tetrahedral_gather.comp), summing every step;
 //   3. merge (tetrahedral_merge.comp): the sum is added to the cubic `accumulated`, and the last
 //      step, resampled, becomes the cubic `current`.
+// Each far face's flux is the exact integral of the neighbour's SH intensity over the face
+// (`face_flux = "integral"`, precomputed per face: framework/math/tetrahedral_face_integrals.h),
+// which conserves flux for every SH function; "centre" is the standard method's one-point
+// quadrature (solid angle times the intensity towards the face's centroid), which gains light
+// through the clamp at every step.
 // A step moves light sqrt(2)/4 = 0.354 cube edges (the distance between neighbouring centroids),
 // so crossing a grid takes about 2.8 times the standard method's iterations.
 // Any SH order up to 3 (the lattice holds as many coefficients per cell as the grid). When an
@@ -19,13 +24,16 @@
 // | parameter  | type | default | meaning                                                     |
 // |------------|------|---------|-------------------------------------------------------------|
 // | iterations | int  | 90      | lattice steps (0..16384); 90 moves light about 32 cube edges |
+// | face_flux  | text | integral | "integral": exact SH integral over each face; "centre": solid angle x intensity towards its centroid |
 
 #include <utility>
+#include <vector>
 
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
+#include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
@@ -42,7 +50,8 @@ constexpr int kCellsPerCube = 12;
 class TetrahedralPropagation final : public PropagationStrategy {
 public:
   explicit TetrahedralPropagation(Params& params)
-      : iterations_(params.get<int>("iterations", 90, {.min = 0, .max = 16384})) {}
+      : iterations_(params.get<int>("iterations", 90, {.min = 0, .max = 16384})),
+        faceIntegrals_(params.getChoice("face_flux", "integral", {"integral", "centre"}) == "integral") {}
 
   int maxShOrder() const override { return 3; }
 
@@ -55,7 +64,14 @@ public:
                               {SpecConstant::f(0, float(angles.smallFace)),
                                SpecConstant::f(1, float(angles.largeFace)),
                                SpecConstant::i(2, coefficients),
-                               SpecConstant::b(3, requirements.geometryVolume)});
+                               SpecConstant::b(3, requirements.geometryVolume),
+                               SpecConstant::b(4, faceIntegrals_)});
+    if (faceIntegrals_) {
+      const std::vector<double>& table = tetrahedralFaceIntegrals();
+      const std::vector<float> values(table.begin(), table.end());
+      faceIntegralTable_ = gl::Buffer(values.size() * sizeof(float), "tetrahedral face integrals",
+                                      values.data());
+    }
     merge_ = shaders.compute("propagation/tetrahedral_merge.comp", {SpecConstant::i(0, coefficients)});
     // The lattice holds 12 cells per cube, each with the light grid's coefficients.
     const std::size_t bytes = std::size_t(kCellsPerCube) * LightGrid::bytesPerGrid(grid, requirements.shOrder);
@@ -83,6 +99,7 @@ public:
     // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
     const GeometryVolume* gv = frame.geometryVolume;
     if (gv) gv->blocking.bindStorage(3);
+    if (faceIntegrals_) faceIntegralTable_.bindStorage(4);
     const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
     for (int i = 0; i < iterations_; ++i) {
       if (gv) glUniform1i(1, i >= firstOccluded);
@@ -103,13 +120,14 @@ public:
 
   int iterations() const override { return iterations_; }
   std::size_t memoryBytes() const override {
-    return current_.size() + scratch_.size() + sum_.size();
+    return current_.size() + scratch_.size() + sum_.size() + faceIntegralTable_.size();
   }
 
 private:
   int iterations_;
+  bool faceIntegrals_;
   Program split_, gather_, merge_;
-  gl::Buffer current_, scratch_, sum_;
+  gl::Buffer current_, scratch_, sum_, faceIntegralTable_;
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "tetrahedral",
