@@ -1,14 +1,18 @@
 // `lpvlab fit FILE`: fits the strategy constants named by FILE's [fit] table to the path-traced
 // references of its views (docs/fitting.md), printing a line per iteration, and writes
-// DIR/fit.json, DIR/fitted.toml and DIR/fit.md (framework/fit/fit_output.h).
+// DIR/fit.json, DIR/fitted.toml and DIR/fit.md (framework/fit/fit_output.h). Its progress goes to
+// DIR/fit.progress.json after every iteration, so an interrupted fit run again resumes
+// (framework/fit/fit_checkpoint.h).
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "framework/cli/commands.h"
 #include "framework/core/progress.h"
+#include "framework/fit/fit_checkpoint.h"
 #include "framework/fit/fit_output.h"
 #include "framework/gl/context.h"
 
@@ -54,19 +58,42 @@ int fitCommand(const Options& options) {
   for (const FitParameter& p : spec.parameters) initial.push_back(p.initial);
   const nlohmann::json before = evaluator.errors(initial);
 
+  const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
+  const std::string key = fitKey(spec);
+  bool otherFit = false;
+  const std::optional<FitProgress> resume = readFitProgress(progressPath, key, &otherFit);
+  if (resume)
+    std::cerr << "lpvlab: fit: resuming after iteration " << resume->log.back().iteration << " from "
+              << progressPath << " (delete it to start over)\n";
+  else if (otherFit)
+    std::cerr << "lpvlab: fit: " << progressPath << " is another fit's progress (the file or its "
+              << "overrides changed): starting over\n";
+  std::filesystem::create_directories(dir);
+  FitProgress progress = resume.value_or(FitProgress{});
+  const int resumedIterations = resume ? resume->log.back().iteration : 0;
+  const int resumedRenders = progress.renders;
+  const std::size_t rendersBefore = evaluator.evaluated().size();  // the errors before the fit
+  const double resumedSeconds = progress.seconds;
+
   const auto start = std::chrono::steady_clock::now();
   const FitResult result = runFit(evaluator, [&](const FitIteration& it) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double perIteration = it.iteration > 0 ? elapsed / it.iteration : -1.0;  // "?" first
+    progress.log.push_back(it);
+    progress.renders = resumedRenders + int(evaluator.evaluated().size() - rendersBefore);
+    progress.seconds = resumedSeconds + elapsed;
+    writeFitProgress(progressPath, key, progress);
+    const int doneHere = it.iteration - resumedIterations;
+    const double perIteration = doneHere > 0 ? elapsed / doneHere : -1.0;  // "?" first
     std::fprintf(stderr, "fit: iteration %d/%d  cost %.6e  |gradient| %.3e  %s  %s  (%zu renderings, elapsed %s, at most %s more)\n",
                  it.iteration, spec.maxIterations, it.cost, it.gradientMaxNorm,
                  it.iteration == 0 ? "initial" : it.successful ? "step taken" : "step rejected",
-                 parameterLine(spec, it.x).c_str(), evaluator.evaluated().size(),
-                 ProgressBar::formatSeconds(elapsed).c_str(),
+                 parameterLine(spec, it.x).c_str(), std::size_t(progress.renders),
+                 ProgressBar::formatSeconds(progress.seconds).c_str(),
                  ProgressBar::formatSeconds(perIteration * (spec.maxIterations - it.iteration)).c_str());
-  });
+  }, resume ? &*resume : nullptr);
   const nlohmann::json after = evaluator.errors(result.values);
   writeFitOutputs(dir, spec, result, before, after);
+  std::filesystem::remove(progressPath);  // the outputs record the finished fit
 
   std::printf("%s after %zu iterations, %d renderings, %s: %s\n",
               result.converged ? "converged" : "NOT converged", result.log.empty() ? 0 : result.log.size() - 1,

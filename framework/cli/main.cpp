@@ -68,7 +68,8 @@ int main(int argc, char** argv) {
 
   CLI::App* fit = app.add_subcommand(
       "fit", "Fit the strategy constants named by an experiment's [fit] table to the path-traced "
-             "references of its views; write DIR/fit.json, DIR/fitted.toml and the report DIR/fit.md");
+             "references of its views; write DIR/fit.json, DIR/fitted.toml and the report DIR/fit.md "
+             "(resumable: an interrupted fit run again goes on from DIR/fit.progress.json)");
   fit->add_option("experiment", options.experiment, "Experiment file (TOML) with a [fit] table")
       ->required();
   fit->add_option("-o,--out", options.out, "Fit directory (default: runs/<file stem>-fit)");

@@ -1,5 +1,6 @@
 #include "framework/fit/fit_problem.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -92,15 +93,18 @@ private:
   mutable std::vector<std::vector<double>> columns_;  // and its Jacobian columns (empty: not yet)
 };
 
+// Appends each iteration to the result's log; a resumed solve numbers its iterations after
+// `done` and leaves out its iteration 0 (the resumed point, already logged).
 class LogCallback final : public ceres::IterationCallback {
 public:
   LogCallback(const std::vector<double>& x, FitResult& result,
-              const std::function<void(const FitIteration&)>& onIteration)
-      : x_(x), result_(result), onIteration_(onIteration) {}
+              const std::function<void(const FitIteration&)>& onIteration, int done, double seconds)
+      : x_(x), result_(result), onIteration_(onIteration), done_(done), seconds_(seconds) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    FitIteration it{s.iteration, s.cost, s.gradient_max_norm, s.step_norm, s.step_is_successful,
-                    s.cumulative_time_in_seconds, x_};
+    if (done_ > 0 && s.iteration == 0) return ceres::SOLVER_CONTINUE;
+    FitIteration it{done_ + s.iteration, s.cost, s.gradient_max_norm, s.step_norm, s.step_is_successful,
+                    seconds_ + s.cumulative_time_in_seconds, x_};
     result_.log.push_back(it);
     if (onIteration_) onIteration_(it);
     return ceres::SOLVER_CONTINUE;
@@ -110,6 +114,8 @@ private:
   const std::vector<double>& x_;
   FitResult& result_;
   const std::function<void(const FitIteration&)>& onIteration_;
+  int done_;
+  double seconds_;
 };
 
 // The residuals and the Jacobian (column j: parameter j) at `x`; the cost function keeps them,
@@ -172,13 +178,24 @@ std::vector<double> sandwichDeviations(const FitEvaluator& evaluator, const Eige
 
 }  // namespace
 
-FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIteration&)>& onIteration) {
+FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIteration&)>& onIteration,
+                 const FitProgress* resume) {
   const auto start = std::chrono::steady_clock::now();
   const FitSpec& spec = evaluator.spec();
   const std::size_t p = spec.parameters.size();
   FitResult result;
   for (const FitParameter& parameter : spec.parameters) result.initial.push_back(parameter.initial);
   std::vector<double> x = result.initial;
+  const std::size_t rendersBefore = evaluator.evaluated().size();  // e.g. the errors before the fit
+  const bool resumed = resume && !resume->log.empty();
+  const int done = resumed ? resume->log.back().iteration : 0;
+  if (resumed) {
+    if (resume->log.back().x.size() != p)
+      throw Error(spec.file + ": the progress to resume has " + std::to_string(resume->log.back().x.size()) +
+                  " parameter values, the fit " + std::to_string(p));
+    x = resume->log.back().x;
+    result.log = resume->log;
+  }
 
   ImageCost cost(evaluator);
   ceres::Problem::Options problemOptions;
@@ -194,7 +211,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
 
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = spec.maxIterations;
+  options.max_num_iterations = std::max(0, spec.maxIterations - done);
   options.num_threads = 1;  // one GL context, used from this thread only
   options.logging_type = ceres::SILENT;
   options.minimizer_progress_to_stdout = false;
@@ -206,13 +223,13 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   // rejected step (and turns it towards the gradient) at one rendering per view. So it is off:
   // steps are projected onto the bounds (Ceres's Plus) and judged by the trust region alone.
   options.max_num_line_search_step_size_iterations = 0;
-  LogCallback callback(x, result, onIteration);
+  LogCallback callback(x, result, onIteration, done, resumed ? resume->seconds : 0.0);
   options.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   cost.rethrow();
   result.values = x;
-  result.initialCost = summary.initial_cost;
+  result.initialCost = resumed ? resume->log.front().cost : summary.initial_cost;
   result.finalCost = summary.final_cost;
   result.termination = summary.message;
   result.converged = summary.termination_type == ceres::CONVERGENCE;
@@ -253,8 +270,9 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
       result.stdDev[j] = std::sqrt(std::max(0.0, c * variance));
     }
   }
-  result.renders = int(evaluator.evaluated().size());
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.renders = int(evaluator.evaluated().size() - rendersBefore) + (resumed ? resume->renders : 0);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
+                   (resumed ? resume->seconds : 0.0);
   return result;
 }
 

@@ -64,8 +64,20 @@ struct FitResult {
   std::vector<FitIteration> log;
 };
 
-// Runs the fit; `onIteration` is called after each iteration (for progress lines).
+// Where an interrupted fit left off (fit_checkpoint.h): its iterations so far (iteration 0 the
+// start), and the renderings and seconds they took.
+struct FitProgress {
+  std::vector<FitIteration> log;
+  int renders = 0;
+  double seconds = 0.0;
+};
+
+// Runs the fit; `onIteration` is called after each iteration (for progress lines and
+// checkpoints). With `resume` the solve starts at its last iteration's x with the iterations
+// `max_iterations` leaves, and the log, numbering, renderings, time and initial cost continue
+// it (Ceres's trust-region radius starts afresh).
 FitResult runFit(FitEvaluator& evaluator,
-                 const std::function<void(const FitIteration&)>& onIteration = {});
+                 const std::function<void(const FitIteration&)>& onIteration = {},
+                 const FitProgress* resume = nullptr);
 
 }  // namespace lpvlab

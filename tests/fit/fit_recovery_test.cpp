@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "fit/fit_test_support.h"
+#include "fit/synthetic_views.h"
 #include "framework/experiment/experiment.h"
 #include "framework/fit/fit_output.h"
 #include "framework/pipeline/pipeline.h"
@@ -20,40 +21,14 @@
 namespace lpvlab {
 namespace {
 
-// The fit file's views with targets rendered by the pipeline itself at `truth`, plus noise.
-std::vector<FitView> syntheticViews(const FitSpec& spec, const std::vector<double>& truth) {
-  std::vector<FitView> views;
-  for (const FitViewSpec& v : spec.views) {
-    FitView view{v.name, false, spec.viewTable(v), Image(64, 64, 3)};
-    views.push_back(std::move(view));
-  }
-  FitEvaluator renderer(spec, views);
-  std::mt19937_64 random(20261121);
-  for (FitView& view : views) {
-    const ViewRender r = renderer.render(view, truth);
-    double mean = 0.0;
-    for (float v : r.indirect.pixels) mean += v;
-    mean /= double(r.indirect.pixels.size());
-    std::normal_distribution<double> noise(0.0, 0.02 * mean);
-    view.target = r.indirect;
-    for (float& v : view.target.pixels) v = float(v + noise(random));
-  }
-  return views;
-}
-
-FitSpec specFor(const test::FitFiles& files, int iterations, const std::string& fit) {
-  return readFitSpec(files.write("fit.toml", test::smallCornellBox(iterations) + "[fit]\n" + fit +
-                                                 "[[fit.views]]\nname = \"main\"\n"));
-}
-
 TEST(FitRecovery, RecoversAPerturbedDampingWithinItsUncertainty) {
   test::glTestContext();
   test::FitFiles files("recovery");
-  const FitSpec spec = specFor(files, 16,
+  const FitSpec spec = test::smallFitSpec(files, 16,
       "parameters = [{ key = \"propagation.damping\", initial = 1.0, lower = 0.5, upper = 1.5 }]\n"
       "tile = 4\n");  // 256 tiles: the sandwich's own spread is about 5%
   const double truth = 0.85;
-  FitEvaluator evaluator(spec, syntheticViews(spec, {truth}));
+  FitEvaluator evaluator(spec, test::syntheticViews(spec, {truth}));
   const FitResult result = runFit(evaluator);
   ASSERT_FALSE(result.undetermined[0]);
   EXPECT_FALSE(result.atBound[0]);
@@ -76,10 +51,10 @@ TEST(FitRecovery, RecoversAPerturbedDampingWithinItsUncertainty) {
 TEST(FitRecovery, KeepsToItsBounds) {
   test::glTestContext();
   test::FitFiles files("bounds");
-  const FitSpec spec = specFor(files, 16,
+  const FitSpec spec = test::smallFitSpec(files, 16,
       "parameters = [{ key = \"propagation.damping\", initial = 1.0, lower = 0.9, upper = 1.2 }]\n"
       "max_iterations = 10\n");
-  FitEvaluator evaluator(spec, syntheticViews(spec, {0.7}));  // the truth lies below the bound
+  FitEvaluator evaluator(spec, test::syntheticViews(spec, {0.7}));  // the truth lies below the bound
   const FitResult result = runFit(evaluator);
   EXPECT_NEAR(result.values[0], 0.9, 1e-9);
   EXPECT_TRUE(result.atBound[0]);
@@ -94,11 +69,11 @@ TEST(FitRecovery, AParameterWithoutEffectIsUndetermined) {
   test::FitFiles files("undetermined");
   // Without propagation iterations the damping changes nothing; the rendering's normal offset
   // (where the grid is read) does.
-  const FitSpec spec = specFor(files, 0,
+  const FitSpec spec = test::smallFitSpec(files, 0,
       "parameters = [{ key = \"propagation.damping\", lower = 0.5, upper = 1.5 },\n"
       "              { key = \"rendering.normal_offset\", lower = -0.5, upper = 1.0 }]\n"
       "max_iterations = 10\n");
-  FitEvaluator evaluator(spec, syntheticViews(spec, {0.8, 0.3}));
+  FitEvaluator evaluator(spec, test::syntheticViews(spec, {0.8, 0.3}));
   const FitResult result = runFit(evaluator);
   EXPECT_TRUE(result.undetermined[0]);
   EXPECT_TRUE(std::isnan(result.stdDev[0]));
@@ -118,7 +93,7 @@ TEST(FitRecovery, AParameterWithoutEffectIsUndetermined) {
 TEST(FitConstants, TrilinearScaleMultipliesTheIndirectLight) {
   test::glTestContext();
   test::FitFiles files("scale");
-  const FitSpec spec = specFor(files, 4, "parameters = [{ key = \"rendering.scale\" }]\n");
+  const FitSpec spec = test::smallFitSpec(files, 4, "parameters = [{ key = \"rendering.scale\" }]\n");
   ASSERT_EQ(spec.parameters[0].initial, 1.0);
   FitEvaluator evaluator(spec, {FitView{"main", false, spec.viewTable(spec.views[0]), Image(64, 64, 3)}});
   const Image one = evaluator.render(evaluator.views()[0], {1.0}).indirect;
