@@ -148,15 +148,12 @@ def to_markdown(agg):
     equal settings and at equal time (baseline rows first, then by total time)."""
     from .tables import fmt
     out = []
-    for m in metrics_present(agg):
-        t = compare(agg, m)
-        if t.empty:
-            continue
+    for m, t in _comparisons(agg):
         out.append(f"### {_title(m)}\n")
         out.append("| scene | configuration | baseline | res | total ms | propagation ms | error | "
                    "baseline error, equal settings | ratio | baseline error, equal time | ratio |")
         out.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-        for _, r in _ordered(t).iterrows():
+        for _, r in t.iterrows():
             time_err = r["time status"] or fmt(r["time error"])
             cells = [r["scene"], r["config_name"], "yes" if r["baseline"] else "", fmt(r["resolution"]),
                      fmt(r["total ms"]), fmt(r["propagation ms"]), fmt(r["error"]), fmt(r["settings error"]),
@@ -207,21 +204,26 @@ def _ordered(t):
     return t.sort_values(["scene", "baseline", "total ms"], ascending=[True, False, True], kind="mergesort")
 
 
+def _comparisons(agg):
+    """(metric, its comparison table in row order) for every metric that has one."""
+    for m in metrics_present(agg):
+        t = compare(agg, m)
+        if not t.empty:
+            yield m, _ordered(t)
+
+
 def to_html(agg):
     """The same tables in HTML (ratios below 1 in bold: the configuration wins)."""
     import html
     from .tables import fmt
     out = []
-    for m in metrics_present(agg):
-        t = compare(agg, m)
-        if t.empty:
-            continue
+    for m, t in _comparisons(agg):
         out.append(f"<h3>{html.escape(_title(m))}</h3>")
         out.append('<table class="equal_time"><thead><tr><th>scene</th><th>configuration</th><th>baseline</th>'
                    "<th>res</th><th>total ms</th><th>propagation ms</th><th>error</th>"
                    "<th>baseline error, equal settings</th><th>ratio</th>"
                    "<th>baseline error, equal time</th><th>ratio</th></tr></thead><tbody>")
-        for _, r in _ordered(t).iterrows():
+        for _, r in t.iterrows():
             def num(v, bold=False):
                 s = html.escape(fmt(v))
                 return f"<td class='num'>{'<b>' + s + '</b>' if bold else s}</td>"

@@ -46,18 +46,7 @@ int fitCommand(const Options& options) {
   const std::string dir = options.out.empty()
                               ? "runs/" + std::filesystem::path(options.experiment).stem().string() + "-fit"
                               : options.out;
-  const toml::node* backend = spec.base.at_path("gl.backend").node();
-  const auto context = GlContext::create(backend && backend->is_string() ? backend->as_string()->get() : "auto");
-  std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
-            << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
-            << context->renderer() << "\n";
-  SceneCache scenes;
-  std::vector<FitView> views = makeFitViews(spec, scenes);
-  FitEvaluator evaluator(spec, std::move(views), std::move(scenes));
-  std::vector<double> initial;
-  for (const FitParameter& p : spec.parameters) initial.push_back(p.initial);
-  const nlohmann::json before = evaluator.errors(initial);
-
+  // Read before any rendering, so a damaged progress file stops the fit at once.
   const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
   const std::string key = fitKey(spec);
   bool otherFit = false;
@@ -71,16 +60,25 @@ int fitCommand(const Options& options) {
   std::filesystem::create_directories(dir);
   FitProgress progress = resume.value_or(FitProgress{});
   const int resumedIterations = resume ? resume->log.back().iteration : 0;
-  const int resumedRenders = progress.renders;
-  const std::size_t rendersBefore = evaluator.evaluated().size();  // the errors before the fit
-  const double resumedSeconds = progress.seconds;
+
+  const toml::node* backend = spec.base.at_path("gl.backend").node();
+  const auto context = GlContext::create(backend && backend->is_string() ? backend->as_string()->get() : "auto");
+  std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
+            << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
+            << context->renderer() << "\n";
+  SceneCache scenes;
+  std::vector<FitView> views = makeFitViews(spec, scenes);
+  FitEvaluator evaluator(spec, std::move(views), std::move(scenes));
+  std::vector<double> initial;
+  for (const FitParameter& p : spec.parameters) initial.push_back(p.initial);
+  const nlohmann::json before = evaluator.errors(initial);
 
   const auto start = std::chrono::steady_clock::now();
   const FitResult result = runFit(evaluator, [&](const FitIteration& it) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress.log.push_back(it);
-    progress.renders = resumedRenders + int(evaluator.evaluated().size() - rendersBefore);
-    progress.seconds = resumedSeconds + elapsed;
+    progress.renders = it.renders;
+    progress.seconds = it.seconds;
     writeFitProgress(progressPath, key, progress);
     const int doneHere = it.iteration - resumedIterations;
     const double perIteration = doneHere > 0 ? elapsed / doneHere : -1.0;  // "?" first

@@ -46,6 +46,20 @@ Light readLight(Params& p) {
   return light;
 }
 
+// The index of the item named by `p`'s `key` in `items` (a scene's meshes or materials); an
+// Error naming the key, the scene and the names it has if there is none.
+template <class Item>
+int findNamed(Params& p, const std::string& key, const std::vector<Item>& items, const Scene& scene,
+              const char* what) {
+  const std::string name = p.require<std::string>(key);
+  const auto found = std::find_if(items.begin(), items.end(), [&](const Item& i) { return i.name == name; });
+  if (found != items.end()) return int(found - items.begin());
+  std::string names;
+  for (const Item& item : items) names += (names.empty() ? "" : ", ") + item.name;
+  throw Error(p.where(key) + ": the scene " + scene.source + " has no " + what + " '" + name +
+              "' (it has: " + names + ")");
+}
+
 // A [[materials]] table: translucency (thesis 5.4; read by rendering "subsurface") and optionally
 // another base colour for the scene's material `name`, or for the material of one mesh only
 // (`mesh`: that mesh gets its own copy of its material, named "<material> (<mesh>)"). The
@@ -53,31 +67,15 @@ Light readLight(Params& p) {
 void readMaterialOverride(Params& p, Scene& scene) {
   if (p.has("name") == p.has("mesh"))
     throw Error(p.where("name") + ": give exactly one of name (a material) and mesh (a mesh)");
-  const auto list = [](const auto& items) {
-    std::string names;
-    for (const auto& item : items) names += (names.empty() ? "" : ", ") + item.name;
-    return names;
-  };
   int index = -1;
   if (p.has("mesh")) {
-    const std::string meshName = p.require<std::string>("mesh");
-    const auto mesh = std::find_if(scene.meshes.begin(), scene.meshes.end(),
-                                   [&](const Mesh& m) { return m.name == meshName; });
-    if (mesh == scene.meshes.end())
-      throw Error(p.where("mesh") + ": the scene " + scene.source + " has no mesh '" + meshName +
-                  "' (it has: " + list(scene.meshes) + ")");
-    Material copy = scene.materials.at(mesh->material);
-    copy.name += " (" + meshName + ")";
+    Mesh& mesh = scene.meshes[std::size_t(findNamed(p, "mesh", scene.meshes, scene, "mesh"))];
+    Material copy = scene.materials.at(mesh.material);
+    copy.name += " (" + mesh.name + ")";
     scene.materials.push_back(copy);
-    index = mesh->material = int(scene.materials.size()) - 1;
+    index = mesh.material = int(scene.materials.size()) - 1;
   } else {
-    const std::string name = p.require<std::string>("name");
-    const auto found = std::find_if(scene.materials.begin(), scene.materials.end(),
-                                    [&](const Material& m) { return m.name == name; });
-    if (found == scene.materials.end())
-      throw Error(p.where("name") + ": the scene " + scene.source + " has no material '" + name +
-                  "' (it has: " + list(scene.materials) + ")");
-    index = int(found - scene.materials.begin());
+    index = findNamed(p, "name", scene.materials, scene, "material");
   }
   Material& material = scene.materials[index];
   const Range<glm::vec3> unit{.min = glm::vec3(0.0f), .max = glm::vec3(1.0f)};

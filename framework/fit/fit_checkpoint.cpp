@@ -64,9 +64,7 @@ std::optional<FitProgress> readFitProgress(const std::string& path, const std::s
                               it.at("x").get<std::vector<double>>()});
     if (progress.log.empty()) throw Error("no iterations");
     return progress;
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(path + ": not a fit's progress file (" + e.what() + "); delete it to start over");
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // the JSON's errors and the empty log's alike
     throw Error(path + ": not a fit's progress file (" + e.what() + "); delete it to start over");
   }
 }

@@ -93,29 +93,37 @@ private:
   mutable std::vector<std::vector<double>> columns_;  // and its Jacobian columns (empty: not yet)
 };
 
-// Appends each iteration to the result's log; a resumed solve numbers its iterations after
-// `done` and leaves out its iteration 0 (the resumed point, already logged).
+// Appends each iteration to the result's log, with the renderings and seconds so far; a resumed
+// solve continues `resume`'s numbering, renderings and time and leaves out its iteration 0 (the
+// resumed point, already logged).
 class LogCallback final : public ceres::IterationCallback {
 public:
-  LogCallback(const std::vector<double>& x, FitResult& result,
-              const std::function<void(const FitIteration&)>& onIteration, int done, double seconds)
-      : x_(x), result_(result), onIteration_(onIteration), done_(done), seconds_(seconds) {}
+  LogCallback(const std::vector<double>& x, FitResult& result, const FitEvaluator& evaluator,
+              const std::function<void(const FitIteration&)>& onIteration, const FitProgress* resume)
+      : x_(x), result_(result), evaluator_(evaluator), onIteration_(onIteration),
+        rendersBefore_(evaluator.evaluated().size()), resume_(resume) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    if (done_ > 0 && s.iteration == 0) return ceres::SOLVER_CONTINUE;
-    FitIteration it{done_ + s.iteration, s.cost, s.gradient_max_norm, s.step_norm, s.step_is_successful,
-                    seconds_ + s.cumulative_time_in_seconds, x_};
+    if (resume_ && s.iteration == 0) return ceres::SOLVER_CONTINUE;
+    FitIteration it{(resume_ ? resume_->log.back().iteration : 0) + s.iteration, s.cost,
+                    s.gradient_max_norm, s.step_norm, s.step_is_successful,
+                    (resume_ ? resume_->seconds : 0.0) + s.cumulative_time_in_seconds, x_,
+                    (resume_ ? resume_->renders : 0) + renders()};
     result_.log.push_back(it);
     if (onIteration_) onIteration_(it);
     return ceres::SOLVER_CONTINUE;
   }
 
+  // The solve's own renderings so far.
+  int renders() const { return int(evaluator_.evaluated().size() - rendersBefore_); }
+
 private:
   const std::vector<double>& x_;
   FitResult& result_;
+  const FitEvaluator& evaluator_;
   const std::function<void(const FitIteration&)>& onIteration_;
-  int done_;
-  double seconds_;
+  const std::size_t rendersBefore_;  // e.g. the errors measured before the fit
+  const FitProgress* resume_;        // null, or a non-empty log
 };
 
 // The residuals and the Jacobian (column j: parameter j) at `x`; the cost function keeps them,
@@ -186,7 +194,6 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   FitResult result;
   for (const FitParameter& parameter : spec.parameters) result.initial.push_back(parameter.initial);
   std::vector<double> x = result.initial;
-  const std::size_t rendersBefore = evaluator.evaluated().size();  // e.g. the errors before the fit
   const bool resumed = resume && !resume->log.empty();
   const int done = resumed ? resume->log.back().iteration : 0;
   if (resumed) {
@@ -223,7 +230,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   // rejected step (and turns it towards the gradient) at one rendering per view. So it is off:
   // steps are projected onto the bounds (Ceres's Plus) and judged by the trust region alone.
   options.max_num_line_search_step_size_iterations = 0;
-  LogCallback callback(x, result, onIteration, done, resumed ? resume->seconds : 0.0);
+  LogCallback callback(x, result, evaluator, onIteration, resumed ? resume : nullptr);
   options.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
@@ -270,7 +277,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
       result.stdDev[j] = std::sqrt(std::max(0.0, c * variance));
     }
   }
-  result.renders = int(evaluator.evaluated().size() - rendersBefore) + (resumed ? resume->renders : 0);
+  result.renders = callback.renders() + (resumed ? resume->renders : 0);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
                    (resumed ? resume->seconds : 0.0);
   return result;

@@ -43,6 +43,7 @@ struct FitIteration {
   bool successful = false;        // the step was taken
   double seconds = 0.0;           // since the solve started
   std::vector<double> x;          // parameter values after the iteration
+  int renders = 0;                // view renderings of the solve so far
 };
 
 struct FitResult {
@@ -65,7 +66,7 @@ struct FitResult {
 };
 
 // Where an interrupted fit left off (fit_checkpoint.h): its iterations so far (iteration 0 the
-// start), and the renderings and seconds they took.
+// start), and the renderings and seconds they took (the last iteration's).
 struct FitProgress {
   std::vector<FitIteration> log;
   int renders = 0;
