@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libglm-dev                       # vectors and matrices (GLSL-compatible)
-  glslang-dev                      # GLSL -> SPIR-V at run time
+  glslang-dev glslang-tools        # GLSL -> SPIR-V at run time (glslang's CMake package names glslangValidator)
   libosmesa6-dev libegl-dev        # offscreen GL 4.5 (llvmpipe); EGL for GPUs
   python3-glad                     # generates the GL loader at build time
   libopenimageio-dev               # textures, EXR and PNG images

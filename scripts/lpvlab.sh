@@ -16,10 +16,12 @@ esac
 scripts/install-deps.sh
 jobs="$(nproc)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build -j "$jobs"
 
 if [ "$command" = run ]; then
+  # Only the lpvlab executable: the tests are built by the test command.
+  cmake --build build -j "$jobs" --target lpvlab
   exec build/lpvlab run "$@"
 fi
+cmake --build build -j "$jobs"
 cd build
 ctest --output-on-failure -j "$jobs"

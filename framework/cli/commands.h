@@ -16,6 +16,8 @@ struct Options {
   std::string cacheDir;                   // "" = the default reference cache
   bool tracer = false;                    // bench the path tracer instead of the LPV pipeline
   int tracerSamples = 4;                  // samples per pixel per timed pass
+  std::vector<std::string> tracerIsas;    // bench --tracer: instruction sets ("all": every one the CPU has)
+  std::vector<int> tracerWidths;          // bench --tracer: query widths (0: native)
   int jobs = 1;                           // sweep: configurations run in parallel
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
   std::string metric;                     // report: the error metric of the speed/accuracy plot

@@ -34,6 +34,13 @@ int main(int argc, char** argv) {
                   "Measure the reference path tracer instead: paths/s and rays/s");
   bench->add_option("--spp", options.tracerSamples, "With --tracer: samples per pixel per pass")
       ->check(CLI::Range(1, 1 << 20));
+  bench->add_option("--isa", options.tracerIsas,
+                    "With --tracer: Embree instruction sets to measure (sse4.2, avx, avx2, avx512, "
+                    "auto; all = every one this CPU has)")
+      ->delimiter(',');
+  bench->add_option("--packet-width", options.tracerWidths,
+                    "With --tracer: rays per Embree query to measure (0 = native, 1, 4, 8, 16)")
+      ->delimiter(',');
 
   CLI::App* reference = app.add_subcommand(
       "reference", "Render (or reuse from the cache) the path-traced reference of an experiment");

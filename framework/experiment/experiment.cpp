@@ -249,6 +249,23 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
+  std::vector<std::string> isas = {"auto"};
+  isas.insert(isas.end(), embreeInstructionSets().begin(), embreeInstructionSets().end());
+  e.reference.tracer.engine.isa = reference.getChoice("isa", "auto", isas);
+  const std::vector<std::string> supported = supportedInstructionSets();
+  if (e.reference.tracer.engine.isa != "auto" &&
+      std::find(supported.begin(), supported.end(), e.reference.tracer.engine.isa) == supported.end()) {
+    std::string has;
+    for (const std::string& isa : supported) has += (has.empty() ? "" : ", ") + isa;
+    throw Error(reference.where("isa") + ": this CPU lacks '" + e.reference.tracer.engine.isa +
+                "' (it has " + has + ")");
+  }
+  e.reference.tracer.engine.packetWidth = reference.get<int>("packet_width", 0, {.min = 0, .max = 16});
+  const auto& widths = rayPacketWidths();
+  if (std::find(widths.begin(), widths.end(), e.reference.tracer.engine.packetWidth) == widths.end())
+    throw Error(reference.where("packet_width") + ": " +
+                std::to_string(e.reference.tracer.engine.packetWidth) +
+                " is not one of 0 (the instruction set's native width), 1, 4, 8, 16");
   e.compareWithReference = reference.get<bool>("compare", false);
 
   Params metrics = params.table("metrics");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 #include <string>
 
 #include "framework/core/error.h"
@@ -72,7 +73,9 @@ void throwOnDeviceError(RTCDevice device, const char* step) {
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials) {
+EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+                         const RayEngineSettings& engine)
+    : device_(makeEmbreeDevice(engine)) {
   if (scene.triangleCount() == 0)
     throw Error("path tracer: scene '" + scene.source + "' has no triangles");
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -89,13 +92,12 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>&
   const glm::vec3 largest = glm::max(glm::abs(bounds.min), glm::abs(bounds.max));
   epsilon_ = 1e-4f * std::max({largest.x, largest.y, largest.z, glm::length(bounds.extent())});
 
-  device_.reset(rtcNewDevice(nullptr));
-  if (!device_) throw Error("path tracer: Embree could not create a device");
-  scene_.reset(rtcNewScene(device_.get()));
+  RTCDevice device = device_.device.get();
+  scene_.reset(rtcNewScene(device));
   rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_HIGH);
   for (const GeometryRecord& record : records_) {
     const Mesh& mesh = scene.meshes[record.meshIndex];
-    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // The scene holds the geometry from here on (so nothing leaks if a step below throws); ids
     // count up from 0 in attach order, which is records_'s order.
     rtcAttachGeometry(scene_.get(), geometry);
@@ -107,7 +109,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>&
     auto* triangles = static_cast<std::uint32_t*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                 3 * sizeof(std::uint32_t), mesh.indices.size() / 3));
-    throwOnDeviceError(device_.get(), "allocate geometry buffers");
+    throwOnDeviceError(device, "allocate geometry buffers");
     std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     std::memcpy(triangles, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
     if (record.material->alphaCutoff >= 0.0f) {
@@ -118,7 +120,119 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>&
     rtcCommitGeometry(geometry);
   }
   rtcCommitScene(scene_.get());
-  throwOnDeviceError(device_.get(), "build the scene");
+  throwOnDeviceError(device, "build the scene");
+}
+
+namespace {
+
+// A 16-ray packet goes to Embree in slices of N rays (N = the query width): each slice with an
+// active lane is copied into an N-wide packet, traced, and its results copied back. The copies
+// cost a few hundred bytes per slice, far below a traversal.
+
+template <class To, class From>
+void copyRay(To& to, int i, const From& from, int j) {
+  to.org_x[i] = from.org_x[j], to.org_y[i] = from.org_y[j], to.org_z[i] = from.org_z[j];
+  to.dir_x[i] = from.dir_x[j], to.dir_y[i] = from.dir_y[j], to.dir_z[i] = from.dir_z[j];
+  to.tnear[i] = from.tnear[j], to.tfar[i] = from.tfar[j], to.time[i] = from.time[j];
+  to.mask[i] = from.mask[j], to.id[i] = from.id[j], to.flags[i] = from.flags[j];
+}
+
+template <class To, class From>
+void copyHit(To& to, int i, const From& from, int j) {
+  to.u[i] = from.u[j], to.v[i] = from.v[j];
+  to.primID[i] = from.primID[j], to.geomID[i] = from.geomID[j];
+  to.instID[0][i] = from.instID[0][j];
+}
+
+// Embree's query of width N on an N-wide packet; width 1 goes through rtcIntersect1/rtcOccluded1,
+// whose RTCRayHit/RTCRay have the layout of a 1-wide packet.
+template <int N>
+void intersectN(const int* valid, RTCScene scene, RTCIntersectContext* context,
+                RTCRayHitNt<N>& query) {
+  if constexpr (N == 1) {
+    static_assert(sizeof(RTCRayHit) == sizeof(RTCRayHitNt<1>) &&
+                  std::is_trivially_copyable_v<RTCRayHit>);
+    alignas(16) RTCRayHit single;
+    std::memcpy(&single, &query, sizeof single);
+    rtcIntersect1(scene, context, &single);
+    std::memcpy(&query, &single, sizeof single);
+  } else if constexpr (N == 4) {
+    rtcIntersect4(valid, scene, context, reinterpret_cast<RTCRayHit4*>(&query));
+  } else if constexpr (N == 8) {
+    rtcIntersect8(valid, scene, context, reinterpret_cast<RTCRayHit8*>(&query));
+  }
+}
+
+template <int N>
+void occludedN(const int* valid, RTCScene scene, RTCIntersectContext* context, RTCRayNt<N>& query) {
+  if constexpr (N == 1) {
+    static_assert(sizeof(RTCRay) == sizeof(RTCRayNt<1>) && std::is_trivially_copyable_v<RTCRay>);
+    alignas(16) RTCRay single;
+    std::memcpy(&single, &query, sizeof single);
+    rtcOccluded1(scene, context, &single);
+    std::memcpy(&query, &single, sizeof single);
+  } else if constexpr (N == 4) {
+    rtcOccluded4(valid, scene, context, reinterpret_cast<RTCRay4*>(&query));
+  } else if constexpr (N == 8) {
+    rtcOccluded8(valid, scene, context, reinterpret_cast<RTCRay8*>(&query));
+  }
+}
+
+bool anyActive(const int* valid, int count) {
+  return std::any_of(valid, valid + count, [](int v) { return v != 0; });
+}
+
+template <int N>
+void intersectSlices(RTCScene scene, RTCIntersectContext* context, RayPacket& packet) {
+  for (int first = 0; first < kPacketWidth; first += N) {
+    if (!anyActive(packet.valid + first, N)) continue;
+    alignas(64) RTCRayHitNt<N> slice;
+    for (int i = 0; i < N; ++i) {
+      copyRay(slice.ray, i, packet.query.ray, first + i);
+      copyHit(slice.hit, i, packet.query.hit, first + i);
+    }
+    intersectN<N>(packet.valid + first, scene, context, slice);
+    for (int i = 0; i < N; ++i) {
+      packet.query.ray.tfar[first + i] = slice.ray.tfar[i];
+      copyHit(packet.query.hit, first + i, slice.hit, i);
+    }
+  }
+}
+
+template <int N>
+void occludedSlices(RTCScene scene, RTCIntersectContext* context, ShadowPacket& packet) {
+  for (int first = 0; first < kPacketWidth; first += N) {
+    if (!anyActive(packet.valid + first, N)) continue;
+    alignas(64) RTCRayNt<N> slice;
+    for (int i = 0; i < N; ++i) copyRay(slice, i, packet.query, first + i);
+    occludedN<N>(packet.valid + first, scene, context, slice);
+    for (int i = 0; i < N; ++i) packet.query.tfar[first + i] = slice.tfar[i];
+  }
+}
+
+}  // namespace
+
+void EmbreeScene::intersect(RayPacket& packet, bool coherent) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  switch (device_.packetWidth) {
+    case 16: rtcIntersect16(packet.valid, scene_.get(), &context, &packet.query); break;
+    case 8: intersectSlices<8>(scene_.get(), &context, packet); break;
+    case 4: intersectSlices<4>(scene_.get(), &context, packet); break;
+    default: intersectSlices<1>(scene_.get(), &context, packet); break;
+  }
+}
+
+void EmbreeScene::occluded(ShadowPacket& packet) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  switch (device_.packetWidth) {
+    case 16: rtcOccluded16(packet.valid, scene_.get(), &context, &packet.query); break;
+    case 8: occludedSlices<8>(scene_.get(), &context, packet); break;
+    case 4: occludedSlices<4>(scene_.get(), &context, packet); break;
+    default: occludedSlices<1>(scene_.get(), &context, packet); break;
+  }
 }
 
 }  // namespace lpvlab

@@ -3,7 +3,8 @@
 // geomID indexes the records below), built with high quality for fast traversal. Alpha-masked
 // textured materials get an intersection filter and an occlusion filter that reject hits where
 // the base colour texture's alpha is below the cutoff, so camera, continuation and shadow rays
-// all pass through the cut-out parts.
+// all pass through the cut-out parts. The device's instruction set and query width come from
+// RayEngineSettings (framework/reference/embree_device.h).
 
 #include <cstdint>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
+#include "framework/reference/embree_device.h"
 #include "framework/reference/material_sampling.h"
 #include "framework/reference/ray_packets.h"
 #include "framework/scene/scene.h"
@@ -39,36 +41,30 @@ class EmbreeScene {
 public:
   // Throws an Error for a scene without triangles or with a mesh whose attributes don't match
   // its positions or whose indices or material are out of range.
-  EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials);
+  // Also throws the errors of makeEmbreeDevice for bad engine settings.
+  EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+              const RayEngineSettings& engine = {});
 
   const GeometryRecord& geometry(unsigned geomID) const { return records_[geomID]; }
   // Scene-scaled distance for ray offsets and shadow-ray ends: far above float rounding of the
   // scene's coordinates, far below any feature size (1e-4 of the largest coordinate or extent).
   float epsilon() const { return epsilon_; }
 
+  // The instruction set Embree runs and the rays per query (see embree_device.h).
+  const std::string& isa() const { return device_.isa; }
+  int packetWidth() const { return device_.packetWidth; }
+
   // Nearest hits of the packet's active rays (each along origin + t direction, t in
   // (tnear, tfar)); `coherent` tells Embree the rays are similar (camera rays).
-  void intersect(RayPacket& packet, bool coherent) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcIntersect16(packet.valid, scene_.get(), &context, &packet.query);
-  }
+  void intersect(RayPacket& packet, bool coherent) const;
   // Whether anything blocks each active ray of the packet.
-  void occluded(ShadowPacket& packet) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcOccluded16(packet.valid, scene_.get(), &context, &packet.query);
-  }
+  void occluded(ShadowPacket& packet) const;
 
 private:
-  struct ReleaseDevice {
-    void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-  };
   struct ReleaseScene {
     void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
   };
-  std::unique_ptr<RTCDeviceTy, ReleaseDevice> device_;  // declared first: released last
+  EmbreeDevice device_;  // declared first: released last
   std::unique_ptr<RTCSceneTy, ReleaseScene> scene_;
   std::vector<GeometryRecord> records_;                // by geomID
   std::vector<std::vector<TriangleFrame>> triangles_;  // by geomID, then primID

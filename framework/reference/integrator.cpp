@@ -231,7 +231,7 @@ void Integrator::trace(int lanes, const glm::vec2* positions, SampleRandom* rand
       if (goesOn)
         rays.set(lane, path.origin, path.direction, scene_.epsilon(), kInfinity);
       else
-        rays.valid[lane] = 0;
+        rays.deactivate(lane);
     }
     resolveShadows(shadows, samples);
   }

@@ -61,7 +61,7 @@ struct PathTracer::Impl {
        const TracerSettings& settings)
       : scene(source),
         materials(prepareMaterials(scene)),
-        embree(scene, materials),
+        embree(scene, materials, settings.engine),
         lights(scene, materials),
         camera(view, width, height),
         integrator(embree, lights, camera, settings),
@@ -77,6 +77,9 @@ PathTracer::PathTracer(const Scene& scene, const Camera& camera, int width, int 
 }
 
 PathTracer::~PathTracer() = default;
+
+const std::string& PathTracer::isa() const { return impl_->embree.isa(); }
+int PathTracer::packetWidth() const { return impl_->embree.packetWidth(); }
 
 std::int64_t PathTracer::render(Accumulator& acc, int count, int threads,
                                 std::int64_t* rays) const {

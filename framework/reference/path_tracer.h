@@ -22,7 +22,10 @@
 // only, travels (for speed) in a ray packet with sample s of the same 16-pixel run of its row,
 // and each pixel's samples are summed in order by one thread, so a given seed and sample count
 // give bit-identical images whatever the thread count, and rendering n then m samples into an
-// accumulator equals rendering n + m at once.
+// accumulator equals rendering n + m at once, on one instruction set. Another instruction set
+// rounds some hit points differently (Embree's kernels differ, e.g. in fused multiply-adds), so a
+// few paths take other turns: its images agree statistically, not bit for bit. The query width
+// (TracerSettings::engine) changes no bit (tested).
 
 #include <cstdint>
 #include <functional>
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include "framework/io/image.h"
+#include "framework/reference/embree_device.h"
 #include "framework/scene/scene.h"
 
 namespace lpvlab {
@@ -40,6 +44,9 @@ struct TracerSettings {
   int maxBounces = 64;          // hard cap on scattering events (Russian roulette ends most paths first)
   int rouletteAfter = 3;        // bounces before Russian roulette starts
   glm::vec3 skyRadiance{0.0f};  // constant radiance from every unblocked direction; 0: no sky
+  // Embree's instruction set and query width. They change no expectation, only speed and the
+  // rounding of hit points (so bit-identical images need the same instruction set).
+  RayEngineSettings engine;
 };
 
 // Per-pixel running sums: enough to resume, to add samples, and to produce means and variances.
@@ -89,6 +96,10 @@ public:
   // or count is negative. Returns the number of paths traced (= pixels * count)
   // and writes the number of rays (camera, continuation, shadow) to `rays` if given.
   std::int64_t render(Accumulator& acc, int count, int threads, std::int64_t* rays = nullptr) const;
+
+  // The instruction set Embree runs ("auto" resolved) and its query width (0 resolved).
+  const std::string& isa() const;
+  int packetWidth() const;
 
 private:
   struct Impl;

@@ -1,10 +1,15 @@
 #pragma once
-// Rays traced together through Embree's 16-wide packet queries (rtcIntersect16, rtcOccluded16).
-// Embree tests a BVH node or a triangle against all active rays of a packet at once, so even
-// incoherent rays cost less per ray than one by one (measured in the Cornell box on AVX-512:
-// about 20% less for nearest hits, 40% less for shadow rays). Unset lanes are inactive. Which
-// rays share a packet is fixed by pixel and sample index (see PathTracer::render), so it never
-// depends on the thread count or on how samples are split over calls.
+// Rays traced together, 16 at a time. Embree tests a BVH node or a triangle against all active
+// rays of a packet at once, so even incoherent rays cost less per ray than one by one (measured
+// in the Cornell box on AVX-512: about 20% less for nearest hits, 40% less for shadow rays).
+// Which rays share a packet is fixed by pixel and sample index (see PathTracer::render), so it
+// never depends on the thread count or on how samples are split over calls. EmbreeScene hands a
+// packet to Embree in queries of the width the instruction set traces natively (16, 8, 4 or 1).
+//
+// Every lane always holds a well-defined ray: an inactive lane holds an empty one (tfar < tnear,
+// finite origin and direction), not stale or uninitialised memory. Embree's narrower kernels
+// split a 16-wide packet and check lanes themselves; with undefined lanes they assert or trace
+// garbage (seen on AVX2 machines).
 
 #include <algorithm>
 #include <limits>
@@ -15,6 +20,8 @@
 namespace lpvlab {
 
 constexpr int kPacketWidth = 16;
+// The tfar of an inactive lane's ray (its tnear is 1): never written by Embree.
+constexpr float kInactiveTFar = 0.0f;
 
 struct RayHit {
   float distance;  // ray parameter of the hit (rays have unit directions: metres)
@@ -37,6 +44,12 @@ inline void setLane(RTCRay16& rays, int lane, const glm::vec3& origin, const glm
   rays.flags[lane] = 0;
 }
 
+// An empty ray: no t satisfies tnear < t < tfar, so it hits nothing whoever traces it, and its
+// tfar is neither a hit distance nor the -inf an occlusion hit writes.
+inline void setInactive(RTCRay16& rays, int lane) {
+  setLane(rays, lane, glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), 1.0f, kInactiveTFar);
+}
+
 }  // namespace packet_detail
 
 // Nearest-hit queries.
@@ -45,13 +58,20 @@ struct RayPacket {
   alignas(64) RTCRayHit16 query;
 
   RayPacket() { clear(); }
-  void clear() { std::fill(valid, valid + kPacketWidth, 0); }
+  void clear() {
+    for (int lane = 0; lane < kPacketWidth; ++lane) deactivate(lane);
+  }
+  void deactivate(int lane) {
+    packet_detail::setInactive(query.ray, lane);
+    query.hit.geomID[lane] = query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+    valid[lane] = 0;
+  }
   bool any() const {
     return std::any_of(valid, valid + kPacketWidth, [](int v) { return v != 0; });
   }
   void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) {
     packet_detail::setLane(query.ray, lane, origin, direction, tNear, tFar);
-    query.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    query.hit.geomID[lane] = query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     valid[lane] = -1;
   }
   bool active(int lane) const { return valid[lane] != 0; }
@@ -69,7 +89,12 @@ struct ShadowPacket {
   alignas(64) RTCRay16 query;
 
   ShadowPacket() { clear(); }
-  void clear() { std::fill(valid, valid + kPacketWidth, 0); }
+  void clear() {
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+      packet_detail::setInactive(query, lane);
+      valid[lane] = 0;
+    }
+  }
   void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) {
     packet_detail::setLane(query, lane, origin, direction, tNear, tFar);
     valid[lane] = -1;

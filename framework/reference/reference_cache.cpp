@@ -156,8 +156,10 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
 
   std::int64_t paths = 0, rays = 0;
   double renderSeconds = 0.0;
+  nlohmann::json engine;  // what this session's samples were traced with
   if (!ref.reused) {
     const PathTracer tracer(scene, camera, request.width, request.height, request.tracer);
+    engine = {{"isa", tracer.isa()}, {"packet_width", tracer.packetWidth()}};
     ProgressBar progress("reference " + ref.key);
     auto lastCheckpoint = std::chrono::steady_clock::now();
     double secondsPerSample = 0.0;
@@ -218,7 +220,8 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
       {"last_session", {{"seconds", renderSeconds}, {"paths", paths}, {"rays", rays},
                         {"paths_per_second", renderSeconds > 0 ? paths / renderSeconds : 0.0},
                         {"rays_per_second", renderSeconds > 0 ? rays / renderSeconds : 0.0},
-                        {"threads", request.threads > 0 ? request.threads : int(std::thread::hardware_concurrency())}}},
+                        {"threads", request.threads > 0 ? request.threads : int(std::thread::hardware_concurrency())},
+                        {"engine", engine}}},
       {"created_utc", utcTimestamp()},
       {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
       {"host", hostInfo()}};

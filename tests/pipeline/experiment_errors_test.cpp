@@ -87,6 +87,31 @@ TEST_F(ExperimentErrors, OutOfRangeValuesAreErrorsNotClamped) {
   EXPECT_TRUE(contains(message, "grid.cells"));
 }
 
+TEST_F(ExperimentErrors, TracerInstructionSetAndPacketWidthAreChecked) {
+  const std::string isa = write("isa.toml", "[reference]\nisa = \"avx9\"\n");
+  std::string message = errorOf(isa);
+  EXPECT_TRUE(contains(message, isa + ":2"));
+  EXPECT_TRUE(contains(message, "reference.isa"));
+  EXPECT_TRUE(contains(message, "avx2"));  // the valid choices are listed
+
+  const std::string width = write("width.toml", "[reference]\npacket_width = 3\n");
+  message = errorOf(width);
+  EXPECT_TRUE(contains(message, width + ":2"));
+  EXPECT_TRUE(contains(message, "reference.packet_width"));
+  EXPECT_TRUE(contains(message, "1, 4, 8, 16"));
+
+  // Every instruction set this CPU has loads; one it lacks is refused by name.
+  for (const std::string& name : embreeInstructionSets()) {
+    const std::vector<std::string> has = supportedInstructionSets();
+    const std::string path = write("isa_" + std::to_string(&name - &embreeInstructionSets()[0]) + ".toml",
+                                   "[reference]\nisa = \"" + name + "\"\n");
+    if (std::find(has.begin(), has.end(), name) != has.end())
+      EXPECT_EQ(loadExperiment(path, {}).reference.tracer.engine.isa, name);
+    else
+      EXPECT_TRUE(contains(errorOf(path), "this CPU lacks '" + name + "'"));
+  }
+}
+
 TEST_F(ExperimentErrors, WrongTypeNamesTheExpectedType) {
   const std::string path = write("type.toml", "[output]\nwidth = \"big\"\n");
   const std::string message = errorOf(path);

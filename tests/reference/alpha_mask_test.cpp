@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/reference/path_tracer.h"
+#include "instruction_sets.h"
 #include "test_scenes.h"
 
 namespace lpvlab {
@@ -60,7 +61,10 @@ Finding findingAt(double px, double py) {
   return {seen, keptAt(crossing.x) ? Light::kBlocked : Light::kThroughHole};
 }
 
-TEST(AlphaMask, CutOutPartsPassCameraAndShadowRays) {
+// The filters see packets of each instruction set's own width (16, 8 or 4 rays, or single rays).
+class AlphaMask : public testing::PerInstructionSet {};
+
+TEST_P(AlphaMask, CutOutPartsPassCameraAndShadowRays) {
   Scene scene;
   scene.source = "test:alpha mask";
   TextureImage texture{.path = "test:half cut out", .width = 4, .height = 1};
@@ -74,7 +78,7 @@ TEST(AlphaMask, CutOutPartsPassCameraAndShadowRays) {
                   testing::horizontalSquare("leaf", 1, 1.0f, 1.0f)};
   scene.lights = {{.name = "sun", .type = LightType::Directional, .direction = kLightDirection,
                    .intensity = kIrradiance}};
-  PathTracer tracer(scene, kCamera, kSize, kSize, TracerSettings{});
+  PathTracer tracer(scene, kCamera, kSize, kSize, tracerSettings());
   Accumulator acc(kSize, kSize);
   tracer.render(acc, 4, 2);
   const std::vector<NamedImage> images = acc.images();
@@ -107,6 +111,8 @@ TEST(AlphaMask, CutOutPartsPassCameraAndShadowRays) {
   EXPECT_GE(litThroughHole, 2);
   EXPECT_GE(blocked, 2);
 }
+
+LPVLAB_PER_INSTRUCTION_SET(AlphaMask);
 
 }  // namespace
 }  // namespace lpvlab

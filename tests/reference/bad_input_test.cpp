@@ -1,5 +1,6 @@
 // What the tracer cannot render is an Error whose message says what is wrong.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -78,6 +79,28 @@ TEST(BadInput, MalformedMaterialsAndLightsAreNamed) {
   box.lights[0].intensity = -1.0f;
   expectError([&] { PathTracer(box, box.cameras.front(), 8, 8, {}); },
               "light 'spot': negative colour or intensity");
+}
+
+TEST(BadInput, UnknownOrMissingInstructionSetsAndWidthsAreNamed) {
+  const Scene box = makeCornellBox();
+  const Camera& camera = box.cameras.front();
+  TracerSettings settings;
+  settings.engine.isa = "avx9";  // Embree itself would quietly fall back to SSE2
+  expectError([&] { PathTracer(box, camera, 8, 8, settings); },
+              "instruction set 'avx9' is not one of auto, sse4.2, avx, avx2, avx512");
+  settings.engine.isa = "auto";
+  settings.engine.packetWidth = 3;
+  expectError([&] { PathTracer(box, camera, 8, 8, settings); }, "packet width 3 is not one of");
+  settings.engine.packetWidth = 0;
+  for (const std::string& isa : embreeInstructionSets()) {
+    settings.engine.isa = isa;
+    const std::vector<std::string> supported = supportedInstructionSets();
+    if (std::find(supported.begin(), supported.end(), isa) == supported.end())
+      expectError([&] { PathTracer(box, camera, 8, 8, settings); },
+                  "this CPU lacks instruction set '" + isa + "'");
+    else
+      EXPECT_EQ(PathTracer(box, camera, 8, 8, settings).isa(), isa);
+  }
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "framework/math/shared.h"
 #include "framework/reference/path_tracer.h"
 #include "framework/reference/statistical_compare.h"
+#include "instruction_sets.h"
 #include "test_scenes.h"
 
 namespace lpvlab {
@@ -55,8 +56,8 @@ Image expectedImage(const std::function<glm::dvec3(const glm::dvec3&)>& radiance
   return image;
 }
 
-std::vector<NamedImage> render(const Scene& scene, int samples, glm::vec3 sky = glm::vec3(0.0f)) {
-  TracerSettings settings;
+std::vector<NamedImage> render(const Scene& scene, int samples, TracerSettings settings,
+                               glm::vec3 sky = glm::vec3(0.0f)) {
   settings.skyRadiance = sky;
   PathTracer tracer(scene, kCamera, kSize, kSize, settings);
   Accumulator acc(kSize, kSize);
@@ -86,12 +87,15 @@ void expectNoIndirect(const std::vector<NamedImage>& images) {
 
 double planeBrdf() { return kPlaneAlbedo / M_PI; }
 
-TEST(DirectLight, PointLightOverAPlaneIsICosOverRSquared) {
+// Every closed form on every instruction set.
+class DirectLight : public testing::PerInstructionSet {};
+
+TEST_P(DirectLight, PointLightOverAPlaneIsICosOverRSquared) {
   Scene scene = planeScene();
   const Light light{.name = "point", .type = LightType::Point, .position = {0.3f, 1.0f, -0.4f},
                     .color = {1.0f, 0.5f, 0.25f}, .intensity = 5.0f};
   scene.lights = {light};
-  const std::vector<NamedImage> images = render(scene, 64);
+  const std::vector<NamedImage> images = render(scene, 64, tracerSettings());
   expectDirectMatches(images, expectedImage([&](const glm::dvec3& p) {
     const glm::dvec3 toLight = glm::dvec3(light.position) - p;
     const double r2 = glm::dot(toLight, toLight);
@@ -101,14 +105,14 @@ TEST(DirectLight, PointLightOverAPlaneIsICosOverRSquared) {
   expectNoIndirect(images);
 }
 
-TEST(DirectLight, SpotLightFollowsTheSharedConeFalloff) {
+TEST_P(DirectLight, SpotLightFollowsTheSharedConeFalloff) {
   Scene scene = planeScene();
   const Light light{.name = "spot", .type = LightType::Spot, .position = {-0.2f, 1.0f, 0.1f},
                     .direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.0f)),
                     .intensity = 8.0f, .innerConeAngle = glm::radians(15.0f),
                     .outerConeAngle = glm::radians(30.0f)};
   scene.lights = {light};
-  const std::vector<NamedImage> images = render(scene, 64);
+  const std::vector<NamedImage> images = render(scene, 64, tracerSettings());
   auto falloffAt = [&](const glm::dvec3& p) {
     const glm::dvec3 fromLight = glm::normalize(p - glm::dvec3(light.position));
     return shared::spotFalloff(glm::dot(glm::dvec3(light.direction), fromLight),
@@ -139,12 +143,12 @@ TEST(DirectLight, SpotLightFollowsTheSharedConeFalloff) {
   expectNoIndirect(images);
 }
 
-TEST(DirectLight, DirectionalLightIsIrradianceTimesCosine) {
+TEST_P(DirectLight, DirectionalLightIsIrradianceTimesCosine) {
   Scene scene = planeScene();
   const glm::vec3 direction = glm::normalize(glm::vec3(0.5f, -1.0f, 0.2f));
   scene.lights = {{.name = "sun", .type = LightType::Directional, .direction = direction,
                    .color = {1.0f, 0.9f, 0.8f}, .intensity = 3.0f}};
-  const std::vector<NamedImage> images = render(scene, 4);
+  const std::vector<NamedImage> images = render(scene, 4, tracerSettings());
   expectDirectMatches(images, expectedImage([&](const glm::dvec3&) {
     return planeBrdf() * 3.0 * glm::dvec3(1.0, 0.9, 0.8) * double(-direction.y);
   }));
@@ -164,7 +168,7 @@ double polygonIrradiance(const glm::dvec3& p, const std::vector<glm::dvec3>& pol
   return 0.5 * std::abs(sum);
 }
 
-TEST(DirectLight, EmissiveQuadMatchesLambertsPolygonFormula) {
+TEST_P(DirectLight, EmissiveQuadMatchesLambertsPolygonFormula) {
   Scene scene = planeScene();
   const glm::vec3 emission(4.0f, 2.0f, 1.0f);
   // Black, so nothing bounces off it; emits on both sides (the camera sees its back).
@@ -174,7 +178,7 @@ TEST(DirectLight, EmissiveQuadMatchesLambertsPolygonFormula) {
       glm::vec3(0.2f, 1.0f, -0.2f)};
   scene.meshes.push_back(testing::quad("lamp", 1, corners));
   const std::vector<glm::dvec3> polygon(corners.begin(), corners.end());
-  const std::vector<NamedImage> images = render(scene, 64);
+  const std::vector<NamedImage> images = render(scene, 64, tracerSettings());
 
   // Pixels the lamp covers wholly or not at all (its corners' rays agree); partly covered ones
   // are skipped, as their expectation needs the lamp's silhouette.
@@ -211,20 +215,20 @@ TEST(DirectLight, EmissiveQuadMatchesLambertsPolygonFormula) {
   expectNoIndirect(images);
 }
 
-TEST(DirectLight, ConstantSkyOverAPlaneReflectsAlbedoTimesSky) {
+TEST_P(DirectLight, ConstantSkyOverAPlaneReflectsAlbedoTimesSky) {
   const glm::vec3 sky(1.0f, 2.0f, 3.0f);
-  const std::vector<NamedImage> images = render(planeScene(), 16, sky);
+  const std::vector<NamedImage> images = render(planeScene(), 16, tracerSettings(), sky);
   expectDirectMatches(images, expectedImage([&](const glm::dvec3&) {
     return double(kPlaneAlbedo) * glm::dvec3(sky);
   }));
   expectNoIndirect(images);
 }
 
-TEST(DirectLight, BackgroundIsZeroInEveryAov) {
+TEST_P(DirectLight, BackgroundIsZeroInEveryAov) {
   // Looking up from the plane into the sky: no camera ray hits anything.
   Scene scene = planeScene();
   const Camera up{.name = "up", .position = {0, 1, 0}, .forward = {0, 1, 0}, .up = {0, 0, 1}};
-  TracerSettings settings;
+  TracerSettings settings = tracerSettings();
   settings.skyRadiance = glm::vec3(1.0f);
   PathTracer tracer(scene, up, 8, 8, settings);
   Accumulator acc(8, 8);
@@ -234,6 +238,8 @@ TEST(DirectLight, BackgroundIsZeroInEveryAov) {
       for (float value : image.image.pixels) ASSERT_EQ(value, 0.0f) << image.name;
     }
 }
+
+LPVLAB_PER_INSTRUCTION_SET(DirectLight);
 
 }  // namespace
 }  // namespace lpvlab

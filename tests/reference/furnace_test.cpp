@@ -11,11 +11,13 @@
 // roulette (rho up to 0.7 needs many bounces) for bias.
 
 #include <cmath>
+#include <map>
 
 #include <gtest/gtest.h>
 
 #include "framework/reference/path_tracer.h"
 #include "framework/reference/statistical_compare.h"
+#include "instruction_sets.h"
 #include "test_scenes.h"
 
 namespace lpvlab {
@@ -26,13 +28,13 @@ using testing::aov;
 constexpr int kSize = 32;
 constexpr int kSamples = 256;
 
-struct Furnace {
+struct FurnaceImages {
   glm::vec3 rho, emission;
   std::vector<NamedImage> images;
 };
 
-Furnace renderFurnace() {
-  Furnace furnace{.rho = {0.3f, 0.5f, 0.7f}, .emission = {1.0f, 2.0f, 0.5f}};
+FurnaceImages renderFurnace(const std::string& isa) {
+  FurnaceImages furnace{.rho = {0.3f, 0.5f, 0.7f}, .emission = {1.0f, 2.0f, 0.5f}};
   Scene scene;
   scene.source = "test:furnace";
   scene.materials = {{.name = "furnace", .baseColor = furnace.rho, .emission = furnace.emission}};
@@ -41,6 +43,7 @@ Furnace renderFurnace() {
                       .up = {0, 1, 0}, .verticalFov = float(M_PI / 2), .nearPlane = 0.01f,
                       .farPlane = 10.0f};
   TracerSettings settings;
+  settings.engine.isa = isa;
   settings.maxBounces = 200;  // 0.7^200: the cap removes nothing measurable
   PathTracer tracer(scene, camera, kSize, kSize, settings);
   Accumulator acc(kSize, kSize);
@@ -49,9 +52,12 @@ Furnace renderFurnace() {
   return furnace;
 }
 
-const Furnace& furnace() {
-  static const Furnace rendered = renderFurnace();
-  return rendered;
+// Rendered once per instruction set, for all the tests of that set.
+const FurnaceImages& furnace(const std::string& isa) {
+  static std::map<std::string, FurnaceImages> rendered;
+  auto found = rendered.find(isa);
+  if (found == rendered.end()) found = rendered.emplace(isa, renderFurnace(isa)).first;
+  return found->second;
 }
 
 Image uniform(const glm::vec3& value) {
@@ -62,9 +68,9 @@ Image uniform(const glm::vec3& value) {
 
 // Per-pixel z-tests (Sidak, family-wise alpha 0.01) and a test of the image-wide mean per channel,
 // whose standard error sqrt(sum of the pixels' variances) / pixels comes from the same variances.
-void expectMatches(const std::string& name, const glm::vec3& expected) {
-  const Image& estimate = aov(furnace().images, name);
-  const Image& variance = aov(furnace().images, name + "_variance");
+void expectMatches(const FurnaceImages& furnace, const std::string& name, const glm::vec3& expected) {
+  const Image& estimate = aov(furnace.images, name);
+  const Image& variance = aov(furnace.images, name + "_variance");
   const ComparisonResult result = compareToExact(estimate, variance, uniform(expected));
   EXPECT_EQ(result.tests, kSize * kSize * 3) << name;
   EXPECT_LE(result.rejected, 1) << name << ": max |z| " << result.maxAbsZ << " over threshold "
@@ -88,28 +94,30 @@ void expectMatches(const std::string& name, const glm::vec3& expected) {
   }
 }
 
-TEST(Furnace, CombinedIsEmissionOverOneMinusAlbedo) {
-  const Furnace& f = furnace();
-  expectMatches("combined", f.emission / (1.0f - f.rho));
+class Furnace : public testing::PerInstructionSet {};
+
+TEST_P(Furnace, CombinedIsEmissionOverOneMinusAlbedo) {
+  const FurnaceImages& f = furnace(isa());
+  expectMatches(f, "combined", f.emission / (1.0f - f.rho));
 }
 
-TEST(Furnace, DirectIsEmissionPlusOneScattering) {
-  const Furnace& f = furnace();
-  expectMatches("direct", f.emission * (1.0f + f.rho));
+TEST_P(Furnace, DirectIsEmissionPlusOneScattering) {
+  const FurnaceImages& f = furnace(isa());
+  expectMatches(f, "direct", f.emission * (1.0f + f.rho));
 }
 
-TEST(Furnace, IndirectIsEverythingFromTwoScatteringsOn) {
-  const Furnace& f = furnace();
-  expectMatches("indirect", f.emission * f.rho * f.rho / (1.0f - f.rho));
+TEST_P(Furnace, IndirectIsEverythingFromTwoScatteringsOn) {
+  const FurnaceImages& f = furnace(isa());
+  expectMatches(f, "indirect", f.emission * f.rho * f.rho / (1.0f - f.rho));
 }
 
-TEST(Furnace, Indirect1IsExactlyTwoScatterings) {
-  const Furnace& f = furnace();
-  expectMatches("indirect1", f.emission * f.rho * f.rho);
+TEST_P(Furnace, Indirect1IsExactlyTwoScatterings) {
+  const FurnaceImages& f = furnace(isa());
+  expectMatches(f, "indirect1", f.emission * f.rho * f.rho);
 }
 
-TEST(Furnace, FirstHitAovsSeeTheSphereEverywhere) {
-  const Furnace& f = furnace();
+TEST_P(Furnace, FirstHitAovsSeeTheSphereEverywhere) {
+  const FurnaceImages& f = furnace(isa());
   const Image& albedo = aov(f.images, "albedo");
   const Image& depth = aov(f.images, "depth");
   for (int y = 0; y < kSize; ++y)
@@ -119,6 +127,8 @@ TEST(Furnace, FirstHitAovsSeeTheSphereEverywhere) {
       ASSERT_LE(depth.at(x, y, 0), 1.0f);
     }
 }
+
+LPVLAB_PER_INSTRUCTION_SET(Furnace);
 
 }  // namespace
 }  // namespace lpvlab

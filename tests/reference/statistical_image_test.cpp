@@ -11,12 +11,18 @@
 #include "framework/reference/reference_cache.h"
 #include "framework/reference/statistical_compare.h"
 #include "framework/scene/scene_loader.h"
+#include "instruction_sets.h"
 
 namespace lpvlab {
 namespace {
 
-TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
-  const auto cache = std::filesystem::temp_directory_path() / "lpvlab_statistical_image";
+// The stored reference is traced on the widest instruction set; each set's independent rendering
+// must agree with it statistically.
+class StatisticalImage : public testing::PerInstructionSet {};
+
+TEST_P(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
+  const auto cache = std::filesystem::temp_directory_path() /
+                     ("lpvlab_statistical_image_" + testing::instructionSetName({isa(), 0}));
   std::filesystem::remove_all(cache);
   const Scene scene = makeCornellBox();
   const Camera& camera = scene.cameras.front();
@@ -28,7 +34,9 @@ TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
   const Reference reference = ensureReference(scene, camera, request);
   const std::vector<NamedImage> stored = readExr(reference.directory + "/images.exr");
 
-  const PathTracer tracer(scene, camera, 24, 24, TracerSettings{.seed = 2});
+  TracerSettings settings = tracerSettings();
+  settings.seed = 2;
+  const PathTracer tracer(scene, camera, 24, 24, settings);
   Accumulator noisy(24, 24);
   tracer.render(noisy, 512, 0);
   const std::vector<NamedImage> test = noisy.images();
@@ -57,6 +65,8 @@ TEST(StatisticalImage, IndependentRenderingAgreesWithTheStoredReference) {
   }
   std::filesystem::remove_all(cache);
 }
+
+LPVLAB_PER_INSTRUCTION_SET(StatisticalImage);
 
 }  // namespace
 }  // namespace lpvlab

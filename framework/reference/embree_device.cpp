@@ -1,0 +1,85 @@
+#include "framework/reference/embree_device.h"
+
+#include <algorithm>
+
+#include "framework/core/error.h"
+
+namespace lpvlab {
+
+namespace {
+
+bool cpuHas(const std::string& isa) {
+  __builtin_cpu_init();
+  if (isa == "sse4.2") return __builtin_cpu_supports("sse4.2");
+  if (isa == "avx") return __builtin_cpu_supports("avx");
+  if (isa == "avx2") return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (isa == "avx512")
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
+           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
+           __builtin_cpu_supports("avx512vl");
+  return false;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+int nativeWidth(RTCDevice device) {
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return 16;
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)) return 8;
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED)) return 4;
+  return 1;
+}
+
+}  // namespace
+
+const std::vector<std::string>& embreeInstructionSets() {
+  static const std::vector<std::string> sets = {"sse4.2", "avx", "avx2", "avx512"};
+  return sets;
+}
+
+std::vector<std::string> supportedInstructionSets() {
+  std::vector<std::string> sets;
+  for (const std::string& isa : embreeInstructionSets())
+    if (cpuHas(isa)) sets.push_back(isa);
+  return sets;
+}
+
+const std::vector<int>& rayPacketWidths() {
+  static const std::vector<int> widths = {0, 1, 4, 8, 16};
+  return widths;
+}
+
+EmbreeDevice makeEmbreeDevice(const RayEngineSettings& settings) {
+  const std::vector<std::string> supported = supportedInstructionSets();
+  if (supported.empty())
+    throw Error("path tracer: this CPU lacks SSE4.2, the narrowest instruction set lpvlab traces with");
+  std::string isa = settings.isa;
+  if (isa == "auto") {
+    isa = supported.back();
+  } else if (std::find(embreeInstructionSets().begin(), embreeInstructionSets().end(), isa) ==
+             embreeInstructionSets().end()) {
+    throw Error("path tracer: instruction set '" + isa + "' is not one of auto, " +
+                joined(embreeInstructionSets()));
+  } else if (std::find(supported.begin(), supported.end(), isa) == supported.end()) {
+    throw Error("path tracer: this CPU lacks instruction set '" + isa + "' (it has " +
+                joined(supported) + ")");
+  }
+  const auto& widths = rayPacketWidths();
+  if (std::find(widths.begin(), widths.end(), settings.packetWidth) == widths.end())
+    throw Error("path tracer: packet width " + std::to_string(settings.packetWidth) +
+                " is not one of 0 (native), 1, 4, 8, 16");
+
+  // "isa=" pins Embree to exactly this set, the same whichever CPU runs it.
+  EmbreeDevicePtr device(rtcNewDevice(("isa=" + isa).c_str()));
+  if (!device) throw Error("path tracer: Embree could not create a device for '" + isa + "'");
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
+    throw Error("path tracer: Embree refused instruction set '" + isa + "' (error " +
+                std::to_string(int(rtcGetDeviceError(device.get()))) + ")");
+  const int width = settings.packetWidth > 0 ? settings.packetWidth : nativeWidth(device.get());
+  return {std::move(device), isa, width};
+}
+
+}  // namespace lpvlab
