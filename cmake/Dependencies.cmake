@@ -10,6 +10,8 @@ find_package(CLI11 REQUIRED)              # command line
 find_package(GTest REQUIRED)              # tests
 find_package(embree 3 CONFIG REQUIRED)    # ray queries of the reference path tracer
 find_package(Ceres 2.1 REQUIRED)          # `lpvlab fit`: nonlinear least squares, covariance
+find_package(TBB REQUIRED)                # threads of the CPU kernels
+find_package(benchmark REQUIRED)          # CPU kernel benchmarks (tests/benchmarks)
 # OpenImageIO 2.4's CMake config names /usr/include/opencv4; its pkg-config module works.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)   # offscreen GL 4.5 core on llvmpipe

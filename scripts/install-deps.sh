@@ -12,6 +12,8 @@ packages=(
   libopenimageio-dev               # textures, EXR and PNG images
   libassimp-dev                    # glTF and OBJ scenes
   libembree-dev                    # ray queries of the reference path tracer
+  libtbb-dev                       # oneTBB: threads of the CPU kernels
+  libbenchmark-dev                 # Google Benchmark: CPU kernel benchmarks
   libceres-dev                     # Ceres Solver 2.1: `lpvlab fit` (least squares, covariance)
   libtomlplusplus-dev              # experiment files
   nlohmann-json3-dev               # manifests

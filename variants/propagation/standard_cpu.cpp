@@ -1,0 +1,228 @@
+#include "variants/propagation/standard_cpu.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/propagation/standard_faces.glsl"
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+
+template <class Real>
+StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
+                                              double sideSolidAngle) {
+  if (shOrder < 1 || shOrder > 3)
+    throw Error("standard propagation (CPU): SH order " + std::to_string(shOrder) +
+                " is not 1, 2 or 3");
+  for (double omega : {farSolidAngle, sideSolidAngle})
+    if (!(omega >= 0.0) || !std::isfinite(omega))
+      throw Error("standard propagation (CPU): face solid angle " + std::to_string(omega) +
+                  " is not a finite non-negative number");
+  StandardFaceTable<Real> table{};
+  table.coefficients = (shOrder + 1) * (shOrder + 1);
+  for (int direction = 0; direction < StandardFaceTable<Real>::kDirections; ++direction) {
+    glm::ivec3 offset(0);
+    offset[direction / 2] = direction % 2 == 0 ? 1 : -1;
+    table.offset[direction] = offset;
+    const glm::dvec3 d = -glm::dvec3(offset);  // light flows from the neighbour along -offset
+    for (int f = 0; f < shared::STANDARD_FACES; ++f) {
+      const glm::dvec3 w = shared::standardFaceDirection(d, f);
+      const glm::dvec3 n = shared::standardFaceNormal(d, f);
+      const double omega = shared::standardFaceSolidAngle(f, farSolidAngle, sideSolidAngle);
+      for (int k = 0; k < table.coefficients; ++k) {
+        table.basis[direction][f][k] = Real(shared::shBasisAt(k, w));
+        // standardFaceFlux(I, omega, 1) * lobe / pi with the clamp left to the kernel.
+        table.weightedLobe[direction][f][k] = Real(omega * shared::shCosineLobeAt(k, n) / shared::PI);
+      }
+    }
+  }
+  return table;
+}
+
+template StandardFaceTable<float> makeStandardFaceTable<float>(int, double, double);
+template StandardFaceTable<double> makeStandardFaceTable<double>(int, double, double);
+
+namespace {
+
+// What one cell of a target row receives, one channel: from each of the six neighbours (its
+// coefficients at from[d][k * plane + x], already offset to the neighbour's x), through the five
+// faces of this cell that neighbour's light enters, weighted by present[d] (0 for a neighbour
+// outside the grid, whose pointer then points at readable memory). Written to `target` once and
+// added to `accumulated`: each cell's coefficients are stored once per iteration.
+template <int N, class Real>
+[[gnu::always_inline]] inline void gatherCell(const StandardFaceTable<Real>& table,
+                                              const Real* const (&from)[6],
+                                              const Real (&present)[6], std::size_t plane, int x,
+                                              Real* target, Real* accumulated) {
+  Real out[N];
+#pragma GCC unroll 16
+  for (int k = 0; k < N; ++k) out[k] = Real(0);
+#pragma GCC unroll 6
+  for (int d = 0; d < 6; ++d) {
+    Real s[N];
+#pragma GCC unroll 16
+    for (int k = 0; k < N; ++k) s[k] = from[d][k * plane + x];
+#pragma GCC unroll 5
+    for (int f = 0; f < 5; ++f) {
+      Real intensity = Real(0);
+#pragma GCC unroll 16
+      for (int k = 0; k < N; ++k) intensity += s[k] * table.basis[d][f][k];
+      const Real flux = std::max(intensity, Real(0)) * present[d];
+#pragma GCC unroll 16
+      for (int k = 0; k < N; ++k) out[k] += flux * table.weightedLobe[d][f][k];
+    }
+  }
+#pragma GCC unroll 16
+  for (int k = 0; k < N; ++k) {
+    target[k * plane + x] = out[k];
+    accumulated[k * plane + x] += out[k];
+  }
+}
+
+// Target rows [rowBegin, rowEnd) (row = y + res.y * z), every channel. The inner x loop is
+// straight-line code (every inner loop unrolled) and vectorises along x; `omp simd`
+// (-fopenmp-simd: no OpenMP runtime) asserts the rows don't alias. The two end cells of a row,
+// whose x neighbour lies outside, are done on their own.
+template <int N, class Real>
+[[gnu::always_inline]] inline void gatherRowsImpl(const StandardFaceTable<Real>& table,
+                                                  const glm::ivec3& res, const Real* source,
+                                                  Real* target, Real* accumulated, int rowBegin,
+                                                  int rowEnd) {
+  const std::size_t plane = std::size_t(res.x) * res.y * res.z;  // cells: one coefficient's span
+  for (int row = rowBegin; row < rowEnd; ++row) {
+    const int y = row % res.y, z = row / res.y;
+    const std::size_t base = std::size_t(row) * res.x;
+    for (int channel = 0; channel < 3; ++channel) {
+      const std::size_t channelBase = std::size_t(channel) * N * plane;
+      const Real* own = source + channelBase + base;
+      const Real* from[6];
+      Real present[6];
+      for (int d = 0; d < 6; ++d) {
+        const glm::ivec3 o = table.offset[d];
+        const bool inside = y + o.y >= 0 && y + o.y < res.y && z + o.z >= 0 && z + o.z < res.z;
+        present[d] = inside ? Real(1) : Real(0);
+        from[d] = inside ? source + channelBase + (std::size_t(z + o.z) * res.y + (y + o.y)) * res.x + o.x
+                         : own;
+      }
+      Real* to = target + channelBase + base;
+      Real* sum = accumulated + channelBase + base;
+#pragma omp simd
+      for (int x = 1; x < res.x - 1; ++x) gatherCell<N>(table, from, present, plane, x, to, sum);
+      // The row's ends (one cell when the row has one): an x neighbour outside the grid is
+      // read at the cell itself, weighted 0.
+      const int last = res.x - 1;
+      for (int x = 0; x <= last; x += std::max(last, 1)) {
+        const Real* edgeFrom[6];
+        Real edgePresent[6];
+        for (int d = 0; d < 6; ++d) {
+          const int nx = x + table.offset[d].x;
+          const bool inside = nx >= 0 && nx < res.x;
+          edgeFrom[d] = inside ? from[d] : own;
+          edgePresent[d] = inside ? present[d] : Real(0);
+        }
+        gatherCell<N>(table, edgeFrom, edgePresent, plane, x, to, sum);
+      }
+    }
+  }
+}
+
+template <class Real>
+using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*,
+                              Real*, Real*, int, int);
+
+// The row loop compiled for each instruction set (the inlined body takes the function's target).
+#define LPVLAB_GATHER_ROWS(name, attributes)                                                    \
+  template <int N, class Real>                                                                  \
+  attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,             \
+                       const Real* source, Real* target, Real* accumulated, int begin, int end) { \
+    gatherRowsImpl<N>(table, res, source, target, accumulated, begin, end);                     \
+  }
+LPVLAB_GATHER_ROWS(gatherRowsX86_64, )
+LPVLAB_GATHER_ROWS(gatherRowsV3, __attribute__((target("arch=x86-64-v3"))))
+LPVLAB_GATHER_ROWS(gatherRowsV4, __attribute__((target("arch=x86-64-v4"))))
+#undef LPVLAB_GATHER_ROWS
+
+bool cpuRunsKernel(const std::string& isa) {
+  __builtin_cpu_init();
+  if (isa == "x86-64") return true;
+  if (isa == "x86-64-v3")
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+           __builtin_cpu_supports("bmi2");
+  if (isa == "x86-64-v4")
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+           __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+  return false;
+}
+
+template <int N, class Real>
+RowsFunction<Real> rowsFor(const std::string& isa) {
+  if (isa == "x86-64-v4") return gatherRowsV4<N, Real>;
+  if (isa == "x86-64-v3") return gatherRowsV3<N, Real>;
+  return gatherRowsX86_64<N, Real>;
+}
+
+std::string resolveIsa(const std::string& isa) {
+  const std::vector<std::string> supported = supportedCpuKernelInstructionSets();
+  if (isa == "auto") return supported.back();
+  const auto& all = cpuKernelInstructionSets();
+  if (std::find(all.begin(), all.end(), isa) == all.end())
+    throw Error("standard propagation (CPU): instruction set '" + isa +
+                "' is not one of auto, x86-64, x86-64-v3, x86-64-v4");
+  if (!cpuRunsKernel(isa))
+    throw Error("standard propagation (CPU): this CPU lacks instruction set '" + isa + "'");
+  return isa;
+}
+
+}  // namespace
+
+const std::vector<std::string>& cpuKernelInstructionSets() {
+  static const std::vector<std::string> sets = {"x86-64", "x86-64-v3", "x86-64-v4"};
+  return sets;
+}
+
+std::vector<std::string> supportedCpuKernelInstructionSets() {
+  std::vector<std::string> sets;
+  for (const std::string& isa : cpuKernelInstructionSets())
+    if (cpuRunsKernel(isa)) sets.push_back(isa);
+  return sets;
+}
+
+template <class Real>
+void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                       const Real* source, Real* target, Real* accumulated, const std::string& isa,
+                       int threads) {
+  if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
+    throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
+  const std::string chosen = resolveIsa(isa);
+  RowsFunction<Real> rows = table.coefficients == 4   ? rowsFor<4, Real>(chosen)
+                            : table.coefficients == 9 ? rowsFor<9, Real>(chosen)
+                                                      : rowsFor<16, Real>(chosen);
+  const int rowCount = resolution.y * resolution.z;
+  auto work = [&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, rowCount), [&](const tbb::blocked_range<int>& r) {
+      rows(table, resolution, source, target, accumulated, r.begin(), r.end());
+    });
+  };
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute(work);
+  } else {
+    work();
+  }
+}
+
+template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
+                                       const float*, float*, float*, const std::string&, int);
+template void standardGatherCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
+                                        const double*, double*, double*, const std::string&, int);
+
+}  // namespace lpvlab

@@ -1,0 +1,62 @@
+#pragma once
+// Standard propagation by gathering, on the CPU (first slice of the CPU backend, issue 13): the
+// transfer of shaders/propagation/standard_gather.comp without a geometry volume, at SH orders
+// 1-3, generic in its scalar type (float for speed, double for the tests).
+//
+// One source of the mathematics: every number the kernel multiplies by comes from the shared
+// GLSL compiled as C++ (standard_faces.glsl: face directions, normals and solid angles;
+// sh.glsl: the SH basis and the clamped-cosine lobe), tabulated once per run in StandardFaceTable.
+// What the kernel adds is only the loop order: a row of cells along x at a time, each
+// neighbour's five faces in one pass over the row (the source coefficients loaded once for all
+// five), so the compiler vectorises along x. The grid layout is the GL kernels'
+// (shaders/common/grid.glsl), so buffers move between the backends unchanged.
+//
+// Instruction sets: the row loop is compiled three times, for x86-64 (SSE2, any 64-bit x86),
+// x86-64-v3 (AVX2 and FMA) and x86-64-v4 (AVX-512), and the widest this CPU has runs ("auto"),
+// or the one named, so one binary is correct and fast from the oldest to the newest machine and
+// a machine with AVX-512 can test the narrower versions too.
+//
+// Threads: rows are shared out by oneTBB. Each target cell is written by exactly one task, in a
+// fixed order of additions, so the result does not depend on the thread count (no atomics).
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lpvlab {
+
+// Per propagation direction (the neighbour's offset from the target cell, 6) and face (5): the
+// SH basis at the direction to the face centre, and the coefficients a unit flux through the
+// face adds to the target (the clamped-cosine lobe about the face normal, times the face's solid
+// angle, over pi). So for one face: intensity = sum_k source_k basis_k, and the target gains
+// max(0, intensity) * weightedLobe_k (standard_faces.glsl's propagateThroughFace, factored).
+template <class Real>
+struct StandardFaceTable {
+  static constexpr int kDirections = 6, kFaces = 5, kMaxCoefficients = 16;
+  int coefficients = 4;  // (order + 1)^2
+  glm::ivec3 offset[kDirections];  // the neighbour's offset; light flows from it, along -offset
+  Real basis[kDirections][kFaces][kMaxCoefficients];
+  Real weightedLobe[kDirections][kFaces][kMaxCoefficients];
+};
+
+// Throws an Error for an SH order outside 1..3 or a negative or non-finite solid angle.
+template <class Real>
+StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
+                                              double sideSolidAngle);
+
+// The CPU instruction sets the kernel is compiled for, narrowest first.
+const std::vector<std::string>& cpuKernelInstructionSets();
+// Those this CPU can run.
+std::vector<std::string> supportedCpuKernelInstructionSets();
+
+// One gathering iteration: target = what every cell receives from its six neighbours' `source`,
+// accumulated += target. Grids in grid.glsl's layout (3 channels x coefficients x cells).
+// `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for an unknown one or one
+// this CPU lacks. `threads`: 0 for oneTBB's default (all cores).
+template <class Real>
+void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                       const Real* source, Real* target, Real* accumulated,
+                       const std::string& isa = "auto", int threads = 0);
+
+}  // namespace lpvlab
