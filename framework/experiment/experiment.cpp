@@ -232,6 +232,7 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
   e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
+  e.settings.backend = params.table("compute").getChoice("backend", "auto", {"auto", "gl", "cpu"});
 
   Params sky = params.table("sky");
   e.reference.tracer.skyRadiance = sky.get<glm::vec3>("radiance", glm::vec3(0.0f), {.min = glm::vec3(0.0f)});
@@ -309,8 +310,10 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
 
   params.finish();
   try {
+    // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.
     resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance,
-                        e.settings.cascades.levels);
+                        e.settings.cascades.levels,
+                        e.settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl);
   } catch (const Error& error) {
     throw Error(file + ": " + error.what());
   }

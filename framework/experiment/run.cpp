@@ -104,6 +104,16 @@ nlohmann::json injectionFluxJson(const InjectionBalance& balance) {
 }
 
 // Where each light grid sat (finest first; one entry without cascades).
+// The backend the run resolved ([compute] backend) and where each strategy's kernels ran.
+nlohmann::json computeJson(const Pipeline& pipeline) {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [table, strategy] : pipeline.strategies().all())
+    stages[table] = strategy->runsOnCpu(pipeline.requirements()) ? "cpu" : "gl";
+  return {{"backend", backendName(pipeline.requirements().backend)},
+          {"raster_passes", "gl"},
+          {"strategies", stages}};
+}
+
 nlohmann::json cascadeLevelsJson(const Pipeline& pipeline) {
   nlohmann::json levels = nlohmann::json::array();
   for (const LightGrid& grid : pipeline.levels()) {
@@ -176,7 +186,9 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"libraries", versions(context)},
       {"host", hostInfo()},
       {"timing", timing.toJson()},
-      {"timing_method", {{"gpu", "GL timestamp queries around each stage"},
+      {"compute", computeJson(pipeline)},
+      {"timing_method", {{"gpu", "GL timestamp queries around each stage; for a stage on the CPU "
+                                 "backend (see compute) its wall time"},
                          {"wall", "steady clock, each stage ended by glFinish"}}},
       {"propagation_cell_iterations_per_second",
        propagationMs > 0.0

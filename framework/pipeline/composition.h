@@ -26,7 +26,15 @@ struct Strategies {
 // Every strategy's declare() merged, starting from the grid's SH order and cascade levels, after
 // checking that each strategy handles that order and has no refusal, and that a sky (radiance > 0)
 // is injected.
+// With ComputeBackend::Cpu, a strategy without a CPU kernel for the composition is an Error.
 Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
-                                 int cascadeLevels = 1);
+                                 int cascadeLevels = 1,
+                                 ComputeBackend backend = ComputeBackend::Gl);
+
+// "gl", "cpu" or "auto" ([compute] backend) as the backend a run uses, given the GL renderer's
+// name: "auto" is CpuWherePossible on a software renderer (llvmpipe, softpipe), else Gl.
+ComputeBackend resolveBackend(const std::string& requested, const std::string& glRenderer);
+// The backend's name for manifests: "gl", "cpu", "cpu where possible".
+std::string backendName(ComputeBackend backend);
 
 }  // namespace lpvlab

@@ -1,5 +1,6 @@
 #include "framework/pipeline/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "framework/core/error.h"
@@ -35,6 +36,13 @@ std::vector<glm::vec3> visiblePositions(const GBuffer& gbuffer) {
   return positions;
 }
 
+template <class S>
+std::vector<const Strategy*> strategyPointers(const std::vector<std::unique_ptr<S>>& strategies) {
+  std::vector<const Strategy*> pointers;
+  for (const auto& strategy : strategies) pointers.push_back(strategy.get());
+  return pointers;
+}
+
 double gridFlux(const std::vector<float>& coefficients, int cells, int coefficientCount) {
   double flux = 0.0;
   for (int channel = 0; channel < LightGrid::kChannels; ++channel)
@@ -61,8 +69,9 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
                 "under [[lights]] in the experiment");
-  requirements_ = resolveRequirements(strategies_, settings.shOrder, settings.skyRadiance,
-                                      settings.cascades.levels);
+  requirements_ = resolveRequirements(
+      strategies_, settings.shOrder, settings.skyRadiance, settings.cascades.levels,
+      resolveBackend(settings.backend, reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
 
   scene_ = std::make_unique<SceneGpu>(scene);
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height);
@@ -194,6 +203,17 @@ FrameTimes Pipeline::renderFrame() {
     for (const auto& rendering : strategies_.rendering) rendering->render(frame);
   });
   times.gpuMs = gpuTimer_.collectMs();
+  // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
+  // timestamps do not see: its device time is its wall time (transfers to and from GL included).
+  const std::pair<const char*, std::vector<const Strategy*>> stageStrategies[] = {
+      {"occlusion", {strategies_.occlusion.get()}},
+      {"injection", strategyPointers(strategies_.injection)},
+      {"propagation", {strategies_.propagation.get()}},
+      {"indirect", strategyPointers(strategies_.rendering)}};
+  for (const auto& [name, strategies] : stageStrategies)
+    if (std::any_of(strategies.begin(), strategies.end(),
+                    [&](const Strategy* s) { return s->runsOnCpu(requirements_); }))
+      times.gpuMs[name] = times.wallMs[name];
   checkGl("frame");
   return times;
 }

@@ -35,6 +35,7 @@ struct PipelineSettings {
   CascadeSettings cascades;    // levels = 1: `grid` alone
   glm::vec3 skyRadiance{0.0f}; // constant sky, W/(m^2 sr): needs an injection strategy for it
   ShadowSettings shadow;
+  std::string backend = "auto"; // [compute] backend: "auto", "gl" or "cpu" (strategy.h)
 };
 
 // Stage name -> milliseconds, for one frame.
@@ -81,7 +82,7 @@ public:
   std::size_t propagatedCells() const;
   const Requirements& requirements() const { return requirements_; }
   const Strategies& strategies() const { return strategies_; }
-  // Bytes of GPU memory per resource group.
+  // Bytes per resource group (GL buffers and textures; host buffers of strategies on the CPU).
   nlohmann::json memoryReport() const;
 
 private:

@@ -81,7 +81,8 @@ std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int vi
 
 LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
                              int shadowResolution)
-    : shadowProgram_(shaders.graphics("raster/scene.vert", "raster/shadow.frag")),
+    : depthOnlyProgram_(shaders.graphics("raster/scene.vert", "raster/depth_only.frag")),
+      shadowProgram_(shaders.graphics("raster/scene.vert", "raster/shadow.frag")),
       rsmProgram_(shaders.graphics("raster/scene.vert", "raster/rsm.frag")) {
   const int layers = int(views.views.size());
   maps_.views = layers;
@@ -117,12 +118,17 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   }
 }
 
+// Surfaces without alpha masks go through a fragment-free program, the alpha-masked ones through
+// the material's alpha test; the depth test keeps the nearest either way, so the map is the same.
 void LightMapsPass::renderShadowMaps(const SceneGpu& scene) {
-  shadowProgram_.use();
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(shadowFramebuffers_[layer], maps_.shadowResolution, maps_.shadowResolution, 0);
+    depthOnlyProgram_.use();
     glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
-    scene.draw();
+    scene.draw(SceneGpu::AlphaMasks::None, false);
+    shadowProgram_.use();
+    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    scene.draw(SceneGpu::AlphaMasks::Only);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -53,7 +53,9 @@ public:
   const LightMaps& lightMaps() const { return maps_; }
 
 private:
-  Program shadowProgram_, rsmProgram_;
+  Program depthOnlyProgram_;  // shadows of surfaces without alpha masks
+  Program shadowProgram_;     // shadows of alpha-masked surfaces (the material's alpha test)
+  Program rsmProgram_;
   std::vector<glm::mat4> clipFromWorld_;  // per view
   LightMaps maps_;
   std::vector<gl::Framebuffer> shadowFramebuffers_, rsmFramebuffers_;  // per view (layer)

@@ -54,7 +54,10 @@ SceneGpu::SceneGpu(const Scene& scene)
     if (!draws_.empty() && draws_.back().material == mesh.material)
       draws_.back().indexCount += mesh.indices.size();
     else
-      draws_.push_back({mesh.material, first, mesh.indices.size()});
+      draws_.push_back({mesh.material,
+                        mesh.material >= 0 && mesh.material < int(scene.materials.size()) &&
+                            scene.materials[std::size_t(mesh.material)].alphaMode == AlphaMode::Mask,
+                        first, mesh.indices.size()});
   }
   vertices_ = gl::Buffer(vertices.size() * sizeof(Vertex), "scene vertices", vertices.data());
   indices_ = gl::Buffer(indices.size() * sizeof(std::uint32_t), "scene indices", indices.data());
@@ -92,14 +95,19 @@ SceneGpu::~SceneGpu() {
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void SceneGpu::draw() const {
+void SceneGpu::draw(AlphaMasks which, bool bindMaterials) const {
   glBindVertexArray(vertexArray_);
-  materials_.bindStorage(0);
+  if (bindMaterials) materials_.bindStorage(0);
   for (const DrawRange& range : draws_) {
-    glUniform1i(1, range.material);
-    const int texture = range.material < int(textureOfMaterial_.size())
-                            ? textureOfMaterial_[range.material] : -1;
-    glBindTextureUnit(0, texture >= 0 ? textures_[texture].id() : white_.id());
+    if ((which == AlphaMasks::Only && !range.alphaMasked) ||
+        (which == AlphaMasks::None && range.alphaMasked))
+      continue;
+    if (bindMaterials) {
+      glUniform1i(1, range.material);
+      const int texture = range.material < int(textureOfMaterial_.size())
+                              ? textureOfMaterial_[range.material] : -1;
+      glBindTextureUnit(0, texture >= 0 ? textures_[texture].id() : white_.id());
+    }
     glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)));
   }

@@ -24,9 +24,12 @@ public:
   SceneGpu(const SceneGpu&) = delete;
   SceneGpu& operator=(const SceneGpu&) = delete;
 
-  // Draws every triangle with the currently bound program, setting uniform location 1
-  // (materialIndex) and texture unit 0 per material.
-  void draw() const;
+  // Which materials' triangles draw() covers.
+  enum class AlphaMasks { Any, Only, None };
+  // Draws the selected triangles with the currently bound program; with `bindMaterials` it sets
+  // uniform location 1 (materialIndex) and texture unit 0 per material (a depth-only program
+  // for surfaces without alpha masks needs neither, and has no such uniform).
+  void draw(AlphaMasks which = AlphaMasks::Any, bool bindMaterials = true) const;
   std::size_t memoryBytes() const;
   // The scene's materials as given (for strategies that treat some materials apart, e.g. the
   // translucent ones of rendering "subsurface"), and the bounds of each one's triangles (empty
@@ -37,6 +40,7 @@ public:
 private:
   struct DrawRange {
     int material;
+    bool alphaMasked;  // the material's alpha mask can cut fragments out
     std::size_t firstIndex;
     std::size_t indexCount;
   };

@@ -18,6 +18,15 @@ struct Frame;
 class ShaderCompiler;
 struct GridGeometry;
 
+// Where the strategies' kernels run ([compute] backend). The raster passes (shadow maps, RSMs,
+// G-buffer) always run on GL.
+//   Gl                every strategy on GL
+//   Cpu               every strategy on the CPU: one without a CPU kernel for the composition is
+//                     refused, saying so
+//   CpuWherePossible  "auto" on a software GL renderer (llvmpipe): each strategy on the CPU if it
+//                     has a CPU kernel for the composition, else on GL
+enum class ComputeBackend { Gl, Cpu, CpuWherePossible };
+
 // What a composition of strategies needs; the pipeline allocates only that.
 struct Requirements {
   int shOrder = 1;              // SH order of the light grid ([grid] sh_order): (order+1)^2
@@ -28,6 +37,7 @@ struct Requirements {
   bool normalGrid = false;      // the injected VPLs' flux-weighted normal per cell (directed propagation)
   int cascadeLevels = 1;        // light grids in the cascade ([cascades] levels); the GV and the
                                 // normal grid exist once per level
+  ComputeBackend backend = ComputeBackend::Gl;
 };
 
 class Strategy {
@@ -43,11 +53,24 @@ public:
     (void)requirements;
     return {};
   }
+  // Why this strategy has no CPU kernel for this composition, or "" if it has one. The
+  // default: none yet.
+  virtual std::string cpuRefusal(const Requirements& requirements) const {
+    (void)requirements;
+    return "it has no CPU kernel yet";
+  }
+  // Whether this strategy runs on the CPU in this composition (see ComputeBackend).
+  bool runsOnCpu(const Requirements& requirements) const {
+    return requirements.backend == ComputeBackend::Cpu ||
+           (requirements.backend == ComputeBackend::CpuWherePossible &&
+            cpuRefusal(requirements).empty());
+  }
   // Compiles kernels and allocates the strategy's own buffers, once per run, after the grid's
   // placement is known; `requirements` is the merged result of every strategy's declare().
   virtual void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                        const Requirements& requirements) = 0;
-  // Bytes of GPU memory this strategy allocated itself (for the manifest).
+  // Bytes this strategy allocated itself (for the manifest): GL buffers, and the host buffers of
+  // its CPU kernel when it runs on the CPU.
   virtual std::size_t memoryBytes() const { return 0; }
 
   // The registered name, set by the registry when it creates the strategy.

@@ -4,7 +4,8 @@
 //   - occlusion "geometry_volume": exactly (res + 1)^3 cells of 4 floats (order-1 blocking), and
 //     with both sources one more such GV for merging, counted under "occlusion";
 //   - the light grid (current + accumulated) and standard propagation's scratch hold exactly
-//     3 * (order + 1)^2 floats per cell at SH orders 1, 2 and 3.
+//     3 * (order + 1)^2 floats per cell at SH orders 1, 2 and 3 (a GL scratch grid, or three host
+//     grids when gathering runs on the CPU).
 
 #include <string>
 #include <vector>
@@ -64,7 +65,10 @@ TEST(ResourceEconomy, LightGridAndScratchHoldExactlyTheOrdersCoefficients) {
                                  "propagation.method=\"" + method + "\""});
       const std::size_t perGrid = cells(r.resolution) * 3 * (order + 1) * (order + 1) * kFloat;
       EXPECT_EQ(r.bytes.at("light_grid").get<std::size_t>(), 2 * perGrid) << "order " << order;
-      EXPECT_EQ(r.bytes.at("propagation").get<std::size_t>(), perGrid) << "order " << order;
+      // On GL (scatter here) a ping-pong partner for `current`; gathering runs on the CPU on
+      // llvmpipe ("auto"), with host copies of current, its partner and the accumulated grid.
+      const std::size_t grids = method == "gather" ? 3 : 1;
+      EXPECT_EQ(r.bytes.at("propagation").get<std::size_t>(), grids * perGrid) << "order " << order;
     }
   }
 }

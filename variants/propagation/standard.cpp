@@ -12,6 +12,10 @@
 // surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
 // from, every occluded iteration, so light bounces as often as iterations allow
 // (standard_faces.glsl has the mathematics).
+// On the CPU backend ([compute] backend, strategy.h) gathering without a GV runs the CPU kernel
+// of standard_cpu.h: the injected grid is read back from GL once, every iteration runs on the
+// CPU, and the light and the accumulated grid go back to GL for rendering (all inside the
+// propagation stage's time). The GV, bounces and scattering have no CPU kernel yet.
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
@@ -37,6 +41,7 @@
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/propagation/standard_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -63,9 +68,23 @@ public:
              "geometry volume: set [occlusion] type = \"geometry_volume\" or bounces = false";
     return {};
   }
+  std::string cpuRefusal(const Requirements& requirements) const override {
+    if (scatter_) return "method = \"scatter\" has no CPU kernel (gathering computes the same grid)";
+    if (requirements.geometryVolume) return "the geometry volume's attenuation has no CPU kernel yet";
+    return {};
+  }
 
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override {
+    if (runsOnCpu(requirements)) {
+      cpuTable_ = makeStandardFaceTable<float>(requirements.shOrder, damping_ * farFace_,
+                                               damping_ * sideFace_);
+      const std::size_t floats = LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float);
+      for (std::vector<float>* buffer : {&cpuCurrent_, &cpuNext_, &cpuAccumulated_})
+        buffer->assign(floats, 0.0f);
+      onCpu_ = true;
+      return;
+    }
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
     program_ = shaders.compute(
         scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
@@ -77,6 +96,7 @@ public:
   }
 
   void propagate(Frame& frame) override {
+    if (onCpu_) return propagateOnCpu(frame.lightGrid);
     LightGrid& grid = frame.lightGrid;
     program_.use();
     glUniform3iv(0, 1, &grid.geometry.resolution[0]);
@@ -102,15 +122,35 @@ public:
   }
 
   int iterations() const override { return iterations_; }
-  std::size_t memoryBytes() const override { return scratch_.size(); }
+  std::size_t memoryBytes() const override {
+    return scratch_.size() +
+           (cpuCurrent_.size() + cpuNext_.size() + cpuAccumulated_.size()) * sizeof(float);
+  }
 
 private:
+  void propagateOnCpu(LightGrid& grid) {
+    const std::size_t bytes = cpuCurrent_.size() * sizeof(float);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // injection's shader writes, before reading back
+    grid.current.download(cpuCurrent_.data(), bytes);
+    cpuAccumulated_ = cpuCurrent_;  // the pipeline starts the accumulated grid as the injected one
+    for (int i = 0; i < iterations_; ++i) {
+      standardGatherCpu(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
+                        cpuAccumulated_.data());
+      std::swap(cpuCurrent_, cpuNext_);
+    }
+    grid.current.upload(cpuCurrent_.data(), bytes);
+    grid.accumulated.upload(cpuAccumulated_.data(), bytes);
+  }
+
   int iterations_;
   bool scatter_;
   bool bounces_;
   double farFace_, sideFace_, damping_;
   Program program_;
   gl::Buffer scratch_;
+  bool onCpu_ = false;
+  StandardFaceTable<float> cpuTable_;
+  std::vector<float> cpuCurrent_, cpuNext_, cpuAccumulated_;  // host copies, on the CPU backend
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "standard",

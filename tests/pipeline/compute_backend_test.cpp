@@ -1,0 +1,90 @@
+// [compute] backend (framework/pipeline/strategy.h, ComputeBackend):
+//   a. the default Cornell box and a cascaded, SH order 2 composition give the same images with
+//      standard propagation on the CPU ("auto" on llvmpipe) and on GL, within float rounding;
+//   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
+//      a strategy without a CPU kernel for its composition (here: with the GV) on GL;
+//   c. "cpu" refuses, naming the strategy and saying why, a composition with a strategy that has
+//      no CPU kernel, and an unknown backend is an error naming the key.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "error_support.h"
+#include "framework/experiment/experiment.h"
+#include "framework/pipeline/pipeline.h"
+#include "pipeline_test_support.h"
+
+namespace lpvlab {
+namespace {
+
+struct Rendered {
+  std::vector<NamedImage> aovs;
+  bool propagationOnCpu = false;
+};
+
+Rendered render(std::vector<std::string> overrides) {
+  test::glTestContext();
+  overrides.insert(overrides.end(),
+                   {"output.width=96", "output.height=96", "timing.warmup=0", "timing.repeats=1"});
+  Experiment e = loadExperiment("", overrides);
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  pipeline.renderFrame();
+  return {pipeline.readOutputs(),
+          pipeline.strategies().propagation->runsOnCpu(pipeline.requirements())};
+}
+
+// Largest |a - b| over an AOV, relative to b's largest value.
+double relativeDifference(const Rendered& a, const Rendered& b, const std::string& name) {
+  const Image& x = findAov(a.aovs, name);
+  const Image& y = findAov(b.aovs, name);
+  double largest = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < x.pixels.size(); ++i) {
+    largest = std::max(largest, double(std::abs(x.pixels[i] - y.pixels[i])));
+    scale = std::max(scale, double(std::abs(y.pixels[i])));
+  }
+  return scale > 0.0 ? largest / scale : largest;
+}
+
+TEST(ComputeBackend, CpuAndGlPropagationGiveTheSameImages) {
+  for (const std::vector<std::string>& composition :
+       {std::vector<std::string>{}, {"grid.sh_order=2", "cascades.levels=2"}}) {
+    const Rendered gl = render([&] {
+      auto o = composition;
+      o.push_back("compute.backend=gl");
+      return o;
+    }());
+    const Rendered cpu = render(composition);  // "auto" on llvmpipe
+    ASSERT_FALSE(gl.propagationOnCpu);
+    ASSERT_TRUE(cpu.propagationOnCpu) << "this test needs a software GL renderer";
+    EXPECT_EQ(relativeDifference(cpu, gl, "direct"), 0.0);
+    EXPECT_LT(relativeDifference(cpu, gl, "indirect"), 1e-5) << composition.size();
+    EXPECT_GT(relativeDifference(cpu, gl, "indirect"), 0.0)
+        << "bit-identical: did both runs take the same backend?";
+  }
+}
+
+TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelExists) {
+  EXPECT_EQ(resolveBackend("auto", "llvmpipe (LLVM 15.0.6, 256 bits)"), ComputeBackend::CpuWherePossible);
+  EXPECT_EQ(resolveBackend("auto", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Gl);
+  EXPECT_EQ(resolveBackend("cpu", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Cpu);
+  EXPECT_EQ(resolveBackend("gl", "llvmpipe"), ComputeBackend::Gl);
+  // With the GV, standard propagation has no CPU kernel yet: "auto" keeps it on GL.
+  EXPECT_FALSE(render({"occlusion.type=\"geometry_volume\""}).propagationOnCpu);
+  EXPECT_FALSE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
+}
+
+TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {
+  const std::string message =
+      test::errorOf([] { loadExperiment("", {"compute.backend=\"cpu\""}); });
+  EXPECT_TRUE(test::contains(message, "[injection] type = \"rsm_vpl\" cannot run on the CPU backend"));
+  EXPECT_TRUE(test::contains(message, "no CPU kernel yet"));
+  EXPECT_TRUE(test::contains(
+      test::errorOf([] { loadExperiment("", {"compute.backend=\"vulkan\""}); }), "compute.backend"));
+}
+
+}  // namespace
+}  // namespace lpvlab
