@@ -26,22 +26,35 @@ StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
     if (!(omega >= 0.0) || !std::isfinite(omega))
       throw Error("standard propagation (CPU): face solid angle " + std::to_string(omega) +
                   " is not a finite non-negative number");
+  constexpr int kDirections = StandardFaceTable<Real>::kDirections;
   StandardFaceTable<Real> table{};
   table.coefficients = (shOrder + 1) * (shOrder + 1);
-  for (int direction = 0; direction < StandardFaceTable<Real>::kDirections; ++direction) {
-    glm::ivec3 offset(0);
-    offset[direction / 2] = direction % 2 == 0 ? 1 : -1;
-    table.offset[direction] = offset;
-    const glm::dvec3 d = -glm::dvec3(offset);  // light flows from the neighbour along -offset
+  glm::ivec3 axes[kDirections];  // +x, -x, +y, -y, +z, -z
+  for (int i = 0; i < kDirections; ++i) {
+    axes[i] = glm::ivec3(0);
+    axes[i][i / 2] = i % 2 == 0 ? 1 : -1;
+  }
+  for (int normal = 0; normal < kDirections; ++normal)
+    for (int k = 0; k < table.coefficients; ++k)
+      table.normalLobe[normal][k] = Real(shared::shCosineLobeAt(k, glm::dvec3(axes[normal])) / shared::PI);
+  for (int direction = 0; direction < kDirections; ++direction) {
+    table.offset[direction] = axes[direction];
+    const glm::dvec3 d = -glm::dvec3(axes[direction]);  // light flows from the neighbour along -offset
+    bool filled[kDirections] = {};
     for (int f = 0; f < shared::STANDARD_FACES; ++f) {
-      const glm::dvec3 w = shared::standardFaceDirection(d, f);
+      // The face's normal is an axis (standard_faces.glsl): file the face under it.
       const glm::dvec3 n = shared::standardFaceNormal(d, f);
+      const int normal = int(std::find_if(axes, axes + kDirections, [&](const glm::ivec3& a) {
+                           return glm::dvec3(a) == n;
+                         }) - axes);
+      if (normal == kDirections || normal == direction || filled[normal])
+        throw Error("standard propagation (CPU): face normals are not the five axes the kernel "
+                    "expects (standard_faces.glsl changed?)");
+      filled[normal] = true;
+      const glm::dvec3 w = shared::standardFaceDirection(d, f);
       const double omega = shared::standardFaceSolidAngle(f, farSolidAngle, sideSolidAngle);
-      for (int k = 0; k < table.coefficients; ++k) {
-        table.basis[direction][f][k] = Real(shared::shBasisAt(k, w));
-        // standardFaceFlux(I, omega, 1) * lobe / pi with the clamp left to the kernel.
-        table.weightedLobe[direction][f][k] = Real(omega * shared::shCosineLobeAt(k, n) / shared::PI);
-      }
+      for (int k = 0; k < table.coefficients; ++k)
+        table.scaledBasis[direction][normal][k] = Real(omega * shared::shBasisAt(k, w));
     }
   }
   return table;
@@ -55,35 +68,36 @@ namespace {
 // What one cell of a target row receives, one channel: from each of the six neighbours (its
 // coefficients at from[d][k * plane + x], already offset to the neighbour's x), through the five
 // faces of this cell that neighbour's light enters, weighted by present[d] (0 for a neighbour
-// outside the grid, whose pointer then points at readable memory). Written to `target` once and
-// added to `accumulated`: each cell's coefficients are stored once per iteration.
+// outside the grid, whose pointer then points at readable memory). The fluxes are summed per
+// face normal, then the six normals' lobes are added once. Written to `target` and added to
+// `accumulated`: each cell's coefficients are stored once per iteration.
 template <int N, class Real>
 [[gnu::always_inline]] inline void gatherCell(const StandardFaceTable<Real>& table,
                                               const Real* const (&from)[6],
                                               const Real (&present)[6], std::size_t plane, int x,
                                               Real* target, Real* accumulated) {
-  Real out[N];
-#pragma GCC unroll 16
-  for (int k = 0; k < N; ++k) out[k] = Real(0);
+  Real fluxByNormal[6] = {};
 #pragma GCC unroll 6
   for (int d = 0; d < 6; ++d) {
     Real s[N];
 #pragma GCC unroll 16
     for (int k = 0; k < N; ++k) s[k] = from[d][k * plane + x];
-#pragma GCC unroll 5
-    for (int f = 0; f < 5; ++f) {
+#pragma GCC unroll 6
+    for (int normal = 0; normal < 6; ++normal) {
+      if (normal == d) continue;  // the shared face receives nothing
       Real intensity = Real(0);
 #pragma GCC unroll 16
-      for (int k = 0; k < N; ++k) intensity += s[k] * table.basis[d][f][k];
-      const Real flux = std::max(intensity, Real(0)) * present[d];
-#pragma GCC unroll 16
-      for (int k = 0; k < N; ++k) out[k] += flux * table.weightedLobe[d][f][k];
+      for (int k = 0; k < N; ++k) intensity += s[k] * table.scaledBasis[d][normal][k];
+      fluxByNormal[normal] += std::max(intensity, Real(0)) * present[d];
     }
   }
 #pragma GCC unroll 16
   for (int k = 0; k < N; ++k) {
-    target[k * plane + x] = out[k];
-    accumulated[k * plane + x] += out[k];
+    Real out = Real(0);
+#pragma GCC unroll 6
+    for (int normal = 0; normal < 6; ++normal) out += fluxByNormal[normal] * table.normalLobe[normal][k];
+    target[k * plane + x] = out;
+    accumulated[k * plane + x] += out;
   }
 }
 

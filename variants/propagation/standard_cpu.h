@@ -6,9 +6,11 @@
 // One source of the mathematics: every number the kernel multiplies by comes from the shared
 // GLSL compiled as C++ (standard_faces.glsl: face directions, normals and solid angles;
 // sh.glsl: the SH basis and the clamped-cosine lobe), tabulated once per run in StandardFaceTable.
-// What the kernel adds is only the loop order: a row of cells along x at a time, each
-// neighbour's five faces in one pass over the row (the source coefficients loaded once for all
-// five), so the compiler vectorises along x. The grid layout is the GL kernels'
+// What the kernel adds is only the loop order and one factoring: every face a cell receives light
+// through has one of six normals (the axes), so the target's coefficients are
+//     sum over normals n of (sum of the fluxes of the faces with normal n) * lobe(n) / pi,
+// six lobes per cell instead of thirty. A row of cells along x is done at a time, all six
+// neighbours per cell, so the compiler vectorises along x and each target cell is written once. The grid layout is the GL kernels'
 // (shaders/common/grid.glsl), so buffers move between the backends unchanged.
 //
 // Instruction sets: the row loop is compiled three times, for x86-64 (SSE2, any 64-bit x86),
@@ -26,18 +28,20 @@
 
 namespace lpvlab {
 
-// Per propagation direction (the neighbour's offset from the target cell, 6) and face (5): the
-// SH basis at the direction to the face centre, and the coefficients a unit flux through the
-// face adds to the target (the clamped-cosine lobe about the face normal, times the face's solid
-// angle, over pi). So for one face: intensity = sum_k source_k basis_k, and the target gains
-// max(0, intensity) * weightedLobe_k (standard_faces.glsl's propagateThroughFace, factored).
+// Directions and normals are both indexed by axis and sign: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z.
+// Per neighbour (its offset from the target cell, `direction`) and face normal: the SH basis at
+// the direction to that face's centre times the face's solid angle, so that the face's flux is
+// max(0, sum_k source_k scaledBasis_k) (standard_faces.glsl's standardFaceFlux without a GV).
+// The face whose normal is the offset itself is the one the two cells share, which receives
+// nothing: its row is zero and the kernel skips it. Per normal: the coefficients a unit flux
+// through a face with that normal adds to the target, its clamped-cosine lobe over pi.
 template <class Real>
 struct StandardFaceTable {
-  static constexpr int kDirections = 6, kFaces = 5, kMaxCoefficients = 16;
+  static constexpr int kDirections = 6, kMaxCoefficients = 16;
   int coefficients = 4;  // (order + 1)^2
   glm::ivec3 offset[kDirections];  // the neighbour's offset; light flows from it, along -offset
-  Real basis[kDirections][kFaces][kMaxCoefficients];
-  Real weightedLobe[kDirections][kFaces][kMaxCoefficients];
+  Real scaledBasis[kDirections][kDirections][kMaxCoefficients];  // [direction][normal][k]
+  Real normalLobe[kDirections][kMaxCoefficients];                // [normal][k]
 };
 
 // Throws an Error for an SH order outside 1..3 or a negative or non-finite solid angle.
