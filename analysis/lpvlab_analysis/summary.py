@@ -2,7 +2,7 @@
 
 summary.csv (written by `lpvlab sweep`) has one row per configuration and
 repeat: config_id, config_name, repeat, run_dir, param.<key>..., gpu_ms.<stage>,
-wall_ms.<stage>, memory_bytes, cells, metric.<pair>.<metric>. Timings vary
+wall_ms.<stage>, memory_bytes, cells, work.<stage>.<...>, metric.<pair>.<metric>. Timings vary
 between repeats, so they are summarised by their median (robust to the odd
 slow frame); parameters, memory and image metrics describe the configuration
 and are taken from its first row that has them.
@@ -26,7 +26,7 @@ class SummaryError(Exception):
 
 
 def _numeric_prefixes():
-    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.")
+    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.", "work.")
 
 
 def load_summary(path):

@@ -320,6 +320,30 @@ std::string configurationToml(const std::string& file, const SweepConfiguration&
   return s.str();
 }
 
+namespace {
+
+// A manifest's work report (Pipeline::workReport) as summary columns: per stage the units of
+// each kind (work.<stage>.<unit>s), and the multiply-adds and bytes of the modelled kernels.
+std::map<std::string, double> workColumns(const nlohmann::json& manifest) {
+  std::map<std::string, double> columns;
+  const auto work = manifest.find("work");
+  if (work == manifest.end() || !work->is_object()) return columns;
+  for (const auto& [stage, counts] : work->items()) {
+    if (!counts.is_array()) continue;
+    for (const auto& count : counts) {
+      if (!count.contains("unit")) continue;
+      columns["work." + stage + "." + count["unit"].get<std::string>() + "s"] += count.value("units", 0.0);
+      if (count.value("multiply_adds_per_unit", 0.0) > 0.0)
+        columns["work." + stage + ".multiply_adds"] += count.value("multiply_adds", 0.0);
+      if (count.value("bytes_per_unit", 0.0) > 0.0)
+        columns["work." + stage + ".bytes"] += count.value("bytes", 0.0);
+    }
+  }
+  return columns;
+}
+
+}  // namespace
+
 SummaryResult writeSweepSummary(const std::string& dir) {
   const fs::path root(dir);
   if (!fs::is_directory(root)) throw Error(dir + ": not a directory");
@@ -356,9 +380,10 @@ SummaryResult writeSweepSummary(const std::string& dir) {
     manifests.push_back({id, readJson(sub / "manifest.json")});
     result.complete.push_back(id);
   }
-  std::set<std::string> stages, memoryGroups;
+  std::set<std::string> stages, memoryGroups, workKeys;
   std::set<std::pair<std::string, std::string>> metrics;
   for (const auto& [id, m] : manifests) {
+    for (const auto& [key, _] : workColumns(m)) workKeys.insert(key);
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
       for (const auto& [group, _] : g->items())
         if (group != "total") memoryGroups.insert(group);
@@ -380,6 +405,7 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   header.push_back("memory_bytes");
   for (const std::string& g : memoryGroups) header.push_back("memory_bytes." + g);
   header.push_back("cells");
+  for (const std::string& k : workKeys) header.push_back(k);
   for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
   csv << "\n";
@@ -419,6 +445,12 @@ SummaryResult writeSweepSummary(const std::string& dir) {
         row.push_back(jsonText(groups && groups->contains(g) ? &(*groups)[g] : nullptr));
       }
       row.push_back(cells);
+      const std::map<std::string, double> work = workColumns(m);
+      for (const std::string& k : workKeys) {
+        const auto found = work.find(k);
+        const nlohmann::json value = found == work.end() ? nlohmann::json() : nlohmann::json(found->second);
+        row.push_back(jsonText(found == work.end() ? nullptr : &value));
+      }
       for (const auto& [pair, metric] : metrics) {
         const nlohmann::json* v = nullptr;
         if (const auto* c = findPath(m, "reference.comparison"); c && c->contains(pair)) {

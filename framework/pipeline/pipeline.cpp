@@ -262,6 +262,45 @@ InjectionBalance Pipeline::measureInjection() {
   return balance;
 }
 
+nlohmann::json Pipeline::workReport() const {
+  const LightMaps& maps = lightMapsPass_->lightMaps();
+  const double pixels = double(settings_.width) * settings_.height;
+  FrameShape shape;
+  shape.cells = double(settings_.grid.cellCount());
+  shape.levels = int(levels_.size());
+  shape.coefficients = levels_.front().coefficients;
+  shape.rsmTexels = double(maps.views) * maps.rsmResolution * maps.rsmResolution;
+  shape.pixels = pixels;
+  const auto entry = [](const WorkCount& w) {
+    return nlohmann::json{{"unit", w.unit},
+                          {"units", w.units},
+                          {"multiply_adds_per_unit", w.multiplyAddsPerUnit},
+                          {"bytes_per_unit", w.bytesPerUnit},
+                          {"multiply_adds", w.units * w.multiplyAddsPerUnit},
+                          {"bytes", w.units * w.bytesPerUnit}};
+  };
+  nlohmann::json report = nlohmann::json::object();
+  const double shadowTexels = double(maps.views) * maps.shadowResolution * maps.shadowResolution;
+  report["shadow_maps"] = {entry({"texel", shadowTexels})};
+  report["rsm"] = {entry({"texel", shape.rsmTexels})};
+  report["gbuffer"] = {entry({"pixel", pixels})};
+  report["direct"] = {entry({"pixel", pixels})};
+  const std::pair<const char*, std::string> stageOfTable[] = {
+      {"occlusion", "occlusion"}, {"injection", "injection"}, {"propagation", "propagation"},
+      {"rendering", "indirect"}};
+  for (const auto& [table, strategy] : strategies_.all()) {
+    std::string stage = table;
+    for (const auto& [prefix, name] : stageOfTable)
+      if (table.rfind(prefix, 0) == 0) stage = name;
+    if (!report.contains(stage)) report[stage] = nlohmann::json::array();
+    const std::vector<WorkCount> counts = strategy->work(shape, requirements_);
+    if (counts.empty() && strategy->name() != "none")
+      report[stage].push_back({{"table", table}, {"not_counted", strategy->name()}});
+    for (const WorkCount& w : counts) report[stage].push_back(entry(w));
+  }
+  return report;
+}
+
 nlohmann::json Pipeline::memoryReport() const {
   const auto sum = [](const auto& items, auto bytesOf) {
     std::size_t total = 0;

@@ -82,6 +82,11 @@ public:
   std::size_t propagatedCells() const;
   const Requirements& requirements() const { return requirements_; }
   const Strategies& strategies() const { return strategies_; }
+  // What each stage does per frame (strategy.h's WorkCount), by stage name: a list of
+  // {unit, units, multiply_adds_per_unit, bytes_per_unit, multiply_adds, bytes}; the raster
+  // passes count their texels and pixels only (their arithmetic is the rasteriser's), and a
+  // strategy that does not model its work yet is listed by table with "not_counted".
+  nlohmann::json workReport() const;
   // Bytes per resource group (GL buffers and textures; host buffers of strategies on the CPU).
   nlohmann::json memoryReport() const;
 

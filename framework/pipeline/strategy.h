@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "framework/core/registry.h"
 
@@ -26,6 +27,26 @@ struct GridGeometry;
 //   CpuWherePossible  "auto" on a software GL renderer (llvmpipe): each strategy on the CPU if it
 //                     has a CPU kernel for the composition, else on GL
 enum class ComputeBackend { Gl, Cpu, CpuWherePossible };
+
+// What a stage does per frame, apart from the machine that does it (so methods can be compared
+// by their work as well as their time): `units` of `unit` ("cell-iteration", "VPL", "pixel"),
+// and per unit the kernel's own count of multiply-adds and of bytes read and written (its
+// algorithmic traffic, not what reaches DRAM after caches). 0 per unit: not modelled.
+struct WorkCount {
+  std::string unit;
+  double units = 0.0;
+  double multiplyAddsPerUnit = 0.0;
+  double bytesPerUnit = 0.0;
+};
+
+// The sizes of one frame that a strategy's work depends on.
+struct FrameShape {
+  double cells = 0.0;     // light-grid cells of one level
+  int levels = 1;         // cascade levels
+  int coefficients = 4;   // SH coefficients per channel
+  double rsmTexels = 0.0; // RSM texels over every light view
+  double pixels = 0.0;    // output pixels
+};
 
 // What a composition of strategies needs; the pipeline allocates only that.
 struct Requirements {
@@ -69,6 +90,14 @@ public:
   // placement is known; `requirements` is the merged result of every strategy's declare().
   virtual void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                        const Requirements& requirements) = 0;
+  // What this strategy does per frame (see WorkCount), for the kernels it runs in this
+  // composition (`requirements`: the backend among others). Empty: not counted yet.
+  virtual std::vector<WorkCount> work(const FrameShape& shape,
+                                      const Requirements& requirements) const {
+    (void)shape;
+    (void)requirements;
+    return {};
+  }
   // Bytes this strategy allocated itself (for the manifest): GL buffers, and the host buffers of
   // its CPU kernel when it runs on the CPU.
   virtual std::size_t memoryBytes() const { return 0; }

@@ -24,6 +24,17 @@ public:
 
   int maxShOrder() const override { return 3; }
 
+  // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,
+  // about a multiply-add each) and 3N products added atomically (read and write, 8 B each); the
+  // cell from the shifted position (about 10); with the normal grid 4 more atomic adds.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override {
+    const double n = shape.coefficients;
+    const double normals = requirements.normalGrid ? 4.0 : 0.0;
+    return {{"VPL", shape.rsmTexels * shape.levels, 4 * n + 10 + normals,
+             3 * 16 + 8 * (3 * n + normals)}};
+  }
+
   void prepare(ShaderCompiler& shaders, const GridGeometry&,
                const Requirements& requirements) override {
     program_ = shaders.compute(

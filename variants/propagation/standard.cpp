@@ -122,6 +122,27 @@ public:
   }
 
   int iterations() const override { return iterations_; }
+
+  // Per cell-iteration, with N coefficients per channel and 3 channels. Reads: the six
+  // neighbours' 3N floats; writes: the cell's 3N; the accumulated grid's 3N read and written.
+  // Transfers: the CPU kernel sums fluxes per face normal, 30 faces x N for the intensities and
+  // 6 normals x N for the lobes per channel; the GL kernels do 30 faces x 2N per channel (their
+  // SH evaluations per face not counted). Scattering adds into its 6 neighbours atomically (6 x 3N
+  // read-modify-writes instead of 3N writes). The GV reads its 8 corners (vec4) per cell and
+  // interpolates 8 x 4 per face; bounces run every face twice.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override {
+    const double n = shape.coefficients;
+    double madds = runsOnCpu(requirements) ? 3 * 36 * n : 3 * 30 * 2 * n;
+    double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
+    if (requirements.geometryVolume) {
+      madds += 30 * 8 * 4;
+      bytes += 8 * 16;
+    }
+    if (bounces_) madds *= 2;
+    return {{"cell-iteration", shape.cells * shape.levels * iterations_, madds, bytes}};
+  }
+
   std::size_t memoryBytes() const override {
     return scratch_.size() +
            (cpuCurrent_.size() + cpuNext_.size() + cpuAccumulated_.size()) * sizeof(float);

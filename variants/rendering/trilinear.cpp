@@ -76,6 +76,15 @@ void TrilinearKernelRendering::render(Frame& frame) {
   }
 }
 
+std::vector<WorkCount> TrilinearKernelRendering::work(const FrameShape& shape,
+                                                     const Requirements& requirements) const {
+  if (options_.specularAlbedo > 0.0f) return {};
+  const double n = shape.coefficients;
+  const double reads = options_.leakDamping > 0.0f ? 2.0 : 1.0;
+  return {{"pixel", shape.pixels * shape.levels, reads * (24 * n + 8) + n,
+           3 * 16 + 2 * 16 + reads * 96 * n}};
+}
+
 namespace {
 
 class TrilinearRendering final : public TrilinearKernelRendering {

@@ -34,6 +34,12 @@ public:
   void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
                const Requirements& requirements) override;
   void render(Frame& frame) override;
+  // Per pixel and level: the G-buffer's 3 texels (16 B each) and the output's read and write;
+  // the lobe (N), and per channel the 8 corner cells' N coefficients against it plus the 8
+  // trilinear weights (24N + 8, its 96N bytes). Leak damping reads the corners once more for
+  // the slope. The glossy march (specular_albedo > 0) is not modelled: then nothing is counted.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override;
 
 private:
   TrilinearKernelOptions options_;

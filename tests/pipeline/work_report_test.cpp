@@ -1,0 +1,132 @@
+// The work each stage reports (Pipeline::workReport, strategy.h's WorkCount), apart from time:
+//   a. the units follow the frame's shape exactly: cell-iterations = cells x iterations x levels,
+//      VPLs = RSM texels over every light view x levels, pixels = the output's; totals are
+//      units x per-unit figures;
+//   b. the per-unit figures follow the kernels run: the CPU's factored gather (3 x 36N) against
+//      GL's (3 x 60N), more with SH order 2, more with the GV;
+//   c. a strategy that does not model its work is listed as not counted, never as zero;
+//   d. the sweep summary turns the report into work.<stage>.* columns.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/experiment/experiment.h"
+#include "framework/experiment/sweep.h"
+#include "framework/io/atomic_file.h"
+#include "framework/pipeline/pipeline.h"
+#include "io/temp_dir.h"
+#include "pipeline_test_support.h"
+
+namespace lpvlab {
+namespace {
+
+struct Report {
+  nlohmann::json work;
+  double cells = 0.0;
+  int levels = 1;
+  int iterations = 0;
+  int rsmResolution = 0;
+  int width = 0, height = 0;
+};
+
+Report workOf(std::vector<std::string> overrides) {
+  test::glTestContext();
+  overrides.insert(overrides.end(), {"output.width=64", "output.height=48"});
+  Experiment e = loadExperiment("", overrides);
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Report r;
+  r.work = pipeline.workReport();
+  r.cells = double(e.settings.grid.cellCount());
+  r.levels = int(pipeline.levels().size());
+  r.iterations = pipeline.strategies().propagation->iterations();
+  r.width = e.settings.width;
+  r.height = e.settings.height;
+  r.rsmResolution = e.settings.rsmResolution;
+  return r;
+}
+
+const nlohmann::json& only(const nlohmann::json& stage) {
+  EXPECT_EQ(stage.size(), 1u) << stage.dump();
+  return stage.at(0);
+}
+
+void expectTotals(const nlohmann::json& w) {
+  EXPECT_DOUBLE_EQ(w.at("multiply_adds").get<double>(),
+                   w.at("units").get<double>() * w.at("multiply_adds_per_unit").get<double>());
+  EXPECT_DOUBLE_EQ(w.at("bytes").get<double>(),
+                   w.at("units").get<double>() * w.at("bytes_per_unit").get<double>());
+}
+
+TEST(WorkReport, UnitsFollowTheFramesShape) {
+  for (const std::vector<std::string>& o :
+       {std::vector<std::string>{"propagation.iterations=7"},
+        {"propagation.iterations=5", "cascades.levels=3"}}) {
+    const Report r = workOf(o);
+    const nlohmann::json& propagation = only(r.work.at("propagation"));
+    EXPECT_EQ(propagation.at("unit"), "cell-iteration");
+    EXPECT_DOUBLE_EQ(propagation.at("units").get<double>(), r.cells * r.iterations * r.levels);
+    expectTotals(propagation);
+    const nlohmann::json& injection = only(r.work.at("injection"));
+    EXPECT_EQ(injection.at("unit"), "VPL");
+    // The RSM's texels over every light view: the shadow maps count the same views.
+    const double views = only(r.work.at("rsm")).at("units").get<double>() /
+                         (double(r.rsmResolution) * r.rsmResolution);
+    EXPECT_GE(views, 1.0);
+    EXPECT_EQ(views, std::floor(views));
+    EXPECT_DOUBLE_EQ(injection.at("units").get<double>(),
+                     views * r.rsmResolution * r.rsmResolution * r.levels);
+    expectTotals(injection);
+    const nlohmann::json& indirect = only(r.work.at("indirect"));
+    EXPECT_DOUBLE_EQ(indirect.at("units").get<double>(), double(r.width) * r.height * r.levels);
+    EXPECT_DOUBLE_EQ(only(r.work.at("gbuffer")).at("units").get<double>(), double(r.width) * r.height);
+  }
+}
+
+TEST(WorkReport, PerUnitFiguresFollowTheKernelsRun) {
+  const auto perCell = [](const std::vector<std::string>& o) {
+    return only(workOf(o).work.at("propagation")).at("multiply_adds_per_unit").get<double>();
+  };
+  const double cpu = perCell({}), gl = perCell({"compute.backend=gl"});
+  EXPECT_DOUBLE_EQ(cpu, 3 * 36 * 4);  // on llvmpipe "auto" gathers on the CPU
+  EXPECT_DOUBLE_EQ(gl, 3 * 60 * 4);
+  EXPECT_DOUBLE_EQ(perCell({"compute.backend=gl", "grid.sh_order=2"}), 3 * 60 * 9);
+  EXPECT_GT(perCell({"occlusion.type=\"geometry_volume\""}), gl);
+}
+
+TEST(WorkReport, StrategiesWithoutAModelAreListedAsNotCounted) {
+  const Report r = workOf({"rendering.type=\"glossy\"", "rendering.specular_albedo=0.5"});
+  const nlohmann::json& indirect = r.work.at("indirect");
+  ASSERT_EQ(indirect.size(), 1u);
+  EXPECT_EQ(indirect.at(0).at("not_counted"), "glossy");
+  EXPECT_FALSE(indirect.at(0).contains("multiply_adds"));
+}
+
+TEST(WorkReport, TheSweepSummaryHasWorkColumns) {
+  test::TempDir dir;
+  const Report r = workOf({});
+  const nlohmann::json manifest = {{"work", r.work},
+                                   {"timing", {{"samples", {{"gpu_ms", {{"total", {1.0}}}}}}}}};
+  std::filesystem::create_directories(dir.file("c0"));
+  writeTextAtomically(dir.file("c0/manifest.json"), manifest.dump());
+  writeSweepSummary(dir.path().string());
+  std::ifstream csv(dir.file("summary.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  for (const char* column : {"work.propagation.cell-iterations", "work.propagation.multiply_adds",
+                             "work.injection.VPLs", "work.indirect.pixels", "work.shadow_maps.texels"})
+    EXPECT_NE(header.find(column), std::string::npos) << column << " in " << header;
+  EXPECT_EQ(header.find("work.gbuffer.multiply_adds"), std::string::npos)
+      << "the raster passes' arithmetic is not modelled, so it has no column";
+  const double cellIterations = only(r.work.at("propagation")).at("units").get<double>();
+  EXPECT_NE(row.find(nlohmann::json(cellIterations).dump()), std::string::npos) << row;
+}
+
+}  // namespace
+}  // namespace lpvlab
