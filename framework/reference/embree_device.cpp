@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
 
 namespace lpvlab {
@@ -9,14 +10,10 @@ namespace lpvlab {
 namespace {
 
 bool cpuHas(const std::string& isa) {
-  __builtin_cpu_init();
-  if (isa == "sse4.2") return __builtin_cpu_supports("sse4.2");
-  if (isa == "avx") return __builtin_cpu_supports("avx");
-  if (isa == "avx2") return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  if (isa == "avx512")
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
-           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
-           __builtin_cpu_supports("avx512vl");
+  if (isa == "sse4.2") return cpuHasSse42();
+  if (isa == "avx") return cpuHasAvx();
+  if (isa == "avx2") return cpuHasX86_64_v3();
+  if (isa == "avx512") return cpuHasX86_64_v4();
   return false;
 }
 
@@ -41,10 +38,7 @@ const std::vector<std::string>& embreeInstructionSets() {
 }
 
 std::vector<std::string> supportedInstructionSets() {
-  std::vector<std::string> sets;
-  for (const std::string& isa : embreeInstructionSets())
-    if (cpuHas(isa)) sets.push_back(isa);
-  return sets;
+  return namesThisCpuRuns(embreeInstructionSets(), cpuHas);
 }
 
 const std::vector<int>& rayPacketWidths() {

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
 
@@ -165,15 +166,9 @@ LPVLAB_GATHER_ROWS(gatherRowsV4, __attribute__((target("arch=x86-64-v4"))))
 #undef LPVLAB_GATHER_ROWS
 
 bool cpuRunsKernel(const std::string& isa) {
-  __builtin_cpu_init();
   if (isa == "x86-64") return true;
-  if (isa == "x86-64-v3")
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-           __builtin_cpu_supports("bmi2");
-  if (isa == "x86-64-v4")
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-           __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
-           __builtin_cpu_supports("avx512vl");
+  if (isa == "x86-64-v3") return cpuHasX86_64_v3();
+  if (isa == "x86-64-v4") return cpuHasX86_64_v4();
   return false;
 }
 
@@ -204,10 +199,7 @@ const std::vector<std::string>& cpuKernelInstructionSets() {
 }
 
 std::vector<std::string> supportedCpuKernelInstructionSets() {
-  std::vector<std::string> sets;
-  for (const std::string& isa : cpuKernelInstructionSets())
-    if (cpuRunsKernel(isa)) sets.push_back(isa);
-  return sets;
+  return namesThisCpuRuns(cpuKernelInstructionSets(), cpuRunsKernel);
 }
 
 template <class Real>
