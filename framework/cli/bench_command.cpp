@@ -34,6 +34,7 @@ int benchCommand(const Options& options) {
       const std::size_t cells = pipeline.propagatedCells();  // every cascade level's
       const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
       if (!header) {
+        std::cout << computeLine(pipeline.computeReport()) << "\n";
         std::cout << std::setw(12) << "grid" << std::setw(6) << "iter";
         for (const auto& [stage, s] : report.gpuMs) std::cout << std::setw(12) << stage;
         std::cout << std::setw(16) << "cell-it/s\n";

@@ -2,6 +2,8 @@
 // The subcommands behind lpvlab's CLI; each returns the process exit code.
 
 #include <string>
+
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace lpvlab::cli {
@@ -22,6 +24,9 @@ struct Options {
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
   std::string metric;                     // report: the error metric of the speed/accuracy plot
 };
+
+// "compute: BACKEND; on the CPU: TABLES" from a Pipeline::computeReport().
+std::string computeLine(const nlohmann::json& compute);
 
 int runCommand(const Options& options);
 int benchCommand(const Options& options);

@@ -27,6 +27,7 @@ int runCommand(const Options& options) {
             << context->backend() << "), " << experiment.warmupFrames << " warm-up + "
             << experiment.repeats << " timed frames\n";
   const nlohmann::json manifest = runExperiment(experiment, *context, out);
+  std::cerr << computeLine(manifest["compute"]) << "\n";
   const auto& gpu = manifest["timing"]["gpu_ms"];
   std::cout << "stage         gpu median ms  (q1-q3)\n";
   for (const auto& [stage, summary] : gpu.items())

@@ -104,16 +104,6 @@ nlohmann::json injectionFluxJson(const InjectionBalance& balance) {
 }
 
 // Where each light grid sat (finest first; one entry without cascades).
-// The backend the run resolved ([compute] backend) and where each strategy's kernels ran.
-nlohmann::json computeJson(const Pipeline& pipeline) {
-  nlohmann::json stages = nlohmann::json::object();
-  for (const auto& [table, strategy] : pipeline.strategies().all())
-    stages[table] = strategy->runsOnCpu(pipeline.requirements()) ? "cpu" : "gl";
-  return {{"backend", backendName(pipeline.requirements().backend)},
-          {"raster_passes", "gl"},
-          {"strategies", stages}};
-}
-
 nlohmann::json cascadeLevelsJson(const Pipeline& pipeline) {
   nlohmann::json levels = nlohmann::json::array();
   for (const LightGrid& grid : pipeline.levels()) {
@@ -186,7 +176,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"libraries", versions(context)},
       {"host", hostInfo()},
       {"timing", timing.toJson()},
-      {"compute", computeJson(pipeline)},
+      {"compute", pipeline.computeReport()},
       {"timing_method", {{"gpu", "GL timestamp queries around each stage; for a stage on the CPU "
                                  "backend (see compute) its wall time"},
                          {"wall", "steady clock, each stage ended by glFinish"}}},

@@ -262,6 +262,15 @@ InjectionBalance Pipeline::measureInjection() {
   return balance;
 }
 
+nlohmann::json Pipeline::computeReport() const {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [table, strategy] : strategies_.all())
+    stages[table] = strategy->runsOnCpu(requirements_) ? "cpu" : "gl";
+  return {{"backend", backendName(requirements_.backend)},
+          {"raster_passes", "gl"},
+          {"strategies", stages}};
+}
+
 nlohmann::json Pipeline::workReport() const {
   const LightMaps& maps = lightMapsPass_->lightMaps();
   const double pixels = double(settings_.width) * settings_.height;

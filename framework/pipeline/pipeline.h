@@ -82,6 +82,9 @@ public:
   std::size_t propagatedCells() const;
   const Requirements& requirements() const { return requirements_; }
   const Strategies& strategies() const { return strategies_; }
+  // The backend the run resolved ([compute] backend) and where each strategy's kernels run:
+  // {"backend": ..., "raster_passes": "gl", "strategies": {table: "cpu" | "gl"}}.
+  nlohmann::json computeReport() const;
   // What each stage does per frame (strategy.h's WorkCount), by stage name: a list of
   // {unit, units, multiply_adds_per_unit, bytes_per_unit, multiply_adds, bytes}; the raster
   // passes count their texels and pixels only (their arithmetic is the rasteriser's), and a
