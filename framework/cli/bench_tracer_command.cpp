@@ -53,6 +53,13 @@ int benchTracerCommand(const Options& options) {
   if (isas.size() == 1 && isas[0] == "all") isas = supportedInstructionSets();
   std::vector<int> widths = options.tracerWidths;
   if (widths.empty()) widths = {e.reference.tracer.engine.packetWidth};
+  // Every value is checked before anything is measured or printed.
+  for (const std::string& isa : isas)
+    if (const std::string problem = instructionSetProblem(isa); !problem.empty())
+      throw Error("bench --isa: " + problem + (isa == "all" ? " (all goes alone)" : ", or all"));
+  for (int width : widths)
+    if (const std::string problem = packetWidthProblem(width); !problem.empty())
+      throw Error("bench --packet-width: " + problem);
 
   const int threads = e.reference.threads > 0 ? e.reference.threads : int(std::thread::hardware_concurrency());
   std::cout << "lpvlab bench --tracer: " << e.name << " (" << e.scene.triangleCount() << " triangles), "

@@ -381,9 +381,11 @@ SummaryResult writeSweepSummary(const std::string& dir) {
     result.complete.push_back(id);
   }
   std::set<std::string> stages, memoryGroups, workKeys;
+  std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;
   for (const auto& [id, m] : manifests) {
-    for (const auto& [key, _] : workColumns(m)) workKeys.insert(key);
+    workById[id] = workColumns(m);
+    for (const auto& [key, _] : workById[id]) workKeys.insert(key);
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
       for (const auto& [group, _] : g->items())
         if (group != "total") memoryGroups.insert(group);
@@ -445,7 +447,7 @@ SummaryResult writeSweepSummary(const std::string& dir) {
         row.push_back(jsonText(groups && groups->contains(g) ? &(*groups)[g] : nullptr));
       }
       row.push_back(cells);
-      const std::map<std::string, double> work = workColumns(m);
+      const std::map<std::string, double>& work = workById[id];
       for (const std::string& k : workKeys) {
         const auto found = work.find(k);
         const nlohmann::json value = found == work.end() ? nlohmann::json() : nlohmann::json(found->second);

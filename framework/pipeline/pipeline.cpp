@@ -1,6 +1,5 @@
 #include "framework/pipeline/pipeline.h"
 
-#include <algorithm>
 #include <chrono>
 
 #include "framework/core/error.h"
@@ -36,11 +35,11 @@ std::vector<glm::vec3> visiblePositions(const GBuffer& gbuffer) {
   return positions;
 }
 
-template <class S>
-std::vector<const Strategy*> strategyPointers(const std::vector<std::unique_ptr<S>>& strategies) {
-  std::vector<const Strategy*> pointers;
-  for (const auto& strategy : strategies) pointers.push_back(strategy.get());
-  return pointers;
+// The stage whose time a strategy's work shows in, from its experiment table
+// (Strategies::all): "injection.also[0]" -> "injection", "rendering" -> "indirect".
+std::string stageOfTable(const std::string& table) {
+  const std::string stage = table.substr(0, table.find('.'));
+  return stage == "rendering" ? "indirect" : stage;
 }
 
 double gridFlux(const std::vector<float>& coefficients, int cells, int coefficientCount) {
@@ -72,6 +71,9 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   requirements_ = resolveRequirements(
       strategies_, settings.shOrder, settings.skyRadiance, settings.cascades.levels,
       resolveBackend(settings.backend, reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
+
+  for (const auto& [table, strategy] : strategies_.all())
+    if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
 
   scene_ = std::make_unique<SceneGpu>(scene);
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height);
@@ -205,15 +207,7 @@ FrameTimes Pipeline::renderFrame() {
   times.gpuMs = gpuTimer_.collectMs();
   // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
   // timestamps do not see: its device time is its wall time (transfers to and from GL included).
-  const std::pair<const char*, std::vector<const Strategy*>> stageStrategies[] = {
-      {"occlusion", {strategies_.occlusion.get()}},
-      {"injection", strategyPointers(strategies_.injection)},
-      {"propagation", {strategies_.propagation.get()}},
-      {"indirect", strategyPointers(strategies_.rendering)}};
-  for (const auto& [name, strategies] : stageStrategies)
-    if (std::any_of(strategies.begin(), strategies.end(),
-                    [&](const Strategy* s) { return s->runsOnCpu(requirements_); }))
-      times.gpuMs[name] = times.wallMs[name];
+  for (const std::string& stage : cpuStages_) times.gpuMs[stage] = times.wallMs[stage];
   checkGl("frame");
   return times;
 }
@@ -294,13 +288,8 @@ nlohmann::json Pipeline::workReport() const {
   report["rsm"] = {entry({"texel", shape.rsmTexels})};
   report["gbuffer"] = {entry({"pixel", pixels})};
   report["direct"] = {entry({"pixel", pixels})};
-  const std::pair<const char*, std::string> stageOfTable[] = {
-      {"occlusion", "occlusion"}, {"injection", "injection"}, {"propagation", "propagation"},
-      {"rendering", "indirect"}};
   for (const auto& [table, strategy] : strategies_.all()) {
-    std::string stage = table;
-    for (const auto& [prefix, name] : stageOfTable)
-      if (table.rfind(prefix, 0) == 0) stage = name;
+    const std::string stage = stageOfTable(table);
     if (!report.contains(stage)) report[stage] = nlohmann::json::array();
     const std::vector<WorkCount> counts = strategy->work(shape, requirements_);
     if (counts.empty() && strategy->name() != "none")

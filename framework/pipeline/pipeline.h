@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,7 @@ private:
   std::unique_ptr<CascadeCarry> carry_;                            // with carrying cascades only
   gl::Texture directImage_, indirectImage_;
   GpuTimer gpuTimer_;
+  std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
 };
 
 }  // namespace lpvlab

@@ -46,25 +46,28 @@ const std::vector<int>& rayPacketWidths() {
   return widths;
 }
 
-EmbreeDevice makeEmbreeDevice(const RayEngineSettings& settings) {
+std::string instructionSetProblem(const std::string& isa) {
+  const std::vector<std::string>& known = embreeInstructionSets();
+  if (isa != "auto" && std::find(known.begin(), known.end(), isa) == known.end())
+    return "instruction set '" + isa + "' is not one of auto, " + joined(known);
   const std::vector<std::string> supported = supportedInstructionSets();
-  if (supported.empty())
-    throw Error("path tracer: this CPU lacks SSE4.2, the narrowest instruction set lpvlab traces with");
-  std::string isa = settings.isa;
-  if (isa == "auto") {
-    isa = supported.back();
-  } else if (std::find(embreeInstructionSets().begin(), embreeInstructionSets().end(), isa) ==
-             embreeInstructionSets().end()) {
-    throw Error("path tracer: instruction set '" + isa + "' is not one of auto, " +
-                joined(embreeInstructionSets()));
-  } else if (std::find(supported.begin(), supported.end(), isa) == supported.end()) {
-    throw Error("path tracer: this CPU lacks instruction set '" + isa + "' (it has " +
-                joined(supported) + ")");
-  }
-  const auto& widths = rayPacketWidths();
-  if (std::find(widths.begin(), widths.end(), settings.packetWidth) == widths.end())
-    throw Error("path tracer: packet width " + std::to_string(settings.packetWidth) +
-                " is not one of 0 (native), 1, 4, 8, 16");
+  if (supported.empty()) return "this CPU lacks SSE4.2, the narrowest instruction set lpvlab traces with";
+  if (isa != "auto" && std::find(supported.begin(), supported.end(), isa) == supported.end())
+    return "this CPU lacks instruction set '" + isa + "' (it has " + joined(supported) + ")";
+  return {};
+}
+
+std::string packetWidthProblem(int width) {
+  const std::vector<int>& widths = rayPacketWidths();
+  if (std::find(widths.begin(), widths.end(), width) != widths.end()) return {};
+  return "packet width " + std::to_string(width) + " is not one of 0 (native), 1, 4, 8, 16";
+}
+
+EmbreeDevice makeEmbreeDevice(const RayEngineSettings& settings) {
+  for (const std::string& problem :
+       {instructionSetProblem(settings.isa), packetWidthProblem(settings.packetWidth)})
+    if (!problem.empty()) throw Error("path tracer: " + problem);
+  const std::string isa = settings.isa == "auto" ? supportedInstructionSets().back() : settings.isa;
 
   // "isa=" pins Embree to exactly this set, the same whichever CPU runs it.
   EmbreeDevicePtr device(rtcNewDevice(("isa=" + isa).c_str()));

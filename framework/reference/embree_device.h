@@ -27,6 +27,12 @@ std::vector<std::string> supportedInstructionSets();
 // The packet widths a query may use; 0 is "native".
 const std::vector<int>& rayPacketWidths();
 
+// Why `isa` ("auto" or a name) cannot be used on this CPU, or "" when it can: "instruction set
+// 'avx9' is not one of auto, sse4.2, ..." or "this CPU lacks instruction set 'avx512' (it has ...)".
+std::string instructionSetProblem(const std::string& isa);
+// Why `width` is not a query width, or "".
+std::string packetWidthProblem(int width);
+
 struct RayEngineSettings {
   std::string isa = "auto";  // one of embreeInstructionSets() or "auto"
   int packetWidth = 0;       // one of rayPacketWidths()
@@ -44,8 +50,7 @@ struct EmbreeDevice {
   int packetWidth;  // 1, 4, 8 or 16 (0 resolved)
 };
 
-// Throws an Error naming the setting when the instruction set is unknown or this CPU lacks it,
-// or when the packet width is not one of rayPacketWidths().
+// Throws an Error with instructionSetProblem / packetWidthProblem when either is not "".
 EmbreeDevice makeEmbreeDevice(const RayEngineSettings& settings);
 
 }  // namespace lpvlab

@@ -162,5 +162,39 @@ TEST_F(Cli, ListNamesEveryStageAndItsStrategies) {
     EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " missing from:\n" << r.out;
 }
 
+TEST_F(Cli, RunAndBenchSayWhereTheKernelsRan) {
+  const fs::path out = dir_.path() / "run";
+  const Result r = runLpvlab("run --out " + quoted(out.string()) +
+                                 " -s output.width=32 -s output.height=32 -s timing.warmup=0"
+                                 " -s timing.repeats=1 -s grid.resolution=8",
+                             work(), logs());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  // On llvmpipe "auto" gathers on the CPU.
+  EXPECT_NE(r.err.find("compute: cpu where possible; on the CPU: propagation"), std::string::npos) << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(readFile(out / "manifest.json"));
+  const nlohmann::json* propagation = find(manifest, {"compute", "strategies", "propagation"});
+  ASSERT_TRUE(propagation);
+  EXPECT_EQ(*propagation, "cpu");
+  ASSERT_TRUE(find(manifest, {"work", "propagation"}));
+}
+
+TEST_F(Cli, BenchTracerMeasuresEachInstructionSetAndWidthAskedFor) {
+  const Result r = runLpvlab("bench --tracer -s output.width=16 -s output.height=16"
+                             " -s timing.repeats=1 --spp 1 --isa sse4.2,auto --packet-width 1,4",
+                             work(), logs());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* row : {"\nsse4.2   1 ", "\nsse4.2   4 "})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row << " in\n" << r.out;
+  EXPECT_EQ(lines(r.out).size(), 2u + 4u) << r.out;  // title, column names, 2 x 2 rows
+}
+
+TEST_F(Cli, BenchTracerRefusesUnknownInstructionSetsAndWidthsBeforeMeasuring) {
+  const std::string isa = expectOneErrorLine("bench --tracer --isa avx2,avx9");
+  EXPECT_NE(isa.find("--isa"), std::string::npos) << isa;
+  EXPECT_NE(isa.find("'avx9'"), std::string::npos) << isa;
+  const std::string width = expectOneErrorLine("bench --tracer --packet-width 3");
+  EXPECT_NE(width.find("--packet-width"), std::string::npos) << width;
+}
+
 }  // namespace
 }  // namespace lpvlab

@@ -141,5 +141,18 @@ TEST_F(ReferenceCache, ATimeBudgetStopsRendering) {
   EXPECT_GT(r.samples, 0);
 }
 
+TEST_F(ReferenceCache, TheManifestRecordsTheEngineAndTheKeyLeavesItOut) {
+  request_.target = ReferenceTarget{2, 0.0, 0.0};
+  const std::string narrowest = supportedInstructionSets().front();
+  request_.tracer.engine = {narrowest, 1};
+  const Reference traced = ensureReference(scene_, camera_, request_);
+  EXPECT_EQ(traced.manifest["last_session"]["engine"]["isa"], narrowest);
+  EXPECT_EQ(traced.manifest["last_session"]["engine"]["packet_width"], 1);
+  // Another engine: the same key, so the cached reference is reused, not traced again.
+  request_.tracer.engine = {"auto", 0};
+  EXPECT_EQ(referenceKey(scene_, camera_, request_), traced.key);
+  EXPECT_TRUE(ensureReference(scene_, camera_, request_).reused);
+}
+
 }  // namespace
 }  // namespace lpvlab

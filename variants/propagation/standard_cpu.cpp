@@ -179,9 +179,10 @@ RowsFunction<Real> rowsFor(const std::string& isa) {
   return gatherRowsX86_64<N, Real>;
 }
 
-std::string resolveIsa(const std::string& isa) {
-  const std::vector<std::string> supported = supportedCpuKernelInstructionSets();
-  if (isa == "auto") return supported.back();
+// Called once per iteration: "auto" (the pipeline's choice) is resolved once per process.
+const std::string& resolveIsa(const std::string& isa) {
+  static const std::string widest = supportedCpuKernelInstructionSets().back();
+  if (isa == "auto") return widest;
   const auto& all = cpuKernelInstructionSets();
   if (std::find(all.begin(), all.end(), isa) == all.end())
     throw Error("standard propagation (CPU): instruction set '" + isa +
@@ -208,7 +209,7 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
                        int threads) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
-  const std::string chosen = resolveIsa(isa);
+  const std::string& chosen = resolveIsa(isa);
   RowsFunction<Real> rows = table.coefficients == 4   ? rowsFor<4, Real>(chosen)
                             : table.coefficients == 9 ? rowsFor<9, Real>(chosen)
                                                       : rowsFor<16, Real>(chosen);
