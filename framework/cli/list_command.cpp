@@ -1,28 +1,41 @@
 #include <iostream>
+#include <string>
+#include <utility>
 
 #include "framework/cli/commands.h"
-#include "framework/pipeline/strategy.h"
+#include "framework/pipeline/strategy_catalogue.h"
 
 namespace lpvlab::cli {
 
 namespace {
 
-template <class Interface>
-void printStage(const char* stage) {
-  std::cout << "[" << stage << "] type =\n";
-  for (const auto& [name, entry] : Registry<Interface>::instance().entries())
-    std::cout << "  " << name << ": " << entry.description << "\n";
+// "produces geometry_volume, surface_albedo; reads if produced ...".
+std::string resourceLine(const ResourceUses& uses) {
+  std::string line;
+  for (const auto& [kind, verb] : {std::pair{ResourceUses::Kind::Produces, "produces"},
+                                   std::pair{ResourceUses::Kind::Consumes, "consumes"},
+                                   std::pair{ResourceUses::Kind::Reads, "reads if produced"}}) {
+    std::string names;
+    for (const ResourceUses::Use& use : uses.uses())
+      if (use.kind == kind) names += (names.empty() ? "" : ", ") + use.name;
+    if (!names.empty()) line += (line.empty() ? "" : "; ") + std::string(verb) + " " + names;
+  }
+  return line;
 }
 
 }  // namespace
 
-// The strategies of each stage in pipeline order; their parameters are documented in the header
-// of variants/<stage>/<name>.cpp and in docs/variants.md.
+// The strategies of each stage in pipeline order, with the resources each produces and consumes
+// (named_resources.h) with its default parameters; their parameters are documented in the
+// header of variants/<stage>/<name>.cpp and in docs/variants.md.
 int listCommand() {
-  printStage<InjectionStrategy>("injection");  // also [[injection.also]]
-  printStage<OcclusionStrategy>("occlusion");
-  printStage<PropagationStrategy>("propagation");
-  printStage<RenderingStrategy>("rendering");
+  std::string stage;
+  for (const CatalogueEntry& entry : strategyCatalogue()) {
+    if (entry.stage != stage) std::cout << "[" << (stage = entry.stage) << "] type =\n";
+    std::cout << "  " << entry.name << ": " << entry.description << "\n";
+    if (const std::string resources = resourceLine(entry.uses); !resources.empty())
+      std::cout << "      (" << resources << ")\n";
+  }
   return 0;
 }
 

@@ -1,6 +1,10 @@
 #include "framework/pipeline/composition.h"
 
+#include <map>
+
 #include "framework/core/error.h"
+#include "framework/pipeline/sky_light.h"
+#include "framework/pipeline/strategy_catalogue.h"
 
 namespace lpvlab {
 
@@ -15,7 +19,43 @@ void listStage(const std::string& stage, const std::vector<std::unique_ptr<S>>& 
                      strategies[i].get());
 }
 
+std::string who(const std::string& table, const Strategy& strategy) {
+  return "[" + table + "] type = \"" + strategy.name() + "\"";
+}
+
 }  // namespace
+
+std::map<std::string, ResourceAllocator> resolveResources(
+    const std::vector<std::pair<std::string, ResourceUses>>& declared) {
+  std::map<std::string, ResourceAllocator> produced;  // the first producer's allocator
+  std::map<std::string, bool> used;
+  for (const auto& [by, uses] : declared)
+    for (const ResourceUses::Use& use : uses.uses()) {
+      if (use.kind == ResourceUses::Kind::Produces) produced.emplace(use.name, use.allocate);
+      else used[use.name] = true;
+    }
+  for (const auto& [by, uses] : declared)
+    for (const ResourceUses::Use& use : uses.uses())
+      if (use.kind == ResourceUses::Kind::Consumes && !produced.count(use.name)) {
+        std::string producers;
+        bool injection = false;  // an injection is added beside the others, not instead
+        for (const std::string& producer : producersOf(use.name)) {
+          producers += (producers.empty() ? "" : " or ") + producer;
+          injection = injection || producer.starts_with("[injection]");
+        }
+        throw Error(by + " consumes '" + use.name + "' (" + use.description + ")" +
+                    (use.why.empty() ? "" : " for " + use.why) +
+                    ", which no strategy of this composition produces: " +
+                    (producers.empty() ? std::string("no registered strategy produces it")
+                                       : "add " + producers) +
+                    (injection ? " (as [injection] or under [[injection.also]])" : "") +
+                    ", or drop what consumes it");
+      }
+  std::map<std::string, ResourceAllocator> resources;
+  for (const auto& [name, allocate] : produced)
+    if (used.count(name)) resources.emplace(name, allocate);
+  return resources;
+}
 
 std::vector<std::pair<std::string, Strategy*>> Strategies::all() const {
   std::vector<std::pair<std::string, Strategy*>> out;
@@ -35,9 +75,22 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
   requirements.shOrder = shOrder;
   requirements.cascadeLevels = cascadeLevels;
   requirements.backend = backend;
-  for (const auto& [table, strategy] : strategies.all()) strategy->declare(requirements);
+  // Every strategy's uses of resources, and the experiment's own: a sky brighter than 0 must be
+  // injected by some strategy.
+  std::vector<std::pair<std::string, ResourceUses>> declared;
   for (const auto& [table, strategy] : strategies.all()) {
-    const std::string who = "[" + table + "] type = \"" + strategy->name() + "\"";
+    ResourceUses uses;
+    strategy->declare(uses);
+    declared.emplace_back(who(table, *strategy), std::move(uses));
+  }
+  if (glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f)))) {
+    ResourceUses sky;
+    sky.consumes(kSkyLight);
+    declared.emplace_back("[sky] radiance", std::move(sky));
+  }
+  requirements.resources = resolveResources(declared);
+  for (const auto& [table, strategy] : strategies.all()) {
+    const std::string who = lpvlab::who(table, *strategy);
     if (requirements.shOrder > strategy->maxShOrder())
       throw Error(who + " handles SH order up to " + std::to_string(strategy->maxShOrder()) +
                   ", but the light grid has order " + std::to_string(requirements.shOrder) +
@@ -49,10 +102,6 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
         throw Error(who + " cannot run on the CPU backend ([compute] backend = \"cpu\"): " + why +
                     "; use backend = \"auto\" (the CPU where a kernel exists) or \"gl\"");
   }
-  if (glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f))) && !requirements.skyInjected)
-    throw Error("[sky] radiance is set, but no injection strategy injects sky light: add one "
-                "that does, as [injection] or under [[injection.also]] ('lpvlab list' shows the "
-                "injection strategies), or set the radiance to 0");
   return requirements;
 }
 

@@ -2,6 +2,7 @@
 // A composition of strategies, one per stage (several for injection and rendering), and the check that they
 // can run together: their merged Requirements, or an Error naming the strategy that refuses.
 
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -23,9 +24,16 @@ struct Strategies {
   std::vector<std::pair<std::string, Strategy*>> all() const;
 };
 
-// Every strategy's declare() merged, starting from the grid's SH order and cascade levels, after
-// checking that each strategy handles that order and has no refusal, and that a sky (radiance > 0)
-// is injected.
+// The resources a run has, from who declared what (e.g. "[propagation] type = \"directed\"" and
+// its uses): each one produced and used (consumed or read) by someone, with its first producer's
+// allocator. A consumed resource that nobody produces is an Error naming the consumer and the
+// resource.
+std::map<std::string, ResourceAllocator> resolveResources(
+    const std::vector<std::pair<std::string, ResourceUses>>& declared);
+
+// Every strategy's declare() resolved (resolveResources; a sky brighter than 0 consumes
+// kSkyLight, sky_light.h), starting from the grid's SH order and cascade levels, after
+// checking that each strategy handles that order and has no refusal.
 // With ComputeBackend::Cpu, a strategy without a CPU kernel for the composition is an Error.
 Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
                                  int cascadeLevels = 1,

@@ -8,6 +8,7 @@
 #include "framework/gl/resources.h"
 #include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/light_grid.h"
+#include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
 
@@ -46,8 +47,8 @@ class SceneGpu;
 struct Camera;
 
 // With cascades ([cascades] levels > 1, framework/pipeline/cascade.h) occlusion, injection and
-// propagation are called once per level, with lightGrid, geometryVolume and normalGrid of that
-// level; rendering is called once and reads every level.
+// propagation are called once per level, with the lightGrid and the resources of that level;
+// rendering is called once and reads every level.
 struct Frame {
   const SceneGpu* scene = nullptr;      // for strategies that rasterise the scene themselves
   const Camera* camera = nullptr;
@@ -55,11 +56,21 @@ struct Frame {
   const LightMaps& lightMaps;
   LightGrid& lightGrid;                 // the level being filled
   gl::Texture& indirect;                // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
-  GeometryVolume* geometryVolume = nullptr;  // only if a strategy declared Requirements::geometryVolume
-  NormalGrid* normalGrid = nullptr;          // only if a strategy declared Requirements::normalGrid
-  glm::vec3 skyRadiance{0.0f};               // constant sky, W/(m^2 sr) ([sky] radiance)
+  const ResourceTable* resources = nullptr;  // the level's resources (named_resources.h)
   std::span<LightGrid> levels;               // every level, finest first; empty: lightGrid alone
   float cascadeBlendCells = 0.0f;            // [cascades] blend_cells
+
+  // The level's resource of that key, or null when the run has none.
+  template <class T>
+  T* find(const ResourceKey<T>& key) const {
+    return resources ? resources->find(key) : nullptr;
+  }
+  // The level's resource of that key, which the strategy consumes (an Error when missing).
+  template <class T>
+  T& get(const ResourceKey<T>& key) const {
+    if (T* value = find(key)) return *value;
+    return ResourceTable().get(key);  // throws, naming the resource
+  }
 
   // What rendering reads: every level, finest first (one level without cascades).
   std::span<const LightGrid> renderedLevels() const {

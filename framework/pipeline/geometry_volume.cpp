@@ -9,17 +9,15 @@ GridGeometry GeometryVolume::placementFor(const GridGeometry& lightGrid) {
   return gv;
 }
 
-GeometryVolume::GeometryVolume(const GridGeometry& lightGrid, bool withAlbedo)
-    : geometry(placementFor(lightGrid)) {
-  const std::size_t cells = std::size_t(geometry.cellCount());
-  blocking = gl::Buffer(cells * kCoefficients * sizeof(float), "geometry volume (blocking)");
-  if (withAlbedo) albedo = gl::Buffer(cells * 4 * sizeof(float), "geometry volume (albedo)");
-}
+GeometryVolume::GeometryVolume(const GridGeometry& lightGrid, int firstOccludedIteration)
+    : geometry(placementFor(lightGrid)),
+      blocking(std::size_t(geometry.cellCount()) * kCoefficients * sizeof(float),
+               "geometry volume (blocking)"),
+      firstOccludedIteration(firstOccludedIteration) {}
 
-void GeometryVolume::clear() {
-  blocking.zero();
-  if (albedo.size() > 0) albedo.zero();
-}
+SurfaceAlbedo::SurfaceAlbedo(const GridGeometry& lightGrid)
+    : albedo(std::size_t(GeometryVolume::placementFor(lightGrid).cellCount()) * 4 * sizeof(float),
+             "geometry volume (albedo)") {}
 
 NormalGrid::NormalGrid(const GridGeometry& lightGrid)
     : normals(std::size_t(lightGrid.cellCount()) * 4 * sizeof(float), "normal grid") {}

@@ -8,14 +8,17 @@
 //
 // Layout, as the light grid's (shaders/common/grid.glsl), one scalar channel:
 //   blocking: order-1 SH of B(w), 4 floats per GV cell, index coefficient * cellCount + cell
-//   albedo:   only if requested: per GV cell, RGB albedo times weight and the weight (4 floats
+//   albedo:   (SurfaceAlbedo) per GV cell, RGB albedo times weight and the weight (4 floats
 //             interleaved), so a weighted mean albedo is albedo.rgb / albedo.w
-// The kernels' side is shaders/common/geometry_volume.glsl.
+// The kernels' side is shaders/common/geometry_volume.glsl. All three are resources
+// (named_resources.h): the occlusion strategy produces the GV and the albedo, the RSM injection the
+// normal grid, and a propagation consumes or reads them.
 
 #include <cstddef>
 
 #include "framework/gl/resources.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
 
@@ -24,19 +27,33 @@ struct GeometryVolume {
 
   GridGeometry geometry;
   gl::Buffer blocking;
-  gl::Buffer albedo;  // empty unless Requirements::surfaceAlbedo
-  // Propagation iterations before this one ignore the GV (set by the occlusion strategy): 1
+  // Propagation iterations before this one ignore the GV, fixed by its producer for the run: 1
   // lets light leave the injected cells unblocked (a VPL's own surface would block it).
   int firstOccludedIteration = 0;
 
   GeometryVolume() = default;
-  GeometryVolume(const GridGeometry& lightGrid, bool withAlbedo);
+  GeometryVolume(const GridGeometry& lightGrid, int firstOccludedIteration);
+  GeometryVolume(const ResourceSetup& setup, int firstOccludedIteration)
+      : GeometryVolume(setup.grid, firstOccludedIteration) {}
 
   // The GV placement for a light grid: half a cell lower, one more cell per axis.
   static GridGeometry placementFor(const GridGeometry& lightGrid);
 
-  void clear();
-  std::size_t memoryBytes() const { return blocking.size() + albedo.size(); }
+  void place(const GridGeometry& lightGrid) { geometry = placementFor(lightGrid); }
+  void clear() { blocking.zero(); }
+  std::size_t memoryBytes() const { return blocking.size(); }
+};
+
+// The albedo of the GV's surfaces (multiple bounces re-emit the light the GV blocks with it),
+// on the GV's cells.
+struct SurfaceAlbedo {
+  gl::Buffer albedo;
+
+  SurfaceAlbedo() = default;
+  explicit SurfaceAlbedo(const GridGeometry& lightGrid);
+  explicit SurfaceAlbedo(const ResourceSetup& setup) : SurfaceAlbedo(setup.grid) {}
+  void clear() { albedo.zero(); }
+  std::size_t memoryBytes() const { return albedo.size(); }
 };
 
 // The flux-weighted mean normal of the VPLs injected into each light-grid cell, for directed
@@ -46,8 +63,16 @@ struct NormalGrid {
 
   NormalGrid() = default;
   explicit NormalGrid(const GridGeometry& lightGrid);
+  explicit NormalGrid(const ResourceSetup& setup) : NormalGrid(setup.grid) {}
   void clear() { normals.zero(); }
   std::size_t memoryBytes() const { return normals.size(); }
 };
+
+inline constexpr ResourceKey<GeometryVolume> kGeometryVolume{
+    "geometry_volume", "the blocking potential of the scene's surfaces per GV cell"};
+inline constexpr ResourceKey<SurfaceAlbedo> kSurfaceAlbedo{
+    "surface_albedo", "the albedo of the geometry volume's surfaces per GV cell"};
+inline constexpr ResourceKey<NormalGrid> kNormalGrid{
+    "normal_grid", "the injected VPLs' flux-weighted normal per light-grid cell"};
 
 }  // namespace lpvlab

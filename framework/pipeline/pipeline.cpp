@@ -84,10 +84,9 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   // Every level has the grid's cell counts, so strategies size their scratch once, from `grid`.
   for (int level = 0; level < requirements_.cascadeLevels; ++level) {
     levels_.emplace_back(settings.grid, requirements_.shOrder);
-    if (requirements_.geometryVolume)
-      geometryVolumes_.push_back(
-          std::make_unique<GeometryVolume>(settings.grid, requirements_.surfaceAlbedo));
-    if (requirements_.normalGrid) normalGrids_.push_back(std::make_unique<NormalGrid>(settings.grid));
+    ResourceTable& table = resources_.emplace_back();
+    const ResourceSetup setup{settings.grid, requirements_.shOrder, requirements_.backend};
+    for (const auto& [name, allocate] : requirements_.resources) table.adopt(name, allocate(setup));
   }
   placeLevels();
   if (levels_.size() > 1 && settings.cascades.carry)
@@ -95,8 +94,14 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   directImage_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "direct");
   indirectImage_ =
       gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "indirect");
-  for (const auto& [table, strategy] : strategies_.all())
-    strategy->prepare(shaders, settings.grid, requirements_);
+  const StrategySetup setup{.shaders = shaders,
+                            .grid = settings.grid,
+                            .requirements = requirements_,
+                            .scene = scene_.get(),
+                            .lightMaps = &lightMapsPass_->lightMaps(),
+                            .imageSize = {settings.width, settings.height},
+                            .skyRadiance = settings.skyRadiance};
+  for (const auto& [table, strategy] : strategies_.all()) strategy->prepare(setup);
   checkGl("pipeline setup");
 }
 
@@ -121,9 +126,7 @@ Frame Pipeline::frame(int level) {
                .lightMaps = lightMapsPass_->lightMaps(),
                .lightGrid = levels_[l],
                .indirect = indirectImage_,
-               .geometryVolume = geometryVolumes_.empty() ? nullptr : geometryVolumes_[l].get(),
-               .normalGrid = normalGrids_.empty() ? nullptr : normalGrids_[l].get(),
-               .skyRadiance = settings_.skyRadiance,
+               .resources = &resources_[l],
                .levels = levels_,
                .cascadeBlendCells = settings_.cascades.blendCells};
 }
@@ -140,8 +143,7 @@ void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {
                                  camera_.forward, settings_.cascades.viewShift);
   for (std::size_t level = 0; level < levels_.size(); ++level) {
     levels_[level].geometry = placed[level];
-    if (!geometryVolumes_.empty())
-      geometryVolumes_[level]->geometry = GeometryVolume::placementFor(placed[level]);
+    resources_[level].place(placed[level]);
   }
 }
 
@@ -153,8 +155,7 @@ std::size_t Pipeline::propagatedCells() const {
 
 void Pipeline::clearGrids() {
   for (LightGrid& grid : levels_) grid.current.zero();
-  for (const auto& gv : geometryVolumes_) gv->clear();
-  for (const auto& normals : normalGrids_) normals->clear();
+  for (ResourceTable& resources : resources_) resources.clear();
 }
 
 void Pipeline::injectAll(int level) {
@@ -310,9 +311,10 @@ nlohmann::json Pipeline::memoryReport() const {
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
       {"light_grid", sum(levels_, [](const LightGrid& g) { return g.memoryBytes(); })},
-      {"geometry_volume", sum(geometryVolumes_, [](const auto& gv) { return gv->memoryBytes(); })},
-      {"normal_grid", sum(normalGrids_, [](const auto& n) { return n->memoryBytes(); })},
       {"output_images", directImage_.bytes() + indirectImage_.bytes()}};
+  for (const ResourceTable& resources : resources_)
+    for (const auto& [name, size] : resources.memoryBytes())
+      bytes[name] = bytes.value(name, std::size_t(0)) + size;
   for (const auto& [table, strategy] : strategies_.all())
     bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();
   std::size_t total = 0;

@@ -2,7 +2,8 @@
 // The LPV pipeline: per frame, (1) shadow maps and RSMs per light view, (2) the camera's
 // G-buffer and direct light, (3) clearing the grids, (4) occlusion (the GV's blocking
 // potential), (5) injection, (6) propagation, (7) rendering of indirect light. Stages 4-7 are the
-// experiment's strategies; the GV and the normal grid exist only if a strategy asks for them.
+// experiment's strategies; the resources they pass each other (named_resources.h: the GV, the
+// normal grid, ...) exist only if one strategy produces them and another uses them.
 // With cascades (cascade.h) stages 3-6 run once per level, and injection ends by carrying each
 // level's light into its parent. Every stage is timed on the GPU (timestamp queries) and on the
 // wall clock (the stage ends with glFinish).
@@ -112,8 +113,7 @@ private:
   std::unique_ptr<DirectLighting> direct_;
   Requirements requirements_;
   std::vector<LightGrid> levels_;  // finest first
-  std::vector<std::unique_ptr<GeometryVolume>> geometryVolumes_;  // per level, if required
-  std::vector<std::unique_ptr<NormalGrid>> normalGrids_;          // per level, if required
+  std::vector<ResourceTable> resources_;  // per level: the resources the composition uses
   std::unique_ptr<CascadeCarry> carry_;                            // with carrying cascades only
   gl::Texture directImage_, indirectImage_;
   GpuTimer gpuTimer_;

@@ -3,21 +3,29 @@
 // variants/<stage>/<name>.cpp, reads its parameters in its constructor (from the experiment's
 // [<stage>] table: unread keys are errors), and registers itself:
 //   LPVLAB_REGISTER(PropagationStrategy, "standard", "one-line description", StandardPropagation);
-// The pipeline asks every strategy what it needs (declare), refuses compositions that cannot work
-// (maxShOrder, refusal), allocates only what was asked for, and calls the strategies in order:
+// The pipeline asks every strategy which resources it produces and consumes (declare,
+// named_resources.h), refuses compositions that cannot work (a consumed resource nobody produces,
+// maxShOrder, refusal), allocates only the resources that are produced and used, lets each
+// strategy prepare once with the scene known (prepare), and calls the strategies in order:
 //   occlusion -> injection(s) -> propagation -> rendering.
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "framework/core/registry.h"
+#include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
 
 struct Frame;
 class ShaderCompiler;
+class SceneGpu;
 struct GridGeometry;
+struct LightMaps;
 
 // Where the strategies' kernels run ([compute] backend). The raster passes (shadow maps, RSMs,
 // G-buffer) always run on GL.
@@ -50,26 +58,46 @@ struct FrameShape {
 
 // What a composition of strategies needs; the pipeline allocates only that.
 struct Requirements {
-  int shOrder = 1;              // SH order of the light grid ([grid] sh_order): (order+1)^2
-                                // coefficients per channel
-  bool geometryVolume = false;  // the GV: blocking potential per cell (framework/pipeline/geometry_volume.h)
-  bool surfaceAlbedo = false;   // the GV also keeps its surfels' albedo (re-injecting blocked light)
-  bool skyInjected = false;     // an injection strategy adds the [sky] radiance to the grid
-  bool normalGrid = false;      // the injected VPLs' flux-weighted normal per cell (directed propagation)
-  int cascadeLevels = 1;        // light grids in the cascade ([cascades] levels); the GV and the
-                                // normal grid exist once per level
+  int shOrder = 1;        // SH order of the light grid ([grid] sh_order): (order+1)^2
+                          // coefficients per channel
+  int cascadeLevels = 1;  // light grids in the cascade ([cascades] levels); every resource
+                          // exists once per level
   ComputeBackend backend = ComputeBackend::Gl;
+  // The resources the run has: produced by one strategy and used by another, each with the
+  // producer's allocator (named_resources.h). A test that provides a resource itself adds it by key.
+  std::map<std::string, ResourceAllocator> resources;
+
+  template <class T>
+  bool has(const ResourceKey<T>& key) const {
+    return resources.count(std::string(key.name)) > 0;
+  }
+  template <class T>
+  void add(const ResourceKey<T>& key) {
+    resources.emplace(std::string(key.name), ResourceAllocator{});
+  }
+};
+
+// What a strategy's prepare() sees: the composition, the grid's placement and, in a run, the
+// scene (tests of a single kernel may have no scene: then scene and lightMaps are null).
+struct StrategySetup {
+  ShaderCompiler& shaders;
+  const GridGeometry& grid;           // the light grid (every cascade level has its cell counts)
+  const Requirements& requirements;   // the merged result of every strategy's declare()
+  const SceneGpu* scene = nullptr;    // the scene the run renders
+  const LightMaps* lightMaps = nullptr;  // the light views' maps, allocated (not yet rendered)
+  glm::ivec2 imageSize{0};            // output pixels
+  glm::vec3 skyRadiance{0.0f};        // constant sky, W/(m^2 sr) ([sky] radiance)
 };
 
 class Strategy {
 public:
   virtual ~Strategy() = default;
-  // Adds this strategy's needs to what the others declared.
-  virtual void declare(Requirements& requirements) const { (void)requirements; }
+  // The resources this strategy produces and consumes (named_resources.h).
+  virtual void declare(ResourceUses& uses) const { (void)uses; }
   // The highest SH order this strategy's kernels handle; a grid of higher order is refused.
   virtual int maxShOrder() const { return 1; }
   // Why this strategy cannot run with what the whole composition requires, or "" if it can
-  // (e.g. a propagation that needs the GV when no occlusion strategy provides one).
+  // (beyond the resources it consumes, which the composition check refuses by name).
   virtual std::string refusal(const Requirements& requirements) const {
     (void)requirements;
     return {};
@@ -87,9 +115,8 @@ public:
             cpuRefusal(requirements).empty());
   }
   // Compiles kernels and allocates the strategy's own buffers, once per run, after the grid's
-  // placement is known; `requirements` is the merged result of every strategy's declare().
-  virtual void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-                       const Requirements& requirements) = 0;
+  // placement, the resources and the scene are known.
+  virtual void prepare(const StrategySetup& setup) = 0;
   // What this strategy does per frame (see WorkCount), for the kernels it runs in this
   // composition (`requirements`: the backend among others). Empty: not counted yet.
   virtual std::vector<WorkCount> work(const FrameShape& shape,
@@ -117,8 +144,8 @@ public:
   virtual void inject(Frame& frame) = 0;
 };
 
-// Fills frame.geometryVolume (cleared by the pipeline) with blocking potential, or does nothing
-// ("none"). Runs before injection.
+// Fills the resources it produces (e.g. the geometry volume, cleared by the pipeline) with
+// blocking potential, or does nothing ("none"). Runs before injection.
 class OcclusionStrategy : public Strategy {
 public:
   virtual void inject(Frame& frame) = 0;

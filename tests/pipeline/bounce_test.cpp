@@ -410,22 +410,26 @@ Grid gvAlbedoFrom(const std::string& source) {
   Params params(table, "bounce test", "occlusion");
   auto strategy = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
   params.finish();
-  Requirements requirements;
-  requirements.surfaceAlbedo = true;
-  strategy->declare(requirements);
+  const Requirements requirements = test::standInRequirements(
+      *strategy, 1, {std::string(kGeometryVolume.name), std::string(kSurfaceAlbedo.name)});
   LightGrid grid(s.grid, 1);
-  strategy->prepare(shaders, grid.geometry, requirements);
-  GeometryVolume gv(grid.geometry, true);
+  strategy->prepare({.shaders = shaders, .grid = grid.geometry, .requirements = requirements});
+  GeometryVolume gv(grid.geometry, 0);
+  SurfaceAlbedo surfaceAlbedo(grid.geometry);
   gv.clear();
+  surfaceAlbedo.clear();
+  ResourceTable resources;
+  resources.put(kGeometryVolume, gv);
+  resources.put(kSurfaceAlbedo, surfaceAlbedo);
   gl::Texture indirect;
   Frame frame{.scene = &scene, .camera = &e.camera, .gbuffer = gbuffer.gbuffer(),
               .lightMaps = lightMaps.lightMaps(), .lightGrid = grid, .indirect = indirect,
-              .geometryVolume = &gv};
+              .resources = &resources};
   strategy->inject(frame);
   glFinish();
   checkGl("bounce test");
   Grid albedo(std::size_t(4) * gv.geometry.cellCount());
-  gv.albedo.download(albedo.data(), albedo.size() * sizeof(float));
+  surfaceAlbedo.albedo.download(albedo.data(), albedo.size() * sizeof(float));
   return albedo;
 }
 
@@ -458,7 +462,8 @@ TEST(Bounces, TheGvKeepsTheSurfacesAlbedoFromTheCameraAndFromTheRsms) {
   }
 }
 
-// The albedo doubles the GV's memory, and only when bounces ask for it: 4 more floats per GV cell.
+// The surfaces' albedo (4 floats per GV cell, as much as the GV) exists only when bounces consume
+// it; the GV itself is the same either way.
 TEST(Bounces, TheGvAlbedoIsAllocatedOnlyWithBounces) {
   test::glTestContext();
   for (const bool bounces : {false, true}) {
@@ -470,8 +475,9 @@ TEST(Bounces, TheGvAlbedoIsAllocatedOnlyWithBounces) {
     const std::size_t gvCells = std::size_t(test::cells(e.settings.grid.resolution + 1));
     ShaderCompiler shaders;
     Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
-    EXPECT_EQ(pipeline.memoryReport().at("geometry_volume").get<std::size_t>(),
-              gvCells * (bounces ? 8 : 4) * sizeof(float))
+    const nlohmann::json memory = pipeline.memoryReport();
+    EXPECT_EQ(memory.at("geometry_volume").get<std::size_t>(), gvCells * 4 * sizeof(float));
+    EXPECT_EQ(memory.value("surface_albedo", std::size_t(0)), bounces ? gvCells * 4 * sizeof(float) : 0)
         << "bounces " << bounces;
   }
 }

@@ -216,8 +216,7 @@ TEST(CornellImage, TrilinearRenderingReproducesAnAnalyticField) {
       Registry<RenderingStrategy>::instance().create(params, "trilinear");
   params.finish();
   Requirements requirements;
-  rendering->declare(requirements);
-  rendering->prepare(shaders, geometry, requirements);
+  rendering->prepare({.shaders = shaders, .grid = geometry, .requirements = requirements});
   LightGrid grid(geometry, requirements.shOrder);
 
   const double alpha[3] = {1.0e-4, 0.7e-4, 0.4e-4};  // W/sr, per channel

@@ -25,6 +25,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
+#include "framework/pipeline/composition.h"
 #include "framework/pipeline/light_views.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
@@ -39,6 +40,19 @@ namespace lpvlab {
 namespace {
 
 using test::Grid;
+
+ResourceUses declared(const Strategy& strategy) {
+  ResourceUses uses;
+  strategy.declare(uses);
+  return uses;
+}
+
+// What a propagation that is occluded by a GV declares.
+ResourceUses gvReader() {
+  ResourceUses uses;
+  uses.reads(kGeometryVolume);
+  return uses;
+}
 
 // The built-in Cornell box with its G-buffer and RSMs rendered, and GVs filled from them.
 class GvScene {
@@ -67,16 +81,24 @@ public:
     Params params(table, "occlusion test", "occlusion");
     auto strategy = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
     params.finish();
+    // The GV as the pipeline allocates it, from the strategy's own declaration (which fixes its
+    // first occluded iteration).
+    const std::map<std::string, ResourceAllocator> resources = resolveResources(
+        {{"occlusion test", declared(*strategy)}, {"a propagation", gvReader()}});
+    EXPECT_EQ(resources.count(std::string(kGeometryVolume.name)), 1u);
+    EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), 0u);  // nobody uses it
     Requirements requirements;
-    strategy->declare(requirements);
-    EXPECT_TRUE(requirements.geometryVolume);
-    strategy->prepare(shaders_, grid_.geometry, requirements);
-    GeometryVolume gv(grid_.geometry, false);
+    requirements.resources = resources;
+    strategy->prepare({.shaders = shaders_, .grid = grid_.geometry, .requirements = requirements});
+    ResourceTable levelResources;
+    const ComputeBackend backend = ComputeBackend::Gl;
+    levelResources.adopt(std::string(kGeometryVolume.name),
+                         resources.at(std::string(kGeometryVolume.name))({grid_.geometry, 1, backend}));
+    GeometryVolume& gv = *levelResources.find(kGeometryVolume);
     gv.clear();
-    gv.firstOccludedIteration = -1;
     Frame frame{.scene = scene_.get(), .camera = &experiment_.camera,
                 .gbuffer = gbufferPass_->gbuffer(), .lightMaps = lightMapsPass_->lightMaps(),
-                .lightGrid = grid_, .indirect = indirect_, .geometryVolume = &gv};
+                .lightGrid = grid_, .indirect = indirect_, .resources = &levelResources};
     strategy->inject(frame);
     glFinish();
     checkGl("occlusion test");

@@ -1,7 +1,7 @@
 #pragma once
 // A propagation strategy created as an experiment creates it (by registered name, from a TOML
-// table), on its own light grid of a chosen SH order, with a normal grid when the strategy
-// declares one and, optionally, a geometry volume; for tests that run a propagation kernel on
+// table), on its own light grid of a chosen SH order, with the resources the strategy consumes
+// (a normal grid, the GV's albedo) and, optionally, a geometry volume; for tests that run a propagation kernel on
 // hand-made grids. Also the GV lookup of shaders/common/geometry_volume_lookup.glsl compiled as
 // double-precision C++ over `shared::gvBlocking`, and the grid helpers (grid_test_support.h).
 
@@ -18,6 +18,7 @@
 #include "framework/pipeline/strategy.h"
 #include "grid_test_support.h"
 #include "pipeline_test_support.h"
+#include "stand_in_requirements.h"
 
 // The lookup reads the global `gvBlocking` (the kernels' buffer); a reference model sets it.
 LPVLAB_SHARED_GLSL_BEGIN
@@ -40,14 +41,23 @@ public:
     strategy_ = Registry<PropagationStrategy>::instance().create(params, type);
     params.finish();
     geometry_ = GridGeometry{glm::vec3(0.0f), 1.0f, resolution};
-    Requirements requirements;
-    requirements.shOrder = shOrder;
-    requirements.geometryVolume = withGv;
-    strategy_->declare(requirements);
-    strategy_->prepare(shaders_, geometry_, requirements);
+    const Requirements requirements = standInRequirements(
+        *strategy_, shOrder, withGv ? std::vector<std::string>{std::string(kGeometryVolume.name)}
+                                    : std::vector<std::string>{});
+    strategy_->prepare({.shaders = shaders_, .grid = geometry_, .requirements = requirements});
     grid_ = LightGrid(geometry_, requirements.shOrder);
-    if (requirements.normalGrid) normals_ = std::make_unique<NormalGrid>(geometry_);
-    if (withGv) gv_ = std::make_unique<GeometryVolume>(geometry_, requirements.surfaceAlbedo);
+    if (requirements.has(kNormalGrid)) {
+      normals_ = std::make_unique<NormalGrid>(geometry_);
+      resources_.put(kNormalGrid, *normals_);
+    }
+    if (requirements.has(kGeometryVolume)) {
+      gv_ = std::make_unique<GeometryVolume>(geometry_, 0);
+      resources_.put(kGeometryVolume, *gv_);
+    }
+    if (requirements.has(kSurfaceAlbedo)) {
+      albedo_ = std::make_unique<SurfaceAlbedo>(geometry_);
+      resources_.put(kSurfaceAlbedo, *albedo_);
+    }
   }
 
   void load(const Grid& current, const Grid& accumulated) {
@@ -67,14 +77,14 @@ public:
     gv_->blocking.upload(blocking.data(), blocking.size() * sizeof(float));
     gv_->firstOccludedIteration = firstOccludedIteration;
   }
-  // The GV's albedo (rho A, A per GV cell), when the strategy declared surfaceAlbedo.
+  // The GV's albedo (rho A, A per GV cell), when the strategy consumes kSurfaceAlbedo.
   void loadAlbedo(const std::vector<float>& albedo) {
-    ASSERT_TRUE(gv_ && gv_->albedo.size() > 0) << "the rig's GV keeps no albedo";
-    gv_->albedo.upload(albedo.data(), albedo.size() * sizeof(float));
+    ASSERT_TRUE(albedo_) << "the strategy consumes no surface albedo";
+    albedo_->albedo.upload(albedo.data(), albedo.size() * sizeof(float));
   }
   void propagate() {
     Frame frame{.gbuffer = gbuffer_, .lightMaps = lightMaps_, .lightGrid = grid_,
-                .indirect = indirect_, .geometryVolume = gv_.get(), .normalGrid = normals_.get()};
+                .indirect = indirect_, .resources = &resources_};
     strategy_->propagate(frame);
     checkGl("propagation test");
   }
@@ -99,6 +109,8 @@ private:
   LightGrid grid_;
   std::unique_ptr<NormalGrid> normals_;
   std::unique_ptr<GeometryVolume> gv_;
+  std::unique_ptr<SurfaceAlbedo> albedo_;
+  ResourceTable resources_;  // borrows the three above
   GBuffer gbuffer_;  // propagation reads none of these
   LightMaps lightMaps_;
   gl::Texture indirect_;

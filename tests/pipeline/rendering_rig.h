@@ -78,10 +78,9 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
   params.finish();
   Requirements requirements;
   requirements.shOrder = grid.order;
-  rendering->declare(requirements);
   EXPECT_LE(grid.order, rendering->maxShOrder());
   ShaderCompiler shaders;
-  rendering->prepare(shaders, grid.geometry, requirements);
+  rendering->prepare({.shaders = shaders, .grid = grid.geometry, .requirements = requirements});
   std::vector<LightGrid> lightGrids;
   for (const HandGrid& level : levels) {
     lightGrids.emplace_back(level.geometry, level.order);

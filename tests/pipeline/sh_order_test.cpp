@@ -206,9 +206,8 @@ Image renderTrilinear(const Grid& grid, int order, const glm::ivec3& res, int wi
   const GridGeometry geometry{glm::vec3(0.0f), 1.0f, res};
   Requirements requirements;
   requirements.shOrder = order;
-  strategy->declare(requirements);
   ShaderCompiler shaders;
-  strategy->prepare(shaders, geometry, requirements);
+  strategy->prepare({.shaders = shaders, .grid = geometry, .requirements = requirements});
   LightGrid light(geometry, order);
   light.accumulated.upload(grid.data(), grid.size() * sizeof(float));
   GBuffer gbuffer;
@@ -243,7 +242,7 @@ std::unique_ptr<Interface> createDefault(const std::string& type) {
 // strategy that keeps the default maxShOrder() of 1 shows it.
 class OrderOneRendering final : public RenderingStrategy {
 public:
-  void prepare(ShaderCompiler&, const GridGeometry&, const Requirements&) override {}
+  void prepare(const StrategySetup&) override {}
   void render(Frame&) override {}
 };
 
@@ -268,7 +267,7 @@ TEST(ShOrderComposition, OrderTwoOfAnOrderOneStrategyIsRefusedNamingTheGridKey) 
   Strategies strategies = composition("directed");
   strategies.rendering.push_back(std::make_unique<OrderOneRendering>());
   strategies.rendering.back()->setRegisteredName("order_one");
-  EXPECT_TRUE(resolveRequirements(strategies, 1, glm::vec3(0.0f)).normalGrid);
+  EXPECT_TRUE(resolveRequirements(strategies, 1, glm::vec3(0.0f)).has(kNormalGrid));
   const std::string message =
       test::errorOf([&] { resolveRequirements(strategies, 2, glm::vec3(0.0f)); });
   EXPECT_TRUE(test::contains(message, "[grid] sh_order")) << message;

@@ -26,7 +26,9 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/scene_gpu.h"
+#include "framework/pipeline/sky_light.h"
 #include "framework/pipeline/strategy.h"
+#include "stand_in_requirements.h"
 #include "pipeline_test_support.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -72,23 +74,25 @@ public:
     Params params(table_, "sky injection test", "injection");
     strategy_ = Registry<InjectionStrategy>::instance().create(params, "rsm_vpl");
     params.finish();
-    Requirements requirements;
-    requirements.shOrder = shOrder;
-    strategy_->declare(requirements);
-    EXPECT_TRUE(requirements.skyInjected);
+    requirements_ = test::standInRequirements(*strategy_, shOrder, {std::string(kSkyLight.name)});
+    EXPECT_TRUE(requirements_.has(kSkyLight));
     EXPECT_GE(strategy_->maxShOrder(), shOrder);
-    strategy_->prepare(shaders_, kGrid, requirements);
     grid_ = LightGrid(kGrid, shOrder);
   }
 
+  // Prepared for a run with this sky (the run's constant, which prepare() sees), then injected.
   Grid inject(glm::vec3 sky) {
+    strategy_->prepare({.shaders = shaders_,
+                        .grid = kGrid,
+                        .requirements = requirements_,
+                        .scene = &scene_,
+                        .skyRadiance = sky});
     grid_.current.zero();
     Frame frame{.scene = &scene_,
                 .gbuffer = gbuffer_,
                 .lightMaps = lightMaps_,
                 .lightGrid = grid_,
-                .indirect = indirect_,
-                .skyRadiance = sky};
+                .indirect = indirect_};
     strategy_->inject(frame);
     checkGl("sky injection test");
     Grid data(grid_.floatsPerGrid());
@@ -105,6 +109,7 @@ private:
   toml::table table_;
   ShaderCompiler shaders_;
   std::unique_ptr<InjectionStrategy> strategy_;
+  Requirements requirements_;
   LightGrid grid_;
   GBuffer gbuffer_;  // sky injection reads none of these
   LightMaps lightMaps_;

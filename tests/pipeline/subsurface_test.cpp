@@ -121,9 +121,15 @@ public:
     strategy_ = Registry<RenderingStrategy>::instance().create(params, "trilinear");
     params.finish();
     sub_ = dynamic_cast<SubsurfaceRendering*>(strategy_.get());
-    Requirements requirements;
-    strategy_->declare(requirements);
-    strategy_->prepare(shaders_, GridGeometry{}, requirements);
+    // Prepared as a run prepares it: with the scene, its light views and the image size.
+    const Requirements requirements;
+    const GridGeometry mainGrid;
+    strategy_->prepare({.shaders = shaders_,
+                        .grid = mainGrid,
+                        .requirements = requirements,
+                        .scene = &scene_.gpu,
+                        .lightMaps = &maps_.lightMaps(),
+                        .imageSize = {kWidth, kHeight}});
     gbuffer_.render(scene_.gpu, camera_);
     const float prefill[4] = {kPrefill, kPrefill, kPrefill, kPrefill};
     glClearTexImage(indirect_.id(), 0, GL_RGBA, GL_FLOAT, prefill);
@@ -173,7 +179,6 @@ TEST(Subsurface, SceneWithoutTranslucentMaterialsGetsExactlyNothing) {
 TEST(Subsurface, OnlyTranslucentSurfacesInjectTheirTransmittedFluxIntoTheObject) {
   SubsurfaceRig rig(boxScene(true), 512);
   Frame frame = rig.frame();
-  ASSERT_TRUE(rig.sub().setUp(frame));
   rig.sub().renderRsm(frame);
   rig.sub().inject(frame);
   checkGl("subsurface injection test");

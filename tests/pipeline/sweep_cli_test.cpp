@@ -141,7 +141,7 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
   ASSERT_GE(before.header.size(), leading.size());
   for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(before.header[i], leading[i]);
   for (const char* column : {"gpu_ms.total", "wall_ms.total", "gpu_ms.propagation", "memory_bytes",
-                             "memory_bytes.light_grid", "memory_bytes.geometry_volume", "cells"})
+                             "memory_bytes.light_grid", "memory_bytes.light_maps", "cells"})
     EXPECT_NE(std::find(before.header.begin(), before.header.end(), column), before.header.end()) << column;
   std::set<std::string> iterations;
   for (const auto& row : before.rows) {

@@ -1,6 +1,7 @@
 // Injection "rsm_vpl": every reflective-shadow-map texel becomes a virtual point light in the
 // light grid (thesis 4.3, eq. 4.1-4.3; kernel shaders/injection/rsm_vpl.comp), at any SH order.
-// When a strategy asks for the normal grid (directed propagation), the VPLs' normals go there too.
+// It produces the normal grid: when a strategy consumes it (directed propagation), the VPLs'
+// normals go there too.
 //
 // | parameter | type  | default | meaning                                                       |
 // |-----------|-------|---------|---------------------------------------------------------------|
@@ -23,6 +24,7 @@ public:
       : shiftCells_(params.get<float>("shift", 1.0f, {.min = -4.0f, .max = 4.0f})) {}
 
   int maxShOrder() const override { return 3; }
+  void declare(ResourceUses& uses) const override { uses.produces(kNormalGrid); }
 
   // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,
   // about a multiply-add each) and 3N products added atomically (read and write, 8 B each); the
@@ -30,17 +32,16 @@ public:
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const double n = shape.coefficients;
-    const double normals = requirements.normalGrid ? 4.0 : 0.0;
+    const double normals = requirements.has(kNormalGrid) ? 4.0 : 0.0;
     return {{"VPL", shape.rsmTexels * shape.levels, 4 * n + 10 + normals,
              3 * 16 + 8 * (3 * n + normals)}};
   }
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry&,
-               const Requirements& requirements) override {
-    program_ = shaders.compute(
+  void prepare(const StrategySetup& setup) override {
+    program_ = setup.shaders.compute(
         "injection/rsm_vpl.comp",
-        {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
-         SpecConstant::b(1, requirements.normalGrid)});
+        {SpecConstant::i(0, shared::shCoefficientCount(setup.requirements.shOrder)),
+         SpecConstant::b(1, setup.requirements.has(kNormalGrid))});
   }
 
   void inject(Frame& frame) override {
@@ -51,7 +52,7 @@ public:
     glBindTextureUnit(1, maps.rsmNormal.id());
     glBindTextureUnit(2, maps.rsmFlux.id());
     frame.lightGrid.current.bindStorage(0);
-    if (frame.normalGrid) frame.normalGrid->normals.bindStorage(1);
+    if (const NormalGrid* normals = frame.find(kNormalGrid)) normals->normals.bindStorage(1);
     glUniform3fv(0, 1, &grid.origin[0]);
     glUniform1f(1, grid.cellSize);
     glUniform3iv(2, 1, &grid.resolution[0]);

@@ -23,6 +23,7 @@
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/raster_passes.h"
+#include "framework/pipeline/sky_light.h"
 #include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
@@ -51,15 +52,17 @@ public:
       : texelsPerCell_(params.get<int>("texels_per_cell", 4, {.min = 1, .max = 16})),
         shiftCells_(params.get<float>("shift", 1.0f, {.min = 0.0f, .max = 4.0f})) {}
 
-  void declare(Requirements& requirements) const override { requirements.skyInjected = true; }
+  void declare(ResourceUses& uses) const override { uses.produces(kSkyLight); }
   int maxShOrder() const override { return 3; }
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override {
+  void prepare(const StrategySetup& setup) override {
+    ShaderCompiler& shaders = setup.shaders;
+    const GridGeometry& grid = setup.grid;
+    skyRadiance_ = setup.skyRadiance;
     depthProgram_ = shaders.graphics("raster/scene.vert", "raster/shadow.frag");
     injectProgram_ = shaders.compute(
         "injection/sky_columns.comp",
-        {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder))});
+        {SpecConstant::i(0, shared::shCoefficientCount(setup.requirements.shOrder))});
     width_ = grid.resolution.x * texelsPerCell_;
     height_ = grid.resolution.z * texelsPerCell_;
     GLint maxSize = 0;
@@ -81,12 +84,12 @@ public:
   std::size_t memoryBytes() const override { return depth_.bytes(); }
 
   void inject(Frame& frame) override {
-    if (!glm::any(glm::greaterThan(frame.skyRadiance, glm::vec3(0.0f)))) return;
+    if (!glm::any(glm::greaterThan(skyRadiance_, glm::vec3(0.0f)))) return;
     if (!frame.scene) throw Error("[injection] sky_columns: the frame has no scene to rasterise");
     renderDepth(*frame.scene);
     const GridGeometry& grid = frame.lightGrid.geometry;
     const float texelSize = grid.cellSize / float(texelsPerCell_);
-    const glm::vec3 perTexel = frame.skyRadiance * (texelSize * texelSize);  // L a, W/sr
+    const glm::vec3 perTexel = skyRadiance_ * (texelSize * texelSize);  // L a, W/sr
     injectProgram_.use();
     glBindTextureUnit(0, depth_.id());
     frame.lightGrid.current.bindStorage(0);
@@ -110,6 +113,7 @@ private:
 
   int texelsPerCell_;
   float shiftCells_;
+  glm::vec3 skyRadiance_{0.0f};  // the run's [sky] radiance, W/(m^2 sr)
   int width_ = 0, height_ = 0;
   glm::mat4 clipFromWorld_{1.0f};
   Program depthProgram_, injectProgram_;

@@ -6,7 +6,8 @@
 // A_s / s^2 * cosLobe(-n) to the GV cell containing it (shaders/occlusion/gv_surfel.glsl). With
 // both sources, each fills a GV of its own and the two are merged "by the larger coefficients":
 // per GV cell the whole cell of the source with the larger c0 (shaders/occlusion/gv_merge.comp).
-// When a strategy asks for the surfaces' albedo (Requirements::surfaceAlbedo: multiple bounces),
+// It produces the GV and the surfaces' albedo (resources kGeometryVolume, kSurfaceAlbedo). When a
+// strategy consumes the albedo (multiple bounces),
 // each surfel also adds its albedo, weighted by its A_s / s^2, to the GV's albedo: a camera
 // surfel the G-buffer's, an RSM surfel its reflected flux over the flux arriving at it. Albedo is
 // a weighted mean, not a sum, so both sources add to the one albedo buffer without merging.
@@ -61,12 +62,18 @@ public:
       throw Error(params.where("sources") + ": a source is listed twice");
   }
 
-  void declare(Requirements& requirements) const override { requirements.geometryVolume = true; }
+  void declare(ResourceUses& uses) const override {
+    uses.produces(kGeometryVolume, skipFirstIteration_ ? 1 : 0);
+    uses.produces(kSurfaceAlbedo);
+  }
   int maxShOrder() const override { return 3; }  // the GV is order 1 whatever the light grid's
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override {
-    withAlbedo_ = requirements.surfaceAlbedo;
+  void prepare(const StrategySetup& setup) override {
+    ShaderCompiler& shaders = setup.shaders;
+    const GridGeometry& grid = setup.grid;
+    active_ = setup.requirements.has(kGeometryVolume);  // no propagation uses one: nothing to do
+    withAlbedo_ = setup.requirements.has(kSurfaceAlbedo);
+    if (!active_) return;
     const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
     if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
     if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);
@@ -80,8 +87,8 @@ public:
   }
 
   void inject(Frame& frame) override {
-    GeometryVolume& gv = *frame.geometryVolume;
-    gv.firstOccludedIteration = skipFirstIteration_ ? 1 : 0;
+    if (!active_) return;
+    GeometryVolume& gv = frame.get(kGeometryVolume);
     // The camera's surfels go straight into the GV; the lights' too when they are the only source.
     if (fromCamera_) injectCamera(frame, gv.blocking);
     if (fromLight_ && !fromCamera_) injectLightViews(frame, gv.blocking);
@@ -104,9 +111,10 @@ private:
   // What both injection kernels read first: the GV's placement (uniforms 0-2), the blocking
   // scale (uniform 6), the surfels' positions, normals and what gives their albedo (texture units 0, 1, 2), the GV they add to
   // (storage 0) and, when asked for, the GV's albedo (storage 3).
-  void useInjection(const Program& program, const GeometryVolume& gv, const gl::Texture& position,
+  void useInjection(const Program& program, const Frame& frame, const gl::Texture& position,
                     const gl::Texture& normal, const gl::Texture& albedoSource,
                     const gl::Buffer& target) const {
+    const GeometryVolume& gv = frame.get(kGeometryVolume);
     program.use();
     glUniform3fv(0, 1, &gv.geometry.origin[0]);
     glUniform1f(1, gv.geometry.cellSize);
@@ -117,13 +125,13 @@ private:
     target.bindStorage(0);
     if (withAlbedo_) {
       glBindTextureUnit(2, albedoSource.id());
-      gv.albedo.bindStorage(3);
+      frame.get(kSurfaceAlbedo).albedo.bindStorage(3);
     }
   }
 
   void injectCamera(Frame& frame, const gl::Buffer& target) {
     const GBuffer& g = frame.gbuffer;
-    useInjection(camera_, *frame.geometryVolume, g.position, g.normal, g.albedo, target);
+    useInjection(camera_, frame, g.position, g.normal, g.albedo, target);
     glUniform3fv(3, 1, &frame.camera->position[0]);
     glUniform1f(4, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
     glUniform2i(5, g.width, g.height);
@@ -132,7 +140,7 @@ private:
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
     const LightMaps& maps = frame.lightMaps;
-    useInjection(rsm_, *frame.geometryVolume, maps.rsmPosition, maps.rsmNormal, maps.rsmFlux,
+    useInjection(rsm_, frame, maps.rsmPosition, maps.rsmNormal, maps.rsmFlux,
                  target);
     maps.lightRecords.bindStorage(1);
     maps.viewRecords.bindStorage(2);
@@ -144,6 +152,7 @@ private:
   bool skipFirstIteration_;
   float blockingScale_;
   bool fromLight_ = false, fromCamera_ = false;
+  bool active_ = false;
   bool withAlbedo_ = false;
   Program camera_, rsm_, merge_;
   gl::Buffer lightScratch_;

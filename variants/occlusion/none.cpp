@@ -10,7 +10,7 @@ class NoOcclusion final : public OcclusionStrategy {
 public:
   explicit NoOcclusion(Params&) {}
   int maxShOrder() const override { return 3; }  // touches no light grid
-  void prepare(ShaderCompiler&, const GridGeometry&, const Requirements&) override {}
+  void prepare(const StrategySetup&) override {}
   void inject(Frame&) override {}
 };
 

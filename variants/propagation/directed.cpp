@@ -1,6 +1,6 @@
 // Propagation "directed": standard propagation (standard.cpp) with the thesis' fix for light
 // flowing back behind the VPLs' own surfaces (thesis 5.2, 6.9.4, alg. 6.3). Injection also
-// stores the VPLs' flux-weighted normals (Requirements::normalGrid); before every iteration the
+// stores the VPLs' flux-weighted normals (it consumes kNormalGrid); before every iteration the
 // normals are dilated into cells that have none (by gathering, in two ping-pong buffers of this
 // strategy, starting from the injected normal grid, which stays untouched), and the light each
 // face passes into a cell is reprojected a second time about the cell's dilated normal, which
@@ -36,16 +36,21 @@ public:
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
         dilation_(params.get<bool>("dilation", true)) {}
 
-  void declare(Requirements& requirements) const override { requirements.normalGrid = true; }
+  void declare(ResourceUses& uses) const override {
+    uses.consumes(kNormalGrid);
+    uses.reads(kGeometryVolume);
+  }
   int maxShOrder() const override { return 3; }
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override {
+  void prepare(const StrategySetup& setup) override {
+    ShaderCompiler& shaders = setup.shaders;
+    const GridGeometry& grid = setup.grid;
+    const Requirements& requirements = setup.requirements;
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
     gather_ = shaders.compute("propagation/directed_gather.comp",
                               {SpecConstant::f(0, float(angles.farFace)),
                                SpecConstant::f(1, float(angles.sideFace)),
-                               SpecConstant::b(2, requirements.geometryVolume),
+                               SpecConstant::b(2, requirements.has(kGeometryVolume)),
                                SpecConstant::i(3, shared::shCoefficientCount(requirements.shOrder))});
     dilate_ = shaders.compute("propagation/directed_dilate.comp");
     scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
@@ -58,8 +63,8 @@ public:
 
   void propagate(Frame& frame) override {
     LightGrid& grid = frame.lightGrid;
-    const gl::Buffer* normals = &frame.normalGrid->normals;
-    const GeometryVolume* gv = frame.geometryVolume;
+    const gl::Buffer* normals = &frame.get(kNormalGrid).normals;
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
     for (int i = 0; i < iterations_; ++i) {
       if (dilation_) {
         gl::Buffer& next = normals_[i % 2];

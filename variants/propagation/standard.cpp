@@ -6,9 +6,10 @@
 // and scattering (standard_scatter.comp: each cell pushes into its neighbours with float
 // atomics). Both call the one face loop of standard_transfer.glsl; the per-face mathematics,
 // its normalisation and the geometry volume's attenuation are in standard_faces.glsl.
-// When an occlusion strategy provides a geometry volume, each face's flux is multiplied by the
-// GV's transmittance from iteration GeometryVolume::firstOccludedIteration on (alg. 6.2
-// lines 11-14). With `bounces`, the light a face crossing blocks is re-emitted by the GV's
+// When an occlusion strategy produces a geometry volume (this strategy reads kGeometryVolume),
+// each face's flux is multiplied by the GV's transmittance from iteration
+// GeometryVolume::firstOccludedIteration on (alg. 6.2 lines 11-14). With `bounces` (which
+// consume the GV and its surfaces' albedo, kSurfaceAlbedo), the light a face crossing blocks is re-emitted by the GV's
 // surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
 // from, every occluded iteration, so light bounces as often as iterations allow
 // (standard_faces.glsl has the mathematics).
@@ -59,23 +60,25 @@ public:
         damping_(params.get<double>("damping", 1.0, {.min = 0.0, .max = 2.0})) {}
 
   int maxShOrder() const override { return 3; }
-  void declare(Requirements& requirements) const override {
-    if (bounces_) requirements.surfaceAlbedo = true;
-  }
-  std::string refusal(const Requirements& requirements) const override {
-    if (bounces_ && !requirements.geometryVolume)
-      return "bounces = true re-emits the light the geometry volume blocks, and there is no "
-             "geometry volume: set [occlusion] type = \"geometry_volume\" or bounces = false";
-    return {};
+  // Bounces re-emit what the GV blocks with its surfaces' albedo: they cannot run without both.
+  void declare(ResourceUses& uses) const override {
+    if (bounces_) {
+      uses.consumes(kGeometryVolume, "bounces = true (they re-emit the light it blocks)");
+      uses.consumes(kSurfaceAlbedo, "bounces = true (they re-emit with it)");
+    } else {
+      uses.reads(kGeometryVolume);
+    }
   }
   std::string cpuRefusal(const Requirements& requirements) const override {
     if (scatter_) return "method = \"scatter\" has no CPU kernel (gathering computes the same grid)";
-    if (requirements.geometryVolume) return "the geometry volume's attenuation has no CPU kernel yet";
+    if (requirements.has(kGeometryVolume))
+      return "the geometry volume's attenuation has no CPU kernel yet";
     return {};
   }
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override {
+  void prepare(const StrategySetup& setup) override {
+    const Requirements& requirements = setup.requirements;
+    const GridGeometry& grid = setup.grid;
     if (runsOnCpu(requirements)) {
       cpuTable_ = makeStandardFaceTable<float>(requirements.shOrder, damping_ * farFace_,
                                                damping_ * sideFace_);
@@ -86,10 +89,10 @@ public:
       return;
     }
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-    program_ = shaders.compute(
+    program_ = setup.shaders.compute(
         scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
         {SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
-         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.geometryVolume),
+         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
          SpecConstant::b(4, bounces_)});
     scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
@@ -101,11 +104,11 @@ public:
     program_.use();
     glUniform3iv(0, 1, &grid.geometry.resolution[0]);
     // Without a GV the kernels were compiled without its reads, and these uniforms don't exist.
-    const GeometryVolume* gv = frame.geometryVolume;
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
     if (gv) {
       glUniform1i(2, gv->firstOccludedIteration);
       gv->blocking.bindStorage(3);
-      if (bounces_) gv->albedo.bindStorage(4);
+      if (bounces_) frame.get(kSurfaceAlbedo).albedo.bindStorage(4);
     }
     grid.accumulated.bindStorage(2);
     for (int i = 0; i < iterations_; ++i) {
@@ -135,7 +138,7 @@ public:
     const double n = shape.coefficients;
     double madds = runsOnCpu(requirements) ? 3 * 36 * n : 3 * 30 * 2 * n;
     double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
-    if (requirements.geometryVolume) {
+    if (requirements.has(kGeometryVolume)) {
       madds += 30 * 8 * 4;
       bytes += 8 * 16;
     }

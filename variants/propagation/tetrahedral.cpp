@@ -54,9 +54,12 @@ public:
         faceIntegrals_(params.getChoice("face_flux", "integral", {"integral", "centre"}) == "integral") {}
 
   int maxShOrder() const override { return 3; }
+  void declare(ResourceUses& uses) const override { uses.reads(kGeometryVolume); }
 
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override {
+  void prepare(const StrategySetup& setup) override {
+    ShaderCompiler& shaders = setup.shaders;
+    const GridGeometry& grid = setup.grid;
+    const Requirements& requirements = setup.requirements;
     const TetrahedralFaceSolidAngles angles = tetrahedralFaceSolidAngles();
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
     split_ = shaders.compute("propagation/tetrahedral_split.comp", {SpecConstant::i(0, coefficients)});
@@ -64,7 +67,7 @@ public:
                               {SpecConstant::f(0, float(angles.smallFace)),
                                SpecConstant::f(1, float(angles.largeFace)),
                                SpecConstant::i(2, coefficients),
-                               SpecConstant::b(3, requirements.geometryVolume),
+                               SpecConstant::b(3, requirements.has(kGeometryVolume)),
                                SpecConstant::b(4, faceIntegrals_)});
     if (faceIntegrals_) {
       const std::vector<double>& table = tetrahedralFaceIntegrals();
@@ -97,7 +100,7 @@ public:
     glUniform3iv(0, 1, &res[0]);
     sum_.bindStorage(2);
     // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
-    const GeometryVolume* gv = frame.geometryVolume;
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
     if (gv) gv->blocking.bindStorage(3);
     if (faceIntegrals_) faceIntegralTable_.bindStorage(4);
     const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;

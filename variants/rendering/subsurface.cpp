@@ -59,9 +59,9 @@ float SubsurfaceRendering::stepAttenuation(float extinction, float cellSize) {
   return float(std::exp(-double(extinction) * double(cellSize)));
 }
 
-void SubsurfaceRendering::prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-                                  const Requirements& requirements) {
-  shOrder_ = requirements.shOrder;
+void SubsurfaceRendering::prepare(const StrategySetup& setup) {
+  ShaderCompiler& shaders = setup.shaders;
+  shOrder_ = setup.requirements.shOrder;
   const int coefficients = shared::shCoefficientCount(shOrder_);
   const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
   rsmProgram_ = shaders.graphics("raster/scene.vert", "subsurface/rsm.frag");
@@ -75,7 +75,8 @@ void SubsurfaceRendering::prepare(ShaderCompiler& shaders, const GridGeometry& g
   Requirements own;
   own.shOrder = shOrder_;
   injection_ = unshiftedRsmInjection();
-  injection_->prepare(shaders, grid, own);
+  injection_->prepare({.shaders = shaders, .grid = setup.grid, .requirements = own});
+  if (setup.scene && setup.lightMaps) setUp(*setup.scene, *setup.lightMaps, setup.imageSize);
 }
 
 void SubsurfaceRendering::allocateGrid(const GridGeometry& geometry, float extinction) {
@@ -84,14 +85,13 @@ void SubsurfaceRendering::allocateGrid(const GridGeometry& geometry, float extin
   attenuation_ = stepAttenuation(extinction, geometry.cellSize);
 }
 
-bool SubsurfaceRendering::setUp(const Frame& frame) {
-  if (!frame.scene) throw Error("rendering \"subsurface\": the frame has no scene to rasterise");
-  scene_ = frame.scene;
-  const std::vector<Material>& materials = frame.scene->materials();
+bool SubsurfaceRendering::setUp(const SceneGpu& scene, const LightMaps& lightMaps,
+                                glm::ivec2 imageSize) {
+  const std::vector<Material>& materials = scene.materials();
   std::vector<const Material*> translucent;
   Bounds bounds;
   for (std::size_t m = 0; m < materials.size(); ++m) {
-    const Bounds& own = frame.scene->materialBounds(int(m));
+    const Bounds& own = scene.materialBounds(int(m));
     if (!materials[m].translucent() || own.empty()) continue;
     translucent.push_back(&materials[m]);
     bounds.extend(own.min);
@@ -112,18 +112,18 @@ bool SubsurfaceRendering::setUp(const Frame& frame) {
                              records.data());
 
   // The RSM: one layer per light view of the main light maps, with their view matrices.
-  const int views = frame.lightMaps.views, r = rsmResolution_;
+  const int views = lightMaps.views, r = rsmResolution_;
   std::vector<GpuView> viewRecords(static_cast<std::size_t>(views));
-  frame.lightMaps.viewRecords.download(viewRecords.data(), viewRecords.size() * sizeof(GpuView));
+  lightMaps.viewRecords.download(viewRecords.data(), viewRecords.size() * sizeof(GpuView));
   rsmClipFromWorld_.clear();
   for (const GpuView& view : viewRecords) rsmClipFromWorld_.push_back(view.clipFromWorld);
   rsm_ = LightMaps();
   rsm_.views = views;
   rsm_.rsmResolution = r;
-  rsm_.lightCount = frame.lightMaps.lightCount;
+  rsm_.lightCount = lightMaps.lightCount;
   rsmFramebuffers_ = allocateRsm(rsm_, r, views, "subsurface rsm");
 
-  const int w = frame.gbuffer.width, h = frame.gbuffer.height;
+  const int w = imageSize.x, h = imageSize.y;
   mask_ = gl::Texture(GL_TEXTURE_2D, GL_R8, w, h, 1, "subsurface mask");
   maskDepth_ = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, "subsurface mask depth");
   maskFramebuffer_.emplace();
@@ -203,8 +203,7 @@ void SubsurfaceRendering::shade(Frame& frame) {
 }
 
 void SubsurfaceRendering::render(Frame& frame) {
-  if (frame.scene != scene_) setUp(frame);
-  if (!active_) return;
+  if (!active_) return;  // no translucent surface, or prepare() had no scene
   renderRsm(frame);
   inject(frame);
   propagate();

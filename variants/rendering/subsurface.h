@@ -15,7 +15,7 @@
 //      exactly what they had.
 // Its grid is fitted to the translucent materials' triangles. One grid has one attenuation, so
 // all translucent materials of a scene must share one extinction. The grid, RSM and mask are
-// made on the first frame, when the scene is known (prepare() sees only the main grid).
+// made in prepare(), which sees the scene, its light views and the image size.
 //
 // | parameter      | type  | default | meaning                                                  |
 // |----------------|-------|---------|----------------------------------------------------------|
@@ -48,8 +48,7 @@ public:
   ~SubsurfaceRendering() override;
 
   int maxShOrder() const override { return 3; }
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override;
+  void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
   std::size_t memoryBytes() const override;
 
@@ -58,9 +57,9 @@ public:
   static float stepAttenuation(float extinction, float cellSize);
 
   // The steps of render(), for tests.
-  // Makes the SSLPV for the scene's translucent materials and the frame's light views and image
-  // size (render() does on its first frame); false, and nothing made, when there are none.
-  bool setUp(const Frame& frame);
+  // Makes the SSLPV for the scene's translucent materials, its light views and the image size
+  // (prepare() does, when it is given a scene); false, and nothing made, when there are none.
+  bool setUp(const SceneGpu& scene, const LightMaps& lightMaps, glm::ivec2 imageSize);
   // A grid of this placement with this extinction, without the scene (setUp() calls it).
   void allocateGrid(const GridGeometry& geometry, float extinction);
   void renderRsm(const Frame& frame);
@@ -81,7 +80,6 @@ private:
   int shOrder_ = 1;
   Program rsmProgram_, maskProgram_, propagateProgram_, renderProgram_;
   std::unique_ptr<InjectionStrategy> injection_;  // "rsm_vpl", shift 0, on rsm_ and grid_
-  const SceneGpu* scene_ = nullptr;  // the scene setUp() was made for
   bool active_ = false;              // the scene has translucent surfaces
   LightGrid grid_;
   gl::Buffer scratch_;               // the propagation's ping-pong partner of grid_.current

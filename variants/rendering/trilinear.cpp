@@ -36,9 +36,9 @@ TrilinearKernelOptions TrilinearKernelOptions::readDiffuse(Params& params) {
   return options;
 }
 
-void TrilinearKernelRendering::prepare(ShaderCompiler& shaders, const GridGeometry&,
-                                       const Requirements& requirements) {
-  program_ = shaders.compute("rendering/trilinear.comp",
+void TrilinearKernelRendering::prepare(const StrategySetup& setup) {
+  const Requirements& requirements = setup.requirements;
+  program_ = setup.shaders.compute("rendering/trilinear.comp",
                              {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
                               SpecConstant::b(1, options_.leakDamping > 0.0f),
                               SpecConstant::b(2, options_.specularAlbedo > 0.0f)});

@@ -31,8 +31,7 @@ public:
   explicit TrilinearKernelRendering(const TrilinearKernelOptions& options) : options_(options) {}
 
   int maxShOrder() const override { return 3; }
-  void prepare(ShaderCompiler& shaders, const GridGeometry& grid,
-               const Requirements& requirements) override;
+  void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
   // Per pixel and level: the G-buffer's 3 texels (16 B each) and the output's read and write;
   // the lobe (N), and per channel the 8 corner cells' N coefficients against it plus the 8

@@ -1,0 +1,43 @@
+#include "framework/pipeline/strategy_catalogue.h"
+
+#include <toml++/toml.h>
+
+#include "framework/core/parameters.h"
+#include "framework/pipeline/strategy.h"
+
+namespace lpvlab {
+
+namespace {
+
+template <class Interface>
+void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
+  for (const auto& [name, entry] : Registry<Interface>::instance().entries()) {
+    const toml::table defaults;
+    Params params(defaults, "the strategy catalogue", stage);
+    CatalogueEntry item{stage, name, entry.description, {}};
+    entry.factory(params)->declare(item.uses);
+    out.push_back(std::move(item));
+  }
+}
+
+}  // namespace
+
+std::vector<CatalogueEntry> strategyCatalogue() {
+  std::vector<CatalogueEntry> entries;
+  addStage<InjectionStrategy>("injection", entries);
+  addStage<OcclusionStrategy>("occlusion", entries);
+  addStage<PropagationStrategy>("propagation", entries);
+  addStage<RenderingStrategy>("rendering", entries);
+  return entries;
+}
+
+std::vector<std::string> producersOf(const std::string& resource) {
+  std::vector<std::string> producers;
+  for (const CatalogueEntry& entry : strategyCatalogue())
+    for (const ResourceUses::Use& use : entry.uses.uses())
+      if (use.kind == ResourceUses::Kind::Produces && use.name == resource)
+        producers.push_back("[" + entry.stage + "] type = \"" + entry.name + "\"");
+  return producers;
+}
+
+}  // namespace lpvlab

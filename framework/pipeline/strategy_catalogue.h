@@ -1,0 +1,27 @@
+#pragma once
+// Every registered strategy of every stage with what it declares (named_resources.h) with its
+// default parameters: what `lpvlab list` prints, and where the composition check looks for the
+// strategies that would produce a resource nobody in a composition produces.
+
+#include <string>
+#include <vector>
+
+#include "framework/pipeline/named_resources.h"
+
+namespace lpvlab {
+
+struct CatalogueEntry {
+  std::string stage;  // "injection", "occlusion", "propagation", "rendering"
+  std::string name;   // the registered name ([<stage>] type = "<name>")
+  std::string description;
+  ResourceUses uses;  // with the default parameters (a parameter may change them)
+};
+
+// In pipeline order, each stage's strategies by name.
+std::vector<CatalogueEntry> strategyCatalogue();
+
+// `[<stage>] type = "<name>"` of every registered strategy that produces `resource` with its
+// default parameters.
+std::vector<std::string> producersOf(const std::string& resource);
+
+}  // namespace lpvlab
