@@ -11,22 +11,26 @@
 
 namespace lpvlab {
 
-namespace {
-constexpr int kMaxLevels = 8;  // CASCADE_MAX_LEVELS in cascade_blend.glsl
+namespace blend_kernel {
+#include "shaders/common/cascade_blend_interface.glsl"
+}
+namespace restrict_kernel {
+#include "shaders/cascade/restrict_interface.glsl"
 }
 
 void setCascadeBlendUniforms(const Frame& frame, int level) {
   const std::span<const LightGrid> levels = frame.renderedLevels();
-  if (levels.size() > std::size_t(kMaxLevels))
-    throw Error("cascade: at most " + std::to_string(kMaxLevels) + " levels can be rendered");
+  using namespace blend_kernel;
+  if (levels.size() > std::size_t(CASCADE_MAX_LEVELS))
+    throw Error("cascade: at most " + std::to_string(CASCADE_MAX_LEVELS) + " levels can be rendered");
   std::vector<glm::vec4> placement;
   for (const LightGrid& grid : levels)
     placement.emplace_back(grid.geometry.origin, grid.geometry.cellSize);
-  glUniform4fv(40, GLsizei(placement.size()), &placement[0][0]);
-  glUniform1i(48, int(levels.size()));
-  glUniform1i(49, level);
-  glUniform1f(50, frame.cascadeBlendCells);
-  glUniform3iv(51, 1, &levels[std::size_t(level)].geometry.resolution[0]);
+  glUniform4fv(LOCATION_CASCADE_LEVEL, GLsizei(placement.size()), &placement[0][0]);
+  glUniform1i(LOCATION_CASCADE_LEVELS, int(levels.size()));
+  glUniform1i(LOCATION_CASCADE_CURRENT, level);
+  glUniform1f(LOCATION_CASCADE_BLEND_CELLS, frame.cascadeBlendCells);
+  glUniform3iv(LOCATION_CASCADE_RESOLUTION, 1, &levels[std::size_t(level)].geometry.resolution[0]);
 }
 
 CascadeCarry::CascadeCarry(ShaderCompiler& shaders, int shOrder)
@@ -35,12 +39,14 @@ CascadeCarry::CascadeCarry(ShaderCompiler& shaders, int shOrder)
 
 void CascadeCarry::carry(const LightGrid& child, LightGrid& parent) const {
   const glm::ivec3 offset = childOffsetInParentCells(child.geometry, parent.geometry);
+  using namespace restrict_kernel;
   program_.use();
-  glUniform3iv(0, 1, &parent.geometry.resolution[0]);
-  glUniform3iv(1, 1, &offset[0]);
-  child.current.bindStorage(0);
-  parent.current.bindStorage(1);
-  dispatchCovering(parent.geometry.resolution / 2, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+  glUniform3iv(LOCATION_RESOLUTION, 1, &parent.geometry.resolution[0]);
+  glUniform3iv(LOCATION_CHILD_OFFSET, 1, &offset[0]);
+  child.current.bindStorage(BUFFER_CHILD);
+  parent.current.bindStorage(BUFFER_PARENT);
+  dispatchCovering(parent.geometry.resolution / 2, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                   GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 }  // namespace lpvlab

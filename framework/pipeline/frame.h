@@ -37,7 +37,7 @@ struct LightMaps {
   gl::Texture rsmFlux;      // RGBA32F: reflected flux of the texel's surface patch, W per channel
   gl::Texture rsmDepth;     // DEPTH32F
   gl::Texture shadowDepth;  // DEPTH32F, shadowResolution^2 per layer
-  gl::Buffer lightRecords;  // GpuLight[] (binding conventions: see shaders/common/lights_gpu.glsl)
+  gl::Buffer lightRecords;  // GpuLight[] (bound where shaders/common/light_records_interface.glsl says)
   gl::Buffer viewRecords;   // GpuView[]
   int lightCount = 0;
   std::size_t memoryBytes() const;

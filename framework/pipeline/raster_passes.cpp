@@ -4,6 +4,15 @@
 
 namespace lpvlab {
 
+namespace gbuffer_kernel {
+#include "shaders/raster/gbuffer_interface.glsl"
+}
+namespace rsm_kernel {
+#include "shaders/common/light_records_interface.glsl"
+#include "shaders/raster/rsm_interface.glsl"
+}
+using scene_vertex::LOCATION_CLIP_FROM_WORLD;
+
 void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int colourTargets) {
   framebuffer.bind();
   static const GLenum targets[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
@@ -53,9 +62,9 @@ void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
   beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, 4);
   program_.use();
   const glm::mat4 clip = clipFromWorld(camera);
-  glUniformMatrix4fv(0, 1, GL_FALSE, &clip[0][0]);
-  glUniform3fv(2, 1, &camera.position[0]);
-  glUniform3fv(3, 1, &camera.forward[0]);
+  glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clip[0][0]);
+  glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_POSITION, 1, &camera.position[0]);
+  glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_FORWARD, 1, &camera.forward[0]);
   scene.draw();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -124,24 +133,25 @@ void LightMapsPass::renderShadowMaps(const SceneGpu& scene) {
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(shadowFramebuffers_[layer], maps_.shadowResolution, maps_.shadowResolution, 0);
     depthOnlyProgram_.use();
-    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
     scene.draw(SceneGpu::AlphaMasks::None, false);
     shadowProgram_.use();
-    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
     scene.draw(SceneGpu::AlphaMasks::Only);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void LightMapsPass::renderRsms(const SceneGpu& scene) {
+  using namespace rsm_kernel;
   rsmProgram_.use();
-  maps_.lightRecords.bindStorage(1);
-  maps_.viewRecords.bindStorage(2);
-  glUniform1i(3, maps_.rsmResolution);
+  maps_.lightRecords.bindStorage(BUFFER_LIGHTS);
+  maps_.viewRecords.bindStorage(BUFFER_VIEWS);
+  glUniform1i(LOCATION_RESOLUTION, maps_.rsmResolution);
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(rsmFramebuffers_[layer], maps_.rsmResolution, maps_.rsmResolution, 3);
-    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
-    glUniform1i(2, layer);
+    glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
+    glUniform1i(LOCATION_VIEW_INDEX, layer);
     scene.draw();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -5,6 +5,10 @@
 
 namespace lpvlab {
 
+namespace material_kernel {
+#include "shaders/raster/material_interface.glsl"
+}
+
 namespace {
 
 struct Vertex {
@@ -80,14 +84,17 @@ SceneGpu::SceneGpu(const Scene& scene)
   glCreateVertexArrays(1, &vertexArray_);
   glVertexArrayVertexBuffer(vertexArray_, 0, vertices_.id(), 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vertexArray_, indices_.id());
-  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal),
-                             offsetof(Vertex, uv)};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(vertexArray_, attribute);
-    glVertexArrayAttribFormat(vertexArray_, attribute, sizes[attribute], GL_FLOAT, GL_FALSE,
-                              offsets[attribute]);
-    glVertexArrayAttribBinding(vertexArray_, attribute, 0);
+  struct Attribute {
+    int location;  // scene.vert's
+    GLint size;
+    GLuint offset;
+  };
+  for (const Attribute& a : {Attribute{scene_vertex::ATTRIBUTE_POSITION, 3, offsetof(Vertex, position)},
+                             Attribute{scene_vertex::ATTRIBUTE_NORMAL, 3, offsetof(Vertex, normal)},
+                             Attribute{scene_vertex::ATTRIBUTE_UV, 2, offsetof(Vertex, uv)}}) {
+    glEnableVertexArrayAttrib(vertexArray_, GLuint(a.location));
+    glVertexArrayAttribFormat(vertexArray_, GLuint(a.location), a.size, GL_FLOAT, GL_FALSE, a.offset);
+    glVertexArrayAttribBinding(vertexArray_, GLuint(a.location), 0);
   }
 }
 
@@ -97,16 +104,16 @@ SceneGpu::~SceneGpu() {
 
 void SceneGpu::draw(AlphaMasks which, bool bindMaterials) const {
   glBindVertexArray(vertexArray_);
-  if (bindMaterials) materials_.bindStorage(0);
+  if (bindMaterials) materials_.bindStorage(material_kernel::BUFFER_MATERIALS);
   for (const DrawRange& range : draws_) {
     if ((which == AlphaMasks::Only && !range.alphaMasked) ||
         (which == AlphaMasks::None && range.alphaMasked))
       continue;
     if (bindMaterials) {
-      glUniform1i(1, range.material);
+      glUniform1i(material_kernel::LOCATION_MATERIAL_INDEX, range.material);
       const int texture = range.material < int(textureOfMaterial_.size())
                               ? textureOfMaterial_[range.material] : -1;
-      glBindTextureUnit(0, texture >= 0 ? textures_[texture].id() : white_.id());
+      glBindTextureUnit(material_kernel::UNIT_BASE_COLOR_TEXTURE, texture >= 0 ? textures_[texture].id() : white_.id());
     }
     glDrawElements(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)));

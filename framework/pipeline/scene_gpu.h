@@ -1,7 +1,7 @@
 #pragma once
 // The scene uploaded for rasterisation: one interleaved vertex buffer and one index buffer for
-// all meshes, sorted into one draw range per material, the materials in a storage buffer
-// (binding 0) and each base colour texture as an sRGB, mip-mapped GL texture (unit 0).
+// all meshes, sorted into one draw range per material, the materials in a storage buffer and each
+// base colour texture as an sRGB, mip-mapped GL texture (where material.glsl reads them).
 
 #include <vector>
 
@@ -11,6 +11,12 @@
 #include "framework/scene/scene.h"
 
 namespace lpvlab {
+
+// Where scene.vert reads the vertices (the layout below) and the clip-from-world matrix that every
+// pass rasterising the scene sets.
+namespace scene_vertex {
+#include "shaders/raster/scene_interface.glsl"
+}
 
 struct GpuMaterial {  // std430 mirror of shaders/raster/material.glsl
   glm::vec4 baseColorCutoff;

@@ -7,14 +7,15 @@
 // its own coarser injection of the same surfaces. Parent cells outside the child keep their own.
 #include "../common/grid.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "restrict_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
-layout(std430, binding = 0) readonly buffer Child { float child[]; };
-layout(std430, binding = 1) buffer Parent { float parent[]; };
+layout(std430, binding = BUFFER_CHILD) readonly buffer Child { float child[]; };
+layout(std430, binding = BUFFER_PARENT) buffer Parent { float parent[]; };
 
-layout(location = 0) uniform ivec3 resolution;   // of both levels (cascades keep cell counts)
-layout(location = 1) uniform ivec3 childOffset;  // the child's first cell, in parent cells
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;   // of both levels (cascades keep cell counts)
+layout(location = LOCATION_CHILD_OFFSET) uniform ivec3 childOffset;  // the child's first cell, in parent cells
 
 void main() {
   ivec3 c = ivec3(gl_GlobalInvocationID);      // parent cell, counted from childOffset

@@ -9,12 +9,12 @@
 #include "cascade_fade.glsl"
 #include "grid.glsl"
 
-const int CASCADE_MAX_LEVELS = 8;
-layout(location = 40) uniform vec4 cascadeLevel[CASCADE_MAX_LEVELS];  // origin xyz, cell size w
-layout(location = 48) uniform int cascadeLevels;
-layout(location = 49) uniform int cascadeCurrent;    // the level this dispatch renders
-layout(location = 50) uniform float cascadeBlendCells;
-layout(location = 51) uniform ivec3 cascadeResolution;  // the same for every level
+#include "cascade_blend_interface.glsl"
+layout(location = LOCATION_CASCADE_LEVEL) uniform vec4 cascadeLevel[CASCADE_MAX_LEVELS];  // origin xyz, cell size w
+layout(location = LOCATION_CASCADE_LEVELS) uniform int cascadeLevels;
+layout(location = LOCATION_CASCADE_CURRENT) uniform int cascadeCurrent;    // the level this dispatch renders
+layout(location = LOCATION_CASCADE_BLEND_CELLS) uniform float cascadeBlendCells;
+layout(location = LOCATION_CASCADE_RESOLUTION) uniform ivec3 cascadeResolution;  // the same for every level
 
 vec3 cascadeGridCoordinates(vec3 p, int level) {
   return gridFromWorld(p, cascadeLevel[level].xyz, cascadeLevel[level].w);

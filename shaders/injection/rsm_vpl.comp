@@ -11,21 +11,22 @@
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "rsm_vpl_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 1) const bool WRITE_NORMALS = false;
 
-layout(binding = 0) uniform sampler2DArray rsmPosition;
-layout(binding = 1) uniform sampler2DArray rsmNormal;
-layout(binding = 2) uniform sampler2DArray rsmFlux;
-layout(std430, binding = 0) buffer Grid { float grid[]; };
-layout(std430, binding = 1) buffer Normals { vec4 normals[]; };
+layout(binding = UNIT_RSM_POSITION) uniform sampler2DArray rsmPosition;
+layout(binding = UNIT_RSM_NORMAL) uniform sampler2DArray rsmNormal;
+layout(binding = UNIT_RSM_FLUX) uniform sampler2DArray rsmFlux;
+layout(std430, binding = BUFFER_GRID) buffer Grid { float grid[]; };
+layout(std430, binding = BUFFER_NORMALS) buffer Normals { vec4 normals[]; };
 
-layout(location = 0) uniform vec3 gridOrigin;
-layout(location = 1) uniform float cellSize;
-layout(location = 2) uniform ivec3 resolution;
-layout(location = 3) uniform float shiftCells;
-layout(location = 4) uniform int rsmResolution;
+layout(location = LOCATION_GRID_ORIGIN) uniform vec3 gridOrigin;
+layout(location = LOCATION_CELL_SIZE) uniform float cellSize;
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_SHIFT_CELLS) uniform float shiftCells;
+layout(location = LOCATION_RSM_RESOLUTION) uniform int rsmResolution;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);

@@ -8,17 +8,18 @@
 #include "../common/grid.glsl"
 #include "sky_columns.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "sky_columns_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
-layout(binding = 0) uniform sampler2D skyDepth;
-layout(std430, binding = 0) buffer Grid { float grid[]; };
+layout(binding = UNIT_SKY_DEPTH) uniform sampler2D skyDepth;
+layout(std430, binding = BUFFER_GRID) buffer Grid { float grid[]; };
 
-layout(location = 0) uniform vec3 gridOrigin;
-layout(location = 1) uniform float cellSize;
-layout(location = 2) uniform ivec3 resolution;
-layout(location = 3) uniform float shiftCells;
-layout(location = 4) uniform vec3 skyPerTexel;  // L a per channel, W/sr
+layout(location = LOCATION_GRID_ORIGIN) uniform vec3 gridOrigin;
+layout(location = LOCATION_CELL_SIZE) uniform float cellSize;
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_SHIFT_CELLS) uniform float shiftCells;
+layout(location = LOCATION_SKY_PER_TEXEL) uniform vec3 skyPerTexel;  // L a per channel, W/sr
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

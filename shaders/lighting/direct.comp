@@ -6,21 +6,23 @@
 #include "../common/lights_gpu.glsl"
 #include "../common/lights.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "direct_interface.glsl"
+#include "../common/light_records_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 
-layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 2) uniform sampler2D gAlbedo;
-layout(binding = 3) uniform sampler2D gEmission;
-layout(binding = 4) uniform sampler2DArrayShadow shadowMaps;
-layout(binding = 0, rgba32f) uniform writeonly image2D outDirect;
+layout(binding = UNIT_G_POSITION) uniform sampler2D gPosition;
+layout(binding = UNIT_G_NORMAL) uniform sampler2D gNormal;
+layout(binding = UNIT_G_ALBEDO) uniform sampler2D gAlbedo;
+layout(binding = UNIT_G_EMISSION) uniform sampler2D gEmission;
+layout(binding = UNIT_SHADOW_MAPS) uniform sampler2DArrayShadow shadowMaps;
+layout(binding = IMAGE_OUT_DIRECT, rgba32f) uniform writeonly image2D outDirect;
 
-layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, binding = 2) readonly buffer Views { GpuView views[]; };
-layout(location = 0) uniform int lightCount;
-layout(location = 1) uniform int shadowResolution;
-layout(location = 2) uniform float normalOffsetTexels;  // shadow-acne bias along the normal
-layout(location = 3) uniform float depthBias;           // in window depth units
+layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = BUFFER_VIEWS) readonly buffer Views { GpuView views[]; };
+layout(location = LOCATION_LIGHT_COUNT) uniform int lightCount;
+layout(location = LOCATION_SHADOW_RESOLUTION) uniform int shadowResolution;
+layout(location = LOCATION_NORMAL_OFFSET_TEXELS) uniform float normalOffsetTexels;  // shadow-acne bias along the normal
+layout(location = LOCATION_DEPTH_BIAS) uniform float depthBias;           // in window depth units
 
 int cubeFace(vec3 d) {
   vec3 a = abs(d);

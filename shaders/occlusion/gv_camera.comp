@@ -6,13 +6,14 @@
 #include "gv_surfel.glsl"
 #include "surfel_area.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;  // w: view depth
-layout(binding = 2) uniform sampler2D gAlbedo;
-layout(location = 3) uniform vec3 cameraPosition;
-layout(location = 4) uniform float texelEdge;   // 2 tan(vertical fov / 2) / height
-layout(location = 5) uniform ivec2 size;
+#include "gv_camera_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
+layout(binding = UNIT_SURFEL_POSITION) uniform sampler2D gPosition;
+layout(binding = UNIT_SURFEL_NORMAL) uniform sampler2D gNormal;  // w: view depth
+layout(binding = UNIT_SURFEL_ALBEDO) uniform sampler2D gAlbedo;
+layout(location = LOCATION_CAMERA_POSITION) uniform vec3 cameraPosition;
+layout(location = LOCATION_TEXEL_EDGE) uniform float texelEdge;   // 2 tan(vertical fov / 2) / height
+layout(location = LOCATION_SIZE) uniform ivec2 size;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

@@ -4,10 +4,11 @@
 // blocking averaged over directions, is larger; on a tie the target's is kept. Taking one
 // source's cell whole, rather than a per-coefficient maximum, keeps B a sum of real surfels'
 // lobes; a sum of both would count a surface seen by both views twice.
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) buffer Target { float target[]; };       // source 1, and the result
-layout(std430, binding = 1) readonly buffer Other { float other[]; };  // source 2
-layout(location = 0) uniform int cells;
+#include "gv_merge_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
+layout(std430, binding = BUFFER_TARGET) buffer Target { float target[]; };       // source 1, and the result
+layout(std430, binding = BUFFER_OTHER) readonly buffer Other { float other[]; };  // source 2
+layout(location = LOCATION_CELLS) uniform int cells;
 
 void main() {
   int i = int(gl_GlobalInvocationID.x);

@@ -11,13 +11,15 @@
 #include "surfel_area.glsl"
 #include "../raster/rsm_texel.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2DArray rsmPosition;
-layout(binding = 1) uniform sampler2DArray rsmNormal;
-layout(binding = 2) uniform sampler2DArray rsmFlux;
-layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, binding = 2) readonly buffer Views { GpuView views[]; };
-layout(location = 3) uniform int rsmResolution;
+#include "gv_rsm_interface.glsl"
+#include "../common/light_records_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
+layout(binding = UNIT_SURFEL_POSITION) uniform sampler2DArray rsmPosition;
+layout(binding = UNIT_SURFEL_NORMAL) uniform sampler2DArray rsmNormal;
+layout(binding = UNIT_SURFEL_ALBEDO) uniform sampler2DArray rsmFlux;
+layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = BUFFER_VIEWS) readonly buffer Views { GpuView views[]; };
+layout(location = LOCATION_RSM_RESOLUTION) uniform int rsmResolution;
 
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);

@@ -6,20 +6,21 @@
 // With WITH_ALBEDO it also adds the surfel's albedo rho, weighted by its blocking weight A / s^2,
 // to the GV's albedo (rho A / s^2, A / s^2), so that a cell's mean albedo is the surfels' area-
 // weighted mean (framework/pipeline/geometry_volume.h).
-// It declares the target GV buffers (bindings 0 and 3), the uniforms at locations 0..2 and 6 and
-// the specialisation constant 0 below; the including kernel enables GL_EXT_shader_atomic_float.
+// It declares the target GV buffers and the uniforms of gv_surfel_interface.glsl, and the
+// specialisation constant 0 below; the including kernel enables GL_EXT_shader_atomic_float.
 #ifndef LPVLAB_GV_SURFEL_GLSL
 #define LPVLAB_GV_SURFEL_GLSL
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
 
-layout(std430, binding = 0) buffer Target { float gv[]; };  // the GV's blocking coefficients
-layout(location = 0) uniform vec3 gvOrigin;      // corner of GV cell (0,0,0), metres
-layout(location = 1) uniform float cellSize;     // s, metres (the light grid's)
-layout(location = 2) uniform ivec3 gvResolution;
-layout(location = 6) uniform float blockingScale;
+#include "gv_surfel_interface.glsl"
+layout(std430, binding = BUFFER_TARGET) buffer Target { float gv[]; };  // the GV's blocking coefficients
+layout(location = LOCATION_GV_ORIGIN) uniform vec3 gvOrigin;      // corner of GV cell (0,0,0), metres
+layout(location = LOCATION_CELL_SIZE) uniform float cellSize;     // s, metres (the light grid's)
+layout(location = LOCATION_GV_RESOLUTION) uniform ivec3 gvResolution;
+layout(location = LOCATION_BLOCKING_SCALE) uniform float blockingScale;
 layout(constant_id = 0) const bool WITH_ALBEDO = false;
-layout(std430, binding = 3) buffer Albedo { float gvAlbedo[]; };  // 4 floats per GV cell
+layout(std430, binding = BUFFER_ALBEDO) buffer Albedo { float gvAlbedo[]; };  // 4 floats per GV cell
 
 // `albedoKnown`: rho is the surfel's albedo; otherwise only its blocking is added.
 void gvAddSurfel(vec3 p, vec3 n, float area, vec3 rho, bool albedoKnown) {

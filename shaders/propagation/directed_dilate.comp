@@ -4,11 +4,12 @@
 #include "directed_faces.glsl"
 #include "../common/grid.glsl"
 
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "directed_dilate_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 
-layout(std430, binding = 0) readonly buffer Source { vec4 source[]; };
-layout(std430, binding = 1) writeonly buffer Target { vec4 target[]; };
-layout(location = 0) uniform ivec3 resolution;
+layout(std430, binding = BUFFER_SOURCE) readonly buffer Source { vec4 source[]; };
+layout(std430, binding = BUFFER_TARGET) writeonly buffer Target { vec4 target[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);

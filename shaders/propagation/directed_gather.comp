@@ -4,19 +4,20 @@
 // face passes (directed_faces.glsl). Any SH order: SH_COEFFICIENTS per channel. With a geometry
 // volume, the light crossing the shared face is attenuated by its blocking potential (thesis
 // alg. 6.2 lines 11-15) from the occlusion strategy's first occluded iteration on.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "directed_gather_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const bool GEOMETRY_VOLUME = false;
 layout(constant_id = 3) const int SH_COEFFICIENTS = 4;
 
-layout(std430, binding = 0) readonly buffer Source { float source[]; };
-layout(std430, binding = 1) writeonly buffer Target { float target[]; };
-layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
-layout(std430, binding = 3) readonly buffer Normals { vec4 normals[]; };
-layout(std430, binding = 4) readonly buffer GeometryVolume { float gvBlocking[]; };
-layout(location = 0) uniform ivec3 resolution;
-layout(location = 1) uniform int occludeThisIteration;  // 0 or 1
+layout(std430, binding = BUFFER_SOURCE) readonly buffer Source { float source[]; };
+layout(std430, binding = BUFFER_TARGET) writeonly buffer Target { float target[]; };
+layout(std430, binding = BUFFER_ACCUMULATED) buffer Accumulated { float accumulated[]; };
+layout(std430, binding = BUFFER_NORMALS) readonly buffer Normals { vec4 normals[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_OCCLUDE_THIS_ITERATION) uniform int occludeThisIteration;  // 0 or 1
 
 const int N = SH_COEFFICIENTS;  // arrays sized by the specialisation constant stay in registers
 #include "directed_faces.glsl"

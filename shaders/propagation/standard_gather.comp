@@ -6,21 +6,22 @@
 // iteration `firstOccludedIteration` on, each face's flux is attenuated by the GV's transmittance;
 // with BOUNCES the cell also runs its own outgoing transfers (all six, the grid's edge included)
 // for what the GV blocked of them, which its surfaces re-emit into this cell: twice the face work.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "standard_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 3) const bool HAS_GV = false;
 layout(constant_id = 4) const bool BOUNCES = false;  // re-emit blocked light (only with HAS_GV)
 
-layout(std430, binding = 0) readonly buffer Source { float source[]; };
-layout(std430, binding = 1) writeonly buffer Target { float target[]; };
-layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
-layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
-layout(std430, binding = 4) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
-layout(location = 0) uniform ivec3 resolution;
-layout(location = 1) uniform int iteration;               // 0 for the first step after injection
-layout(location = 2) uniform int firstOccludedIteration;  // GeometryVolume::firstOccludedIteration
+layout(std430, binding = BUFFER_SOURCE) readonly buffer Source { float source[]; };
+layout(std430, binding = BUFFER_TARGET) writeonly buffer Target { float target[]; };
+layout(std430, binding = BUFFER_ACCUMULATED) buffer Accumulated { float accumulated[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME_ALBEDO) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_ITERATION) uniform int iteration;               // 0 for the first step after injection
+layout(location = LOCATION_FIRST_OCCLUDED_ITERATION) uniform int firstOccludedIteration;  // GeometryVolume::firstOccludedIteration
 
 const int N = SH_COEFFICIENTS;  // arrays sized by the specialisation constant stay in registers
 #include "standard_transfer.glsl"

@@ -8,20 +8,21 @@
 // basis towards its centroid (tetrahedral_lattice.glsl, "face_flux"). With the GV (HAS_GV) and
 // `occluded`, each face's flux is multiplied by the GV's transmittance where its direction
 // crosses the shared face.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "tetrahedral_gather_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float SMALL_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float LARGE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 3) const bool HAS_GV = false;
 layout(constant_id = 4) const bool FACE_INTEGRALS = true;
 
-layout(std430, binding = 0) readonly buffer Source { float source[]; };
-layout(std430, binding = 1) writeonly buffer Target { float target[]; };
-layout(std430, binding = 2) buffer Sum { float sum[]; };
-layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
-layout(std430, binding = 4) readonly buffer FaceIntegrals { float faceIntegral[]; };
-layout(location = 0) uniform ivec3 resolution;
-layout(location = 1) uniform int occludedStep;  // 0 or 1: this step reads the GV (tetFirstOccludedStep)
+layout(std430, binding = BUFFER_SOURCE) readonly buffer Source { float source[]; };
+layout(std430, binding = BUFFER_TARGET) writeonly buffer Target { float target[]; };
+layout(std430, binding = BUFFER_SUM) buffer Sum { float sum[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = BUFFER_FACE_INTEGRALS) readonly buffer FaceIntegrals { float faceIntegral[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_OCCLUDED_STEP) uniform int occludedStep;  // 0 or 1: this step reads the GV (tetFirstOccludedStep)
 
 const int N = SH_COEFFICIENTS;  // arrays sized by the specialisation constant stay in registers
 #include "tetrahedral_slot.glsl"

@@ -3,14 +3,15 @@
 // for which it is the lower cube and the 12 for which it is the upper one; flux conserving).
 // The lattice's last step becomes the grid's `current`, and its running sum, weighted by the
 // step length (TET_STEP_LENGTH), is added to `accumulated`. Any SH order: SH_COEFFICIENTS per channel.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "tetrahedral_merge_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
-layout(std430, binding = 0) readonly buffer Last { float last[]; };
-layout(std430, binding = 1) readonly buffer Sum { float sum[]; };
-layout(std430, binding = 2) writeonly buffer Current { float current[]; };
-layout(std430, binding = 3) buffer Accumulated { float accumulated[]; };
-layout(location = 0) uniform ivec3 resolution;
+layout(std430, binding = BUFFER_LAST) readonly buffer Last { float last[]; };
+layout(std430, binding = BUFFER_SUM) readonly buffer Sum { float sum[]; };
+layout(std430, binding = BUFFER_CURRENT) writeonly buffer Current { float current[]; };
+layout(std430, binding = BUFFER_ACCUMULATED) buffer Accumulated { float accumulated[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
 
 const int N = SH_COEFFICIENTS;
 #include "tetrahedral_lattice.glsl"

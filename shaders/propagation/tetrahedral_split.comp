@@ -2,12 +2,13 @@
 // Cubic light grid -> tetrahedral lattice: every cell takes its share of each of its two cubes'
 // coefficients (tetSplitWeight, flux conserving); slots of cells that do not exist get zero.
 // Any SH order: SH_COEFFICIENTS per channel.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "tetrahedral_split_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
-layout(std430, binding = 0) readonly buffer Cubes { float cubes[]; };
-layout(std430, binding = 1) writeonly buffer Cells { float cells[]; };
-layout(location = 0) uniform ivec3 resolution;
+layout(std430, binding = BUFFER_CUBES) readonly buffer Cubes { float cubes[]; };
+layout(std430, binding = BUFFER_CELLS) writeonly buffer Cells { float cells[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
 
 const int N = SH_COEFFICIENTS;
 #include "tetrahedral_slot.glsl"

@@ -6,8 +6,9 @@ layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec2 texcoord;
 
-layout(location = 2) uniform vec3 cameraPosition;
-layout(location = 3) uniform vec3 cameraForward;
+#include "gbuffer_interface.glsl"
+layout(location = LOCATION_CAMERA_POSITION) uniform vec3 cameraPosition;
+layout(location = LOCATION_CAMERA_FORWARD) uniform vec3 cameraForward;
 
 layout(location = 0) out vec4 outPosition;
 layout(location = 1) out vec4 outNormal;

@@ -7,9 +7,10 @@ struct GpuMaterial {
   vec4 emissionTextured;  // rgb: emitted radiance W/(m^2 sr); a: 1 if a base colour texture is bound
 };
 
-layout(std430, binding = 0) readonly buffer Materials { GpuMaterial materials[]; };
-layout(binding = 0) uniform sampler2D baseColorTexture;  // sRGB texture: sampling linearises
-layout(location = 1) uniform int materialIndex;
+#include "material_interface.glsl"
+layout(std430, binding = BUFFER_MATERIALS) readonly buffer Materials { GpuMaterial materials[]; };
+layout(binding = UNIT_BASE_COLOR_TEXTURE) uniform sampler2D baseColorTexture;  // sRGB texture: sampling linearises
+layout(location = LOCATION_MATERIAL_INDEX) uniform int materialIndex;
 
 // The linear albedo at uv; discards the fragment where an alpha mask cuts the surface out.
 vec3 materialAlbedo(vec2 uv) {

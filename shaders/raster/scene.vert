@@ -1,10 +1,11 @@
 #version 450
 // Every raster pass draws the scene with this vertex shader; positions are already in world space.
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec2 uv;
+#include "scene_interface.glsl"
+layout(location = ATTRIBUTE_POSITION) in vec3 position;
+layout(location = ATTRIBUTE_NORMAL) in vec3 normal;
+layout(location = ATTRIBUTE_UV) in vec2 uv;
 
-layout(location = 0) uniform mat4 clipFromWorld;
+layout(location = LOCATION_CLIP_FROM_WORLD) uniform mat4 clipFromWorld;
 
 layout(location = 0) out vec3 worldPosition;
 layout(location = 1) out vec3 worldNormal;

@@ -20,28 +20,29 @@
 #include "leak_damping.glsl"
 #include "phong_lobe.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "trilinear_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 layout(constant_id = 1) const bool LEAK_DAMPING = false;
 layout(constant_id = 2) const bool GLOSSY = false;
 
-layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 2) uniform sampler2D gAlbedo;
-layout(std430, binding = 0) readonly buffer Accumulated { float grid[]; };
-layout(binding = 0, rgba32f) uniform image2D outIndirect;
+layout(binding = UNIT_G_POSITION) uniform sampler2D gPosition;
+layout(binding = UNIT_G_NORMAL) uniform sampler2D gNormal;
+layout(binding = UNIT_G_ALBEDO) uniform sampler2D gAlbedo;
+layout(std430, binding = BUFFER_ACCUMULATED) readonly buffer Accumulated { float grid[]; };
+layout(binding = IMAGE_OUT_INDIRECT, rgba32f) uniform image2D outIndirect;
 
-layout(location = 0) uniform vec3 gridOrigin;
-layout(location = 1) uniform float cellSize;
-layout(location = 2) uniform ivec3 resolution;
-layout(location = 3) uniform float normalOffsetCells;
-layout(location = 4) uniform float leakDampingStrength;
-layout(location = 5) uniform vec3 cameraPosition;
-layout(location = 6) uniform float specularAlbedo;
-layout(location = 7) uniform float phongExponent;
-layout(location = 8) uniform float marchStepCells;
-layout(location = 9) uniform int marchSamples;
-layout(location = 10) uniform float indirectScale;  // [rendering] scale
+layout(location = LOCATION_GRID_ORIGIN) uniform vec3 gridOrigin;
+layout(location = LOCATION_CELL_SIZE) uniform float cellSize;
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_NORMAL_OFFSET_CELLS) uniform float normalOffsetCells;
+layout(location = LOCATION_LEAK_DAMPING_STRENGTH) uniform float leakDampingStrength;
+layout(location = LOCATION_CAMERA_POSITION) uniform vec3 cameraPosition;
+layout(location = LOCATION_SPECULAR_ALBEDO) uniform float specularAlbedo;
+layout(location = LOCATION_PHONG_EXPONENT) uniform float phongExponent;
+layout(location = LOCATION_MARCH_STEP_CELLS) uniform float marchStepCells;
+layout(location = LOCATION_MARCH_SAMPLES) uniform int marchSamples;
+layout(location = LOCATION_INDIRECT_SCALE) uniform float indirectScale;  // [rendering] scale
 
 // The grid's intensity projected on `lobe`, per channel, trilinearly interpolated at grid
 // coordinates g, and (if withSlope) its derivative per cell along the unit direction d.

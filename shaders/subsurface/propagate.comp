@@ -6,20 +6,21 @@
 // of the translucent material (extinction sigma, 1/m) over the one cell (s, m) the light moves
 // per step. Writes the next iteration's light and adds it to the accumulated SSLPV; light that
 // would leave the grid is lost.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#include "propagate_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;
 const bool HAS_GV = false;   // the transfer's GV reads and bounces are compiled out:
 const bool BOUNCES = false;  // the buffers below are declared for it, never read
 
-layout(std430, binding = 0) readonly buffer Source { float source[]; };
-layout(std430, binding = 1) writeonly buffer Target { float target[]; };
-layout(std430, binding = 2) buffer Accumulated { float accumulated[]; };
-layout(std430, binding = 3) readonly buffer GeometryVolume { float gvBlocking[]; };
-layout(std430, binding = 4) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
-layout(location = 0) uniform ivec3 resolution;
-layout(location = 1) uniform float attenuation;  // a, per step
+layout(std430, binding = BUFFER_SOURCE) readonly buffer Source { float source[]; };
+layout(std430, binding = BUFFER_TARGET) writeonly buffer Target { float target[]; };
+layout(std430, binding = BUFFER_ACCUMULATED) buffer Accumulated { float accumulated[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME) readonly buffer GeometryVolume { float gvBlocking[]; };
+layout(std430, binding = BUFFER_GEOMETRY_VOLUME_ALBEDO) readonly buffer GeometryVolumeAlbedo { vec4 gvAlbedo[]; };
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
+layout(location = LOCATION_ATTENUATION) uniform float attenuation;  // a, per step
 
 const int N = SH_COEFFICIENTS;
 #include "../propagation/standard_transfer.glsl"

@@ -9,18 +9,19 @@
 #include "../rendering/trilinear_weights.glsl"
 #include "subsurface.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "render_interface.glsl"
+layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const int SH_COEFFICIENTS = 4;
 
-layout(binding = 0) uniform sampler2D gPosition;
-layout(binding = 1) uniform sampler2D gNormal;
-layout(binding = 2) uniform sampler2D translucentMask;
-layout(std430, binding = 0) readonly buffer Accumulated { float grid[]; };
-layout(binding = 0, rgba32f) uniform image2D indirect;
+layout(binding = UNIT_G_POSITION) uniform sampler2D gPosition;
+layout(binding = UNIT_G_NORMAL) uniform sampler2D gNormal;
+layout(binding = UNIT_TRANSLUCENT_MASK) uniform sampler2D translucentMask;
+layout(std430, binding = BUFFER_ACCUMULATED) readonly buffer Accumulated { float grid[]; };
+layout(binding = IMAGE_INDIRECT, rgba32f) uniform image2D indirect;
 
-layout(location = 0) uniform vec3 gridOrigin;
-layout(location = 1) uniform float cellSize;
-layout(location = 2) uniform ivec3 resolution;
+layout(location = LOCATION_GRID_ORIGIN) uniform vec3 gridOrigin;
+layout(location = LOCATION_CELL_SIZE) uniform float cellSize;
+layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

@@ -12,10 +12,12 @@ layout(location = 0) in vec3 worldPosition;
 layout(location = 1) in vec3 worldNormal;
 layout(location = 2) in vec2 texcoord;
 
-layout(std430, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, binding = 2) readonly buffer Views { GpuView views[]; };
-layout(location = 2) uniform int viewIndex;
-layout(location = 3) uniform int resolution;
+#include "rsm_interface.glsl"
+#include "../common/light_records_interface.glsl"
+layout(std430, binding = BUFFER_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = BUFFER_VIEWS) readonly buffer Views { GpuView views[]; };
+layout(location = LOCATION_VIEW_INDEX) uniform int viewIndex;
+layout(location = LOCATION_RESOLUTION) uniform int resolution;
 
 layout(location = 0) out vec4 outPosition;
 layout(location = 1) out vec4 outNormal;

@@ -5,7 +5,8 @@
 #define LPVLAB_TRANSLUCENCY_GLSL
 #include "../raster/material.glsl"
 
-layout(std430, binding = 3) readonly buffer Translucency { vec4 translucency[]; };
+#include "translucency_interface.glsl"
+layout(std430, binding = BUFFER_TRANSLUCENCY) readonly buffer Translucency { vec4 translucency[]; };
 
 vec3 materialTransmittance() { return translucency[materialIndex].rgb; }
 

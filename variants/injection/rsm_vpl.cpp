@@ -18,6 +18,10 @@
 namespace lpvlab {
 namespace {
 
+namespace kernel {
+#include "shaders/injection/rsm_vpl_interface.glsl"
+}
+
 class RsmVplInjection final : public InjectionStrategy {
 public:
   explicit RsmVplInjection(Params& params)
@@ -45,21 +49,22 @@ public:
   }
 
   void inject(Frame& frame) override {
+    using namespace kernel;
     const LightMaps& maps = frame.lightMaps;
     const GridGeometry& grid = frame.lightGrid.geometry;
     program_.use();
-    glBindTextureUnit(0, maps.rsmPosition.id());
-    glBindTextureUnit(1, maps.rsmNormal.id());
-    glBindTextureUnit(2, maps.rsmFlux.id());
-    frame.lightGrid.current.bindStorage(0);
-    if (const NormalGrid* normals = frame.find(kNormalGrid)) normals->normals.bindStorage(1);
-    glUniform3fv(0, 1, &grid.origin[0]);
-    glUniform1f(1, grid.cellSize);
-    glUniform3iv(2, 1, &grid.resolution[0]);
-    glUniform1f(3, shiftCells_);
-    glUniform1i(4, maps.rsmResolution);
-    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views}, {8, 8, 1},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindTextureUnit(UNIT_RSM_POSITION, maps.rsmPosition.id());
+    glBindTextureUnit(UNIT_RSM_NORMAL, maps.rsmNormal.id());
+    glBindTextureUnit(UNIT_RSM_FLUX, maps.rsmFlux.id());
+    frame.lightGrid.current.bindStorage(BUFFER_GRID);
+    if (const NormalGrid* normals = frame.find(kNormalGrid)) normals->normals.bindStorage(BUFFER_NORMALS);
+    glUniform3fv(LOCATION_GRID_ORIGIN, 1, &grid.origin[0]);
+    glUniform1f(LOCATION_CELL_SIZE, grid.cellSize);
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
+    glUniform1f(LOCATION_SHIFT_CELLS, shiftCells_);
+    glUniform1i(LOCATION_RSM_RESOLUTION, maps.rsmResolution);
+    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views},
+                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
 private:

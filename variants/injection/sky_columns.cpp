@@ -29,6 +29,10 @@
 namespace lpvlab {
 namespace {
 
+namespace kernel {
+#include "shaders/injection/sky_columns_interface.glsl"
+}
+
 // Orthographic view straight down over the grid: clip x, y from world x, z across the grid's
 // extent, depth 0 at the grid's top face and 1 at its bottom face (GL's default depth range maps
 // clip z in [-1, 1] to [0, 1]).
@@ -90,22 +94,24 @@ public:
     const GridGeometry& grid = frame.lightGrid.geometry;
     const float texelSize = grid.cellSize / float(texelsPerCell_);
     const glm::vec3 perTexel = skyRadiance_ * (texelSize * texelSize);  // L a, W/sr
+    using namespace kernel;
     injectProgram_.use();
-    glBindTextureUnit(0, depth_.id());
-    frame.lightGrid.current.bindStorage(0);
-    glUniform3fv(0, 1, &grid.origin[0]);
-    glUniform1f(1, grid.cellSize);
-    glUniform3iv(2, 1, &grid.resolution[0]);
-    glUniform1f(3, shiftCells_);
-    glUniform3fv(4, 1, &perTexel[0]);
-    dispatchCovering({width_, height_, 1}, {8, 8, 1}, GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindTextureUnit(UNIT_SKY_DEPTH, depth_.id());
+    frame.lightGrid.current.bindStorage(BUFFER_GRID);
+    glUniform3fv(LOCATION_GRID_ORIGIN, 1, &grid.origin[0]);
+    glUniform1f(LOCATION_CELL_SIZE, grid.cellSize);
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
+    glUniform1f(LOCATION_SHIFT_CELLS, shiftCells_);
+    glUniform3fv(LOCATION_SKY_PER_TEXEL, 1, &perTexel[0]);
+    dispatchCovering({width_, height_, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
 private:
   void renderDepth(const SceneGpu& scene) {
     beginRaster(*framebuffer_, width_, height_, 0);
     depthProgram_.use();
-    glUniformMatrix4fv(0, 1, GL_FALSE, &clipFromWorld_[0][0]);
+    glUniformMatrix4fv(scene_vertex::LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[0][0]);
     scene.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

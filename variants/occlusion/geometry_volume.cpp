@@ -42,6 +42,20 @@
 namespace lpvlab {
 namespace {
 
+namespace surfel_kernel {
+#include "shaders/occlusion/gv_surfel_interface.glsl"
+}
+namespace camera_kernel {
+#include "shaders/occlusion/gv_camera_interface.glsl"
+}
+namespace rsm_kernel {
+#include "shaders/common/light_records_interface.glsl"
+#include "shaders/occlusion/gv_rsm_interface.glsl"
+}
+namespace merge_kernel {
+#include "shaders/occlusion/gv_merge_interface.glsl"
+}
+
 class GeometryVolumeOcclusion final : public OcclusionStrategy {
 public:
   explicit GeometryVolumeOcclusion(Params& params)
@@ -96,57 +110,63 @@ public:
       lightScratch_.zero();
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       injectLightViews(frame, lightScratch_);
+      using namespace merge_kernel;
       merge_.use();
-      gv.blocking.bindStorage(0);
-      lightScratch_.bindStorage(1);
+      gv.blocking.bindStorage(BUFFER_TARGET);
+      lightScratch_.bindStorage(BUFFER_OTHER);
       const int cells = gv.geometry.cellCount();
-      glUniform1i(0, cells);
-      dispatchCovering({cells, 1, 1}, {64, 1, 1}, GL_SHADER_STORAGE_BARRIER_BIT);
+      glUniform1i(LOCATION_CELLS, cells);
+      dispatchCovering({cells, 1, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                       GL_SHADER_STORAGE_BARRIER_BIT);
     }
   }
 
   std::size_t memoryBytes() const override { return lightScratch_.size(); }
 
 private:
-  // What both injection kernels read first: the GV's placement (uniforms 0-2), the blocking
-  // scale (uniform 6), the surfels' positions, normals and what gives their albedo (texture units 0, 1, 2), the GV they add to
-  // (storage 0) and, when asked for, the GV's albedo (storage 3).
+  // What both injection kernels read first (gv_surfel_interface.glsl): the GV's placement, the
+  // blocking scale, the surfels' positions, normals and what gives their albedo, the GV they add
+  // to and, when it is used, the GV's albedo.
   void useInjection(const Program& program, const Frame& frame, const gl::Texture& position,
                     const gl::Texture& normal, const gl::Texture& albedoSource,
                     const gl::Buffer& target) const {
+    using namespace surfel_kernel;
     const GeometryVolume& gv = frame.get(kGeometryVolume);
     program.use();
-    glUniform3fv(0, 1, &gv.geometry.origin[0]);
-    glUniform1f(1, gv.geometry.cellSize);
-    glUniform3iv(2, 1, &gv.geometry.resolution[0]);
-    glUniform1f(6, blockingScale_);
-    glBindTextureUnit(0, position.id());
-    glBindTextureUnit(1, normal.id());
-    target.bindStorage(0);
+    glUniform3fv(LOCATION_GV_ORIGIN, 1, &gv.geometry.origin[0]);
+    glUniform1f(LOCATION_CELL_SIZE, gv.geometry.cellSize);
+    glUniform3iv(LOCATION_GV_RESOLUTION, 1, &gv.geometry.resolution[0]);
+    glUniform1f(LOCATION_BLOCKING_SCALE, blockingScale_);
+    glBindTextureUnit(UNIT_SURFEL_POSITION, position.id());
+    glBindTextureUnit(UNIT_SURFEL_NORMAL, normal.id());
+    target.bindStorage(BUFFER_TARGET);
     if (withAlbedo_) {
-      glBindTextureUnit(2, albedoSource.id());
-      frame.get(kSurfaceAlbedo).albedo.bindStorage(3);
+      glBindTextureUnit(UNIT_SURFEL_ALBEDO, albedoSource.id());
+      frame.get(kSurfaceAlbedo).albedo.bindStorage(BUFFER_ALBEDO);
     }
   }
 
   void injectCamera(Frame& frame, const gl::Buffer& target) {
     const GBuffer& g = frame.gbuffer;
+    using namespace camera_kernel;
     useInjection(camera_, frame, g.position, g.normal, g.albedo, target);
-    glUniform3fv(3, 1, &frame.camera->position[0]);
-    glUniform1f(4, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
-    glUniform2i(5, g.width, g.height);
-    dispatchCovering({g.width, g.height, 1}, {8, 8, 1}, GL_SHADER_STORAGE_BARRIER_BIT);
+    glUniform3fv(LOCATION_CAMERA_POSITION, 1, &frame.camera->position[0]);
+    glUniform1f(LOCATION_TEXEL_EDGE, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
+    glUniform2i(LOCATION_SIZE, g.width, g.height);
+    dispatchCovering({g.width, g.height, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
     const LightMaps& maps = frame.lightMaps;
+    using namespace rsm_kernel;
     useInjection(rsm_, frame, maps.rsmPosition, maps.rsmNormal, maps.rsmFlux,
                  target);
-    maps.lightRecords.bindStorage(1);
-    maps.viewRecords.bindStorage(2);
-    glUniform1i(3, maps.rsmResolution);
-    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views}, {8, 8, 1},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
+    maps.lightRecords.bindStorage(BUFFER_LIGHTS);
+    maps.viewRecords.bindStorage(BUFFER_VIEWS);
+    glUniform1i(LOCATION_RSM_RESOLUTION, maps.rsmResolution);
+    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views},
+                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
   bool skipFirstIteration_;

@@ -30,6 +30,13 @@
 namespace lpvlab {
 namespace {
 
+namespace dilate_kernel {
+#include "shaders/propagation/directed_dilate_interface.glsl"
+}
+namespace gather_kernel {
+#include "shaders/propagation/directed_gather_interface.glsl"
+}
+
 class DirectedPropagation final : public PropagationStrategy {
 public:
   explicit DirectedPropagation(Params& params)
@@ -67,24 +74,28 @@ public:
     const GeometryVolume* gv = frame.find(kGeometryVolume);
     for (int i = 0; i < iterations_; ++i) {
       if (dilation_) {
+        using namespace dilate_kernel;
         gl::Buffer& next = normals_[i % 2];
         dilate_.use();
-        glUniform3iv(0, 1, &grid.geometry.resolution[0]);
-        normals->bindStorage(0);
-        next.bindStorage(1);
-        dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+        glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
+        normals->bindStorage(BUFFER_SOURCE);
+        next.bindStorage(BUFFER_TARGET);
+        dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                         GL_SHADER_STORAGE_BARRIER_BIT);
         normals = &next;
       }
+      using namespace gather_kernel;
       gather_.use();
-      glUniform3iv(0, 1, &grid.geometry.resolution[0]);
+      glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
       // Only a kernel specialised with the GV keeps this uniform (GL refuses setting a removed one).
-      if (gv) glUniform1i(1, i >= gv->firstOccludedIteration);
-      grid.current.bindStorage(0);
-      scratch_.bindStorage(1);
-      grid.accumulated.bindStorage(2);
-      normals->bindStorage(3);
-      if (gv) gv->blocking.bindStorage(4);
-      dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+      if (gv) glUniform1i(LOCATION_OCCLUDE_THIS_ITERATION, i >= gv->firstOccludedIteration);
+      grid.current.bindStorage(BUFFER_SOURCE);
+      scratch_.bindStorage(BUFFER_TARGET);
+      grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
+      normals->bindStorage(BUFFER_NORMALS);
+      if (gv) gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
+      dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                       GL_SHADER_STORAGE_BARRIER_BIT);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
     }
   }

@@ -47,6 +47,10 @@
 namespace lpvlab {
 namespace {
 
+namespace kernel {  // gathering's and scattering's, the same
+#include "shaders/propagation/standard_interface.glsl"
+}
+
 class StandardPropagation final : public PropagationStrategy {
 public:
   explicit StandardPropagation(Params& params)
@@ -100,26 +104,28 @@ public:
 
   void propagate(Frame& frame) override {
     if (onCpu_) return propagateOnCpu(frame.lightGrid);
+    using namespace kernel;
     LightGrid& grid = frame.lightGrid;
     program_.use();
-    glUniform3iv(0, 1, &grid.geometry.resolution[0]);
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
     // Without a GV the kernels were compiled without its reads, and these uniforms don't exist.
     const GeometryVolume* gv = frame.find(kGeometryVolume);
     if (gv) {
-      glUniform1i(2, gv->firstOccludedIteration);
-      gv->blocking.bindStorage(3);
-      if (bounces_) frame.get(kSurfaceAlbedo).albedo.bindStorage(4);
+      glUniform1i(LOCATION_FIRST_OCCLUDED_ITERATION, gv->firstOccludedIteration);
+      gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
+      if (bounces_) frame.get(kSurfaceAlbedo).albedo.bindStorage(BUFFER_GEOMETRY_VOLUME_ALBEDO);
     }
-    grid.accumulated.bindStorage(2);
+    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
     for (int i = 0; i < iterations_; ++i) {
-      if (gv) glUniform1i(1, i);
-      grid.current.bindStorage(0);
+      if (gv) glUniform1i(LOCATION_ITERATION, i);
+      grid.current.bindStorage(BUFFER_SOURCE);
       if (scatter_) {
         scratch_.zero();  // the atomics add into it
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
       }
-      scratch_.bindStorage(1);
-      dispatchCovering(grid.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+      scratch_.bindStorage(BUFFER_TARGET);
+      dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                       GL_SHADER_STORAGE_BARRIER_BIT);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
     }
   }

@@ -47,6 +47,16 @@ namespace {
 
 constexpr int kCellsPerCube = 12;
 
+namespace split_kernel {
+#include "shaders/propagation/tetrahedral_split_interface.glsl"
+}
+namespace gather_kernel {
+#include "shaders/propagation/tetrahedral_gather_interface.glsl"
+}
+namespace merge_kernel {
+#include "shaders/propagation/tetrahedral_merge_interface.glsl"
+}
+
 class TetrahedralPropagation final : public PropagationStrategy {
 public:
   explicit TetrahedralPropagation(Params& params)
@@ -87,38 +97,43 @@ public:
     LightGrid& grid = frame.lightGrid;
     const glm::ivec3 res = grid.geometry.resolution;
     const glm::ivec3 cellDomain{kCellsPerCube * res.x, res.y, res.z};
-    const glm::ivec3 group{4};
-
-    split_.use();
-    glUniform3iv(0, 1, &res[0]);
-    grid.current.bindStorage(0);
-    current_.bindStorage(1);
-    dispatchCovering(cellDomain, group, GL_SHADER_STORAGE_BARRIER_BIT);
-
-    sum_.zero();
-    gather_.use();
-    glUniform3iv(0, 1, &res[0]);
-    sum_.bindStorage(2);
-    // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
-    const GeometryVolume* gv = frame.find(kGeometryVolume);
-    if (gv) gv->blocking.bindStorage(3);
-    if (faceIntegrals_) faceIntegralTable_.bindStorage(4);
-    const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
-    for (int i = 0; i < iterations_; ++i) {
-      if (gv) glUniform1i(1, i >= firstOccluded);
-      current_.bindStorage(0);
-      scratch_.bindStorage(1);
-      dispatchCovering(cellDomain, group, GL_SHADER_STORAGE_BARRIER_BIT);
-      std::swap(current_, scratch_);
+    {
+      using namespace split_kernel;
+      split_.use();
+      glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
+      grid.current.bindStorage(BUFFER_CUBES);
+      current_.bindStorage(BUFFER_CELLS);
+      dispatchCovering(cellDomain, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                       GL_SHADER_STORAGE_BARRIER_BIT);
     }
-
+    {
+      using namespace gather_kernel;
+      sum_.zero();
+      gather_.use();
+      glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
+      sum_.bindStorage(BUFFER_SUM);
+      // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
+      const GeometryVolume* gv = frame.find(kGeometryVolume);
+      if (gv) gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
+      if (faceIntegrals_) faceIntegralTable_.bindStorage(BUFFER_FACE_INTEGRALS);
+      const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
+      for (int i = 0; i < iterations_; ++i) {
+        if (gv) glUniform1i(LOCATION_OCCLUDED_STEP, i >= firstOccluded);
+        current_.bindStorage(BUFFER_SOURCE);
+        scratch_.bindStorage(BUFFER_TARGET);
+        dispatchCovering(cellDomain, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                         GL_SHADER_STORAGE_BARRIER_BIT);
+        std::swap(current_, scratch_);
+      }
+    }
+    using namespace merge_kernel;
     merge_.use();
-    glUniform3iv(0, 1, &res[0]);
-    current_.bindStorage(0);
-    sum_.bindStorage(1);
-    grid.current.bindStorage(2);
-    grid.accumulated.bindStorage(3);
-    dispatchCovering(res, group, GL_SHADER_STORAGE_BARRIER_BIT);
+    glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
+    current_.bindStorage(BUFFER_LAST);
+    sum_.bindStorage(BUFFER_SUM);
+    grid.current.bindStorage(BUFFER_CURRENT);
+    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
+    dispatchCovering(res, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
   int iterations() const override { return iterations_; }

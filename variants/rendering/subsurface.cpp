@@ -24,6 +24,21 @@
 
 namespace lpvlab {
 
+namespace translucency_kernel {  // the RSM's and the mask's material buffer
+#include "shaders/subsurface/translucency_interface.glsl"
+}
+namespace rsm_kernel {
+#include "shaders/common/light_records_interface.glsl"
+#include "shaders/subsurface/rsm_interface.glsl"
+}
+namespace propagate_kernel {
+#include "shaders/subsurface/propagate_interface.glsl"
+}
+namespace render_kernel {
+#include "shaders/subsurface/render_interface.glsl"
+}
+using scene_vertex::LOCATION_CLIP_FROM_WORLD;
+
 namespace {
 
 // The RSM injection as an experiment would create it, with shift 0: the thesis injects the
@@ -135,15 +150,17 @@ bool SubsurfaceRendering::setUp(const SceneGpu& scene, const LightMaps& lightMap
 }
 
 void SubsurfaceRendering::renderRsm(const Frame& frame) {
+  using namespace rsm_kernel;
   rsmProgram_.use();
-  frame.lightMaps.lightRecords.bindStorage(1);
-  frame.lightMaps.viewRecords.bindStorage(2);
-  translucency_.bindStorage(3);
-  glUniform1i(3, rsm_.rsmResolution);
+  frame.lightMaps.lightRecords.bindStorage(BUFFER_LIGHTS);
+  frame.lightMaps.viewRecords.bindStorage(BUFFER_VIEWS);
+  translucency_.bindStorage(translucency_kernel::BUFFER_TRANSLUCENCY);
+  glUniform1i(LOCATION_RESOLUTION, rsm_.rsmResolution);
   for (int layer = 0; layer < rsm_.views; ++layer) {
     beginRaster(rsmFramebuffers_[std::size_t(layer)], rsm_.rsmResolution, rsm_.rsmResolution, 3);
-    glUniformMatrix4fv(0, 1, GL_FALSE, &rsmClipFromWorld_[std::size_t(layer)][0][0]);
-    glUniform1i(2, layer);
+    glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE,
+                       &rsmClipFromWorld_[std::size_t(layer)][0][0]);
+    glUniform1i(LOCATION_VIEW_INDEX, layer);
     frame.scene->draw();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -166,14 +183,16 @@ void SubsurfaceRendering::inject(const Frame& frame) {
 }
 
 void SubsurfaceRendering::propagate() {
+  using namespace propagate_kernel;
   propagateProgram_.use();
-  glUniform3iv(0, 1, &grid_.geometry.resolution[0]);
-  glUniform1f(1, attenuation_);
-  grid_.accumulated.bindStorage(2);
+  glUniform3iv(LOCATION_RESOLUTION, 1, &grid_.geometry.resolution[0]);
+  glUniform1f(LOCATION_ATTENUATION, attenuation_);
+  grid_.accumulated.bindStorage(BUFFER_ACCUMULATED);
   for (int i = 0; i < iterations_; ++i) {
-    grid_.current.bindStorage(0);
-    scratch_.bindStorage(1);
-    dispatchCovering(grid_.geometry.resolution, glm::ivec3(4), GL_SHADER_STORAGE_BARRIER_BIT);
+    grid_.current.bindStorage(BUFFER_SOURCE);
+    scratch_.bindStorage(BUFFER_TARGET);
+    dispatchCovering(grid_.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
     std::swap(grid_.current, scratch_);
   }
 }
@@ -184,22 +203,23 @@ void SubsurfaceRendering::shade(Frame& frame) {
   beginRaster(*maskFramebuffer_, w, h, 1);
   maskProgram_.use();
   const glm::mat4 clip = cameraClipFromWorld(*frame.camera, w, h);
-  glUniformMatrix4fv(0, 1, GL_FALSE, &clip[0][0]);
-  translucency_.bindStorage(3);
+  glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clip[0][0]);
+  translucency_.bindStorage(translucency_kernel::BUFFER_TRANSLUCENCY);
   frame.scene->draw();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
+  using namespace render_kernel;
   const GridGeometry& g = grid_.geometry;
   renderProgram_.use();
-  glBindTextureUnit(0, frame.gbuffer.position.id());
-  glBindTextureUnit(1, frame.gbuffer.normal.id());
-  glBindTextureUnit(2, mask_.id());
-  grid_.accumulated.bindStorage(0);
-  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glUniform3fv(0, 1, &g.origin[0]);
-  glUniform1f(1, g.cellSize);
-  glUniform3iv(2, 1, &g.resolution[0]);
-  dispatchCovering({w, h, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+  glBindTextureUnit(UNIT_G_POSITION, frame.gbuffer.position.id());
+  glBindTextureUnit(UNIT_G_NORMAL, frame.gbuffer.normal.id());
+  glBindTextureUnit(UNIT_TRANSLUCENT_MASK, mask_.id());
+  grid_.accumulated.bindStorage(BUFFER_ACCUMULATED);
+  glBindImageTexture(IMAGE_INDIRECT, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUniform3fv(LOCATION_GRID_ORIGIN, 1, &g.origin[0]);
+  glUniform1f(LOCATION_CELL_SIZE, g.cellSize);
+  glUniform3iv(LOCATION_RESOLUTION, 1, &g.resolution[0]);
+  dispatchCovering({w, h, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_ALL_BARRIER_BITS);
 }
 
 void SubsurfaceRendering::render(Frame& frame) {

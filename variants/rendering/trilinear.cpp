@@ -44,35 +44,44 @@ void TrilinearKernelRendering::prepare(const StrategySetup& setup) {
                               SpecConstant::b(2, options_.specularAlbedo > 0.0f)});
 }
 
+namespace {
+namespace kernel {
+#include "shaders/rendering/trilinear_interface.glsl"
+}
+}  // namespace
+
 void TrilinearKernelRendering::render(Frame& frame) {
+  using namespace kernel;
   // The camera is needed only by the glossy march (the view direction).
   const glm::vec3 cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f);
   program_.use();
-  glBindTextureUnit(0, frame.gbuffer.position.id());
-  glBindTextureUnit(1, frame.gbuffer.normal.id());
-  glBindTextureUnit(2, frame.gbuffer.albedo.id());
-  glBindImageTexture(0, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glUniform1f(3, options_.normalOffsetCells);
-  glUniform1f(10, options_.scale);
+  glBindTextureUnit(UNIT_G_POSITION, frame.gbuffer.position.id());
+  glBindTextureUnit(UNIT_G_NORMAL, frame.gbuffer.normal.id());
+  glBindTextureUnit(UNIT_G_ALBEDO, frame.gbuffer.albedo.id());
+  glBindImageTexture(IMAGE_OUT_INDIRECT, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                     GL_RGBA32F);
+  glUniform1f(LOCATION_NORMAL_OFFSET_CELLS, options_.normalOffsetCells);
+  glUniform1f(LOCATION_INDIRECT_SCALE, options_.scale);
   // An option that is off is compiled out with its uniforms, which then must not be set.
-  if (options_.leakDamping > 0.0f) glUniform1f(4, options_.leakDamping);
+  if (options_.leakDamping > 0.0f) glUniform1f(LOCATION_LEAK_DAMPING_STRENGTH, options_.leakDamping);
   if (options_.specularAlbedo > 0.0f) {
-    glUniform3fv(5, 1, &cameraPosition[0]);
-    glUniform1f(6, options_.specularAlbedo);
-    glUniform1f(7, options_.phongExponent);
-    glUniform1f(8, options_.marchStepCells);
-    glUniform1i(9, options_.marchSamples);
+    glUniform3fv(LOCATION_CAMERA_POSITION, 1, &cameraPosition[0]);
+    glUniform1f(LOCATION_SPECULAR_ALBEDO, options_.specularAlbedo);
+    glUniform1f(LOCATION_PHONG_EXPONENT, options_.phongExponent);
+    glUniform1f(LOCATION_MARCH_STEP_CELLS, options_.marchStepCells);
+    glUniform1i(LOCATION_MARCH_SAMPLES, options_.marchSamples);
   }
   // One dispatch per cascade level, each adding its weighted share.
   const std::span<const LightGrid> levels = frame.renderedLevels();
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const GridGeometry& grid = levels[level].geometry;
-    levels[level].accumulated.bindStorage(0);
-    glUniform3fv(0, 1, &grid.origin[0]);
-    glUniform1f(1, grid.cellSize);
-    glUniform3iv(2, 1, &grid.resolution[0]);
+    levels[level].accumulated.bindStorage(BUFFER_ACCUMULATED);
+    glUniform3fv(LOCATION_GRID_ORIGIN, 1, &grid.origin[0]);
+    glUniform1f(LOCATION_CELL_SIZE, grid.cellSize);
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
     setCascadeBlendUniforms(frame, int(level));
-    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1}, {8, 8, 1}, GL_ALL_BARRIER_BITS);
+    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1},
+                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_ALL_BARRIER_BITS);
   }
 }
 
