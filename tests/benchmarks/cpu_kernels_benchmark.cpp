@@ -3,13 +3,17 @@
 // Standard gathering at SH orders 1-3, grids 32^3 and 64^3, on every CPU instruction set this
 // machine has, all cores. Reported per configuration: the median of 5 repetitions (after one
 // untimed warm-up iteration) of cell-iterations/s and of multiply-adds/s, counting the kernel's
-// arithmetic: per cell-iteration and channel, 6 neighbours x 5 faces x N multiply-adds for the
-// intensities towards the faces and 6 normals x N for the lobes, so 3 x 36N
-// (N = (order + 1)^2), the tables' zeros included.
+// own arithmetic (standardGatherMultiplyAdds per channel: the skipped zeros not counted).
+// And the machine's multiply-add peak per instruction set (fma_peak/...), all cores running
+// independent chains of vector multiply-adds, so a kernel's figure can be read as a fraction of
+// it (SSE2 has no fused multiply-add: there a multiply and an add count as one).
 
+#include <cstring>
 #include <random>
+#include <thread>
 
 #include <benchmark/benchmark.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/math/solid_angle.h"
 #include "variants/propagation/standard_cpu.h"
@@ -36,8 +40,49 @@ void standardGather(benchmark::State& state, const std::string& isa) {
   }
   const double cellIterations = double(cells) * double(state.iterations());
   state.counters["cell_it/s"] = benchmark::Counter(cellIterations, benchmark::Counter::kIsRate);
-  state.counters["madd/s"] = benchmark::Counter(cellIterations * 3 * 36 * table.coefficients,
-                                                benchmark::Counter::kIsRate);
+  state.counters["madd/s"] = benchmark::Counter(
+      cellIterations * 3 * standardGatherMultiplyAdds(table.coefficients), benchmark::Counter::kIsRate);
+}
+
+// `rounds` of kChains independent multiply-add chains on registers of `Bytes`: enough chains to
+// hide the latency of each, so the loop runs at the units' throughput. Returns the lanes' sum so
+// the work is not optimised away.
+constexpr int kChains = 12;
+template <int Bytes>
+[[gnu::always_inline]] inline float multiplyAddChains(long rounds) {
+  typedef float V __attribute__((vector_size(Bytes)));
+  V chain[kChains];
+  for (int c = 0; c < kChains; ++c) chain[c] = V{} + float(c);
+  const V scale = V{} + 0.999f, offset = V{} + 1e-3f;
+  for (long r = 0; r < rounds; ++r)
+#pragma GCC unroll 12
+    for (int c = 0; c < kChains; ++c) chain[c] = chain[c] * scale + offset;
+  float lanes[kChains * Bytes / 4];
+  std::memcpy(lanes, chain, sizeof chain);
+  float sum = 0.0f;
+  for (float lane : lanes) sum += lane;
+  return sum;
+}
+float chainsX86_64(long rounds) { return multiplyAddChains<16>(rounds); }
+__attribute__((target("arch=x86-64-v3"))) float chainsV3(long rounds) {
+  return multiplyAddChains<32>(rounds);
+}
+__attribute__((target("arch=x86-64-v4"))) float chainsV4(long rounds) {
+  return multiplyAddChains<64>(rounds);
+}
+
+void multiplyAddPeak(benchmark::State& state, const std::string& isa) {
+  const auto chains = isa == "x86-64-v4" ? chainsV4 : isa == "x86-64-v3" ? chainsV3 : chainsX86_64;
+  const int lanes = isa == "x86-64-v4" ? 16 : isa == "x86-64-v3" ? 8 : 4;
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  constexpr long kRounds = 1 << 22;
+  float sink = 0.0f;
+  for (auto _ : state) {
+    tbb::parallel_for(0, cores, [&](int) { benchmark::DoNotOptimize(chains(kRounds)); });
+    benchmark::DoNotOptimize(sink);
+  }
+  state.counters["madd/s"] = benchmark::Counter(
+      double(state.iterations()) * cores * kRounds * kChains * lanes, benchmark::Counter::kIsRate);
 }
 
 const bool registered = [] {
@@ -45,6 +90,12 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("standard_gather/" + isa).c_str(), standardGather, isa)
         ->ArgsProduct({{32, 64}, {1, 2, 3}})
         ->ArgNames({"res", "order"})
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond)
+        ->Repetitions(5)
+        ->ReportAggregatesOnly(true);
+  for (const std::string& isa : supportedCpuKernelInstructionSets())
+    benchmark::RegisterBenchmark(("fma_peak/" + isa).c_str(), multiplyAddPeak, isa)
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond)
         ->Repetitions(5)

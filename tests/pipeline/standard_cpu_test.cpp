@@ -134,6 +134,28 @@ TEST(StandardCpu, AnIsotropicSourceSendsOnItsWholeFlux) {
   EXPECT_NEAR(test::flux(afterOne, res) / injected, 1.0, 1e-6);  // float storage
 }
 
+// The kernel skips the SH products that vanish on axis-aligned faces, decided when it is
+// compiled: the multiply-adds it counts must be the tables' non-zero entries (the faces' and the
+// lobes'), computed independently from the shared GLSL, at every order. The one exception, kept
+// on purpose: at order 3, Y11 and Y13 carry a factor 5z^2 - 1, which is zero on the 8 side faces
+// whose direction (2, 0, 1) / sqrt(5) has z^2 = 1/5; that zero is a coincidence of rounding-free
+// arithmetic, too fragile to skip (a skipped product must be exactly zero).
+TEST(StandardCpu, TheKernelSkipsExactlyTheTablesZeros) {
+  for (int order = 1; order <= 3; ++order) {
+    const auto table = makeStandardFaceTable<double>(order, kFar, kSide);
+    int nonZero = 0;
+    for (int normal = 0; normal < 6; ++normal)
+      for (int k = 0; k < table.coefficients; ++k) {
+        nonZero += table.normalLobe[normal][k] != 0.0 ? 1 : 0;
+        for (int direction = 0; direction < 6; ++direction)
+          nonZero += table.scaledBasis[direction][normal][k] != 0.0 ? 1 : 0;
+      }
+    EXPECT_EQ(standardGatherMultiplyAdds(table.coefficients), nonZero + (order == 3 ? 8 : 0))
+        << "order " << order;
+    EXPECT_LT(nonZero, 36 * table.coefficients) << "order " << order;  // something is skipped
+  }
+}
+
 TEST(StandardCpu, BadSettingsAreErrorsAndTinyGridsStayFinite) {
   std::vector<float> one(12, 1.0f), next(12), accumulated(12);
   const auto table = makeStandardFaceTable<float>(1, kFar, kSide);

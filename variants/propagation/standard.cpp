@@ -134,15 +134,16 @@ public:
 
   // Per cell-iteration, with N coefficients per channel and 3 channels. Reads: the six
   // neighbours' 3N floats; writes: the cell's 3N; the accumulated grid's 3N read and written.
-  // Transfers: the CPU kernel sums fluxes per face normal, 30 faces x N for the intensities and
-  // 6 normals x N for the lobes per channel; the GL kernels do 30 faces x 2N per channel (their
-  // SH evaluations per face not counted). Scattering adds into its 6 neighbours atomically (6 x 3N
+  // Transfers: the CPU kernel sums fluxes per face normal and skips the SH terms that vanish on
+  // axis-aligned faces (standardGatherMultiplyAdds: 96 of 30 x 4 + 6 x 4 at order 1); the GL
+  // kernels do 30 faces x 2N per channel (their SH evaluations per face not counted). Scattering adds into its 6 neighbours atomically (6 x 3N
   // read-modify-writes instead of 3N writes). The GV reads its 8 corners (vec4) per cell and
   // interpolates 8 x 4 per face; bounces run every face twice.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const double n = shape.coefficients;
-    double madds = runsOnCpu(requirements) ? 3 * 36 * n : 3 * 30 * 2 * n;
+    double madds = runsOnCpu(requirements) ? 3.0 * standardGatherMultiplyAdds(shape.coefficients)
+                                           : 3 * 30 * 2 * n;
     double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
     if (requirements.has(kGeometryVolume)) {
       madds += 30 * 8 * 4;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -16,6 +18,38 @@ LPVLAB_SHARED_GLSL_BEGIN
 LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
+
+namespace {
+
+// Which SH basis functions vanish on the face directions the kernel uses, known when it is
+// compiled so that it skips their products. Each real SH basis function of sh.glsl up to order 3
+// is a product of some of the direction's components (requiredAxes(k): every one of them must be
+// non-zero), of x^2 - y^2 for k = 8 and 14 (anyOfAxes(k): one of x, y must be non-zero) and of a
+// factor that is not zero on these directions. Bits: 1 x, 2 y, 4 z. A face direction has
+// non-zero components only along the flow axis and, for a side face, along the face's normal, so
+// Y_k vanishes there when it needs another axis. makeStandardFaceTable checks every skipped
+// product against the shared GLSL (it must be exactly 0), so a change of sh.glsl or
+// standard_faces.glsl that breaks this is an error, not a wrong image.
+constexpr int requiredAxes(int k) {
+  constexpr int x = 1, y = 2, z = 4;
+  constexpr int axes[16] = {0, y, z, x, x | y, y | z, 0, x | z, 0, y, x | y | z, y, z, x, z, x};
+  return axes[k];
+}
+constexpr int anyOfAxes(int k) { return k == 8 || k == 14 ? 1 | 2 : 0; }
+constexpr int axisBit(int direction) { return 1 << (direction / 2); }
+// Y_k is not identically zero on directions with non-zero components exactly `present`.
+constexpr bool basisLivesOn(int k, int present) {
+  return (requiredAxes(k) & ~present) == 0 && (anyOfAxes(k) == 0 || (anyOfAxes(k) & present) != 0);
+}
+// The face of the target with `normal` receives light from neighbour `direction`.
+constexpr bool faceUsesBasis(int direction, int normal, int k) {
+  return normal != direction && basisLivesOn(k, axisBit(direction) | axisBit(normal));
+}
+// The clamped-cosine lobe about the axis `normal` uses Y_k.
+// (The clamped cosine has no band 3: shZonalCosine(3) = 0.)
+constexpr bool lobeUsesBasis(int normal, int k) { return k < 9 && basisLivesOn(k, axisBit(normal)); }
+
+}  // namespace
 
 template <class Real>
 StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
@@ -58,6 +92,15 @@ StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
         table.scaledBasis[direction][normal][k] = Real(omega * shared::shBasisAt(k, w));
     }
   }
+  // What the kernel skips must be exactly zero (see requiredAxes).
+  for (int direction = 0; direction < kDirections; ++direction)
+    for (int normal = 0; normal < kDirections; ++normal)
+      for (int k = 0; k < table.coefficients; ++k)
+        if ((!faceUsesBasis(direction, normal, k) && table.scaledBasis[direction][normal][k] != Real(0)) ||
+            (!lobeUsesBasis(normal, k) && table.normalLobe[normal][k] != Real(0)))
+          throw Error("standard propagation (CPU): SH coefficient " + std::to_string(k) +
+                      " is not zero where the kernel skips it (sh.glsl or standard_faces.glsl "
+                      "changed? see requiredAxes)");
   return table;
 }
 
@@ -66,85 +109,135 @@ template StandardFaceTable<double> makeStandardFaceTable<double>(int, double, do
 
 namespace {
 
-// What one cell of a target row receives, one channel: from each of the six neighbours (its
-// coefficients at from[d][k * plane + x], already offset to the neighbour's x), through the five
-// faces of this cell that neighbour's light enters, weighted by present[d] (0 for a neighbour
-// outside the grid, whose pointer then points at readable memory). The fluxes are summed per
-// face normal, then the six normals' lobes are added once. Written to `target` and added to
-// `accumulated`: each cell's coefficients are stored once per iteration.
-template <int N, class Real>
-[[gnu::always_inline]] inline void gatherCell(const StandardFaceTable<Real>& table,
-                                              const Real* const (&from)[6],
-                                              const Real (&present)[6], std::size_t plane, int x,
-                                              Real* target, Real* accumulated) {
-  Real fluxByNormal[6] = {};
+// Cells along x are computed a register at a time: a GCC vector (vector_size) of `Bytes`, the
+// width of the instruction set's registers (16 SSE, 32 AVX2, 64 AVX-512), so every cell is
+// computed with vector instructions. Rows are staged padded to a multiple of kRowPadding cells,
+// a whole number of registers at every width, so no cell falls to a scalar remainder loop.
+constexpr int kRowPadding = 16;
+template <class Real, int Bytes>
+struct RegisterOf {
+  typedef Real type __attribute__((vector_size(Bytes)));
+  static constexpr int kLanes = Bytes / int(sizeof(Real));
+};
+
+// What the cells of one register of a target row, starting at x, receive, one channel: from each
+// of the six neighbours (their rows, from[d][k * stride[d] + x]), through the five faces of a
+// cell that neighbour's light enters. The fluxes are summed per face normal, then the six
+// normals' lobes are added once, into out[k * width + x]; lanes are independent cells. Products
+// with a basis function that vanishes on the face (faceUsesBasis) or the lobe (lobeUsesBasis)
+// are skipped: the loops are unrolled, so the tests are resolved when compiling. A face's flux
+// is added as f = max(f + intensity, f), which is f + max(intensity, 0) with the sum folded into
+// the intensity's multiply-adds.
+template <int N, int Bytes, class Real>
+[[gnu::always_inline]] inline void gatherRegister(const StandardFaceTable<Real>& table,
+                                                  const Real* const (&from)[6],
+                                                  const std::size_t (&stride)[6], int width, int x,
+                                                  Real* out) {
+  using V = typename RegisterOf<Real, Bytes>::type;
+  V fluxByNormal[6] = {};
 #pragma GCC unroll 6
   for (int d = 0; d < 6; ++d) {
-    Real s[N];
+    V s[N];
 #pragma GCC unroll 16
-    for (int k = 0; k < N; ++k) s[k] = from[d][k * plane + x];
+    for (int k = 0; k < N; ++k) std::memcpy(&s[k], from[d] + k * stride[d] + x, sizeof(V));
 #pragma GCC unroll 6
     for (int normal = 0; normal < 6; ++normal) {
       if (normal == d) continue;  // the shared face receives nothing
-      Real intensity = Real(0);
+      V total = fluxByNormal[normal];
 #pragma GCC unroll 16
-      for (int k = 0; k < N; ++k) intensity += s[k] * table.scaledBasis[d][normal][k];
-      fluxByNormal[normal] += std::max(intensity, Real(0)) * present[d];
+      for (int k = 0; k < N; ++k)
+        if (faceUsesBasis(d, normal, k)) total += s[k] * table.scaledBasis[d][normal][k];
+      fluxByNormal[normal] = total > fluxByNormal[normal] ? total : fluxByNormal[normal];
     }
   }
 #pragma GCC unroll 16
   for (int k = 0; k < N; ++k) {
-    Real out = Real(0);
+    V sum = {};
 #pragma GCC unroll 6
-    for (int normal = 0; normal < 6; ++normal) out += fluxByNormal[normal] * table.normalLobe[normal][k];
-    target[k * plane + x] = out;
-    accumulated[k * plane + x] += out;
+    for (int normal = 0; normal < 6; ++normal)
+      if (lobeUsesBasis(normal, k)) sum += fluxByNormal[normal] * table.normalLobe[normal][k];
+    std::memcpy(out + k * width + x, &sum, sizeof sum);
   }
 }
 
-// Target rows [rowBegin, rowEnd) (row = y + res.y * z), every channel. The inner x loop is
-// straight-line code (every inner loop unrolled) and vectorises along x; `omp simd`
-// (-fopenmp-simd: no OpenMP runtime) asserts the rows don't alias. The two end cells of a row,
-// whose x neighbour lies outside, are done on their own.
-template <int N, class Real>
+// to[x] = computed[x] and sum[x] += computed[x] for the `cells` cells of a row, a register at a
+// time (the compiler cannot prove the three rows apart to vectorise the plain loop).
+template <int Bytes, class Real>
+[[gnu::always_inline]] inline void storeRow(const Real* computed, Real* to, Real* sum, int cells) {
+  using V = typename RegisterOf<Real, Bytes>::type;
+  constexpr int kLanes = RegisterOf<Real, Bytes>::kLanes;
+  int x = 0;
+  for (; x + kLanes <= cells; x += kLanes) {
+    V value, total;
+    std::memcpy(&value, computed + x, sizeof(V));
+    std::memcpy(&total, sum + x, sizeof(V));
+    total += value;
+    std::memcpy(to + x, &value, sizeof(V));
+    std::memcpy(sum + x, &total, sizeof(V));
+  }
+  for (; x < cells; ++x) {
+    to[x] = computed[x];
+    sum[x] += computed[x];
+  }
+}
+
+// Target rows [rowBegin, rowEnd) (row = y + res.y * z), every channel, a register of cells at a
+// time over the row padded to `width` cells (the cells past the row's end are computed and
+// dropped). Each neighbour row is read where it lies when the padding's reads stay inside the
+// grid; the two x neighbours are the row itself shifted by one cell, staged with a zero where the
+// shift leaves the grid, and a neighbour row outside the grid (or one whose padded read would
+// pass the grid's end) is read from a staged copy padded with zeros. A zero source sends
+// max(0, 0) = 0 through every face, so the loop needs no test for the grid's edges. Each target
+// cell is then stored once and added to `accumulated`.
+template <int N, int Bytes, class Real>
 [[gnu::always_inline]] inline void gatherRowsImpl(const StandardFaceTable<Real>& table,
                                                   const glm::ivec3& res, const Real* source,
                                                   Real* target, Real* accumulated, int rowBegin,
                                                   int rowEnd) {
   const std::size_t plane = std::size_t(res.x) * res.y * res.z;  // cells: one coefficient's span
+  const Real* const sourceEnd = source + 3 * N * plane;
+  const int width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
+  const std::size_t staged = std::size_t(N) * width;
+  // Per direction a staged row, whose cells outside [first, last) below stay zero: they are never
+  // written. And one row of zeros for the neighbours outside the grid.
+  std::vector<Real> stage(6 * staged, Real(0));
+  const std::vector<Real> zeros(staged, Real(0));
+  std::vector<Real> out(staged);
   for (int row = rowBegin; row < rowEnd; ++row) {
     const int y = row % res.y, z = row / res.y;
     const std::size_t base = std::size_t(row) * res.x;
     for (int channel = 0; channel < 3; ++channel) {
       const std::size_t channelBase = std::size_t(channel) * N * plane;
-      const Real* own = source + channelBase + base;
       const Real* from[6];
-      Real present[6];
+      std::size_t stride[6];
       for (int d = 0; d < 6; ++d) {
         const glm::ivec3 o = table.offset[d];
-        const bool inside = y + o.y >= 0 && y + o.y < res.y && z + o.z >= 0 && z + o.z < res.z;
-        present[d] = inside ? Real(1) : Real(0);
-        from[d] = inside ? source + channelBase + (std::size_t(z + o.z) * res.y + (y + o.y)) * res.x + o.x
-                         : own;
-      }
-      Real* to = target + channelBase + base;
-      Real* sum = accumulated + channelBase + base;
-#pragma omp simd
-      for (int x = 1; x < res.x - 1; ++x) gatherCell<N>(table, from, present, plane, x, to, sum);
-      // The row's ends (one cell when the row has one): an x neighbour outside the grid is
-      // read at the cell itself, weighted 0.
-      const int last = res.x - 1;
-      for (int x = 0; x <= last; x += std::max(last, 1)) {
-        const Real* edgeFrom[6];
-        Real edgePresent[6];
-        for (int d = 0; d < 6; ++d) {
-          const int nx = x + table.offset[d].x;
-          const bool inside = nx >= 0 && nx < res.x;
-          edgeFrom[d] = inside ? from[d] : own;
-          edgePresent[d] = inside ? present[d] : Real(0);
+        Real* copy = stage.data() + d * staged;
+        stride[d] = std::size_t(width);
+        if (y + o.y < 0 || y + o.y >= res.y || z + o.z < 0 || z + o.z >= res.z) {
+          from[d] = zeros.data();
+          continue;
         }
-        gatherCell<N>(table, edgeFrom, edgePresent, plane, x, to, sum);
+        from[d] = copy;
+        const Real* neighbourRow =
+            source + channelBase + (std::size_t(z + o.z) * res.y + (y + o.y)) * res.x;
+        if (o.x == 0 && neighbourRow + (N - 1) * plane + width <= sourceEnd) {
+          from[d] = neighbourRow;
+          stride[d] = plane;
+          continue;
+        }
+        // Cell x of the staged row is the neighbour's cell x + o.x, where that lies in the row.
+        const int first = std::max(0, -o.x), last = std::min(res.x, res.x - o.x);  // [first, last)
+        for (int k = 0; k < N; ++k)
+          std::copy(neighbourRow + k * plane + first + o.x, neighbourRow + k * plane + last + o.x,
+                    copy + std::size_t(k) * width + first);
       }
+      for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
+        gatherRegister<N, Bytes>(table, from, stride, width, x, out.data());
+      for (int k = 0; k < N; ++k)
+        storeRow<Bytes>(out.data() + std::size_t(k) * width,
+                        target + channelBase + k * plane + base,
+                        accumulated + channelBase + k * plane + base, res.x);
     }
   }
 }
@@ -153,16 +246,17 @@ template <class Real>
 using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*,
                               Real*, Real*, int, int);
 
-// The row loop compiled for each instruction set (the inlined body takes the function's target).
-#define LPVLAB_GATHER_ROWS(name, attributes)                                                    \
+// The row loop compiled for each instruction set with its register width (the inlined body takes
+// the function's target).
+#define LPVLAB_GATHER_ROWS(name, bytes, attributes)                                             \
   template <int N, class Real>                                                                  \
   attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,             \
                        const Real* source, Real* target, Real* accumulated, int begin, int end) { \
-    gatherRowsImpl<N>(table, res, source, target, accumulated, begin, end);                     \
+    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end);              \
   }
-LPVLAB_GATHER_ROWS(gatherRowsX86_64, )
-LPVLAB_GATHER_ROWS(gatherRowsV3, __attribute__((target("arch=x86-64-v3"))))
-LPVLAB_GATHER_ROWS(gatherRowsV4, __attribute__((target("arch=x86-64-v4"))))
+LPVLAB_GATHER_ROWS(gatherRowsX86_64, 16, )
+LPVLAB_GATHER_ROWS(gatherRowsV3, 32, __attribute__((target("arch=x86-64-v3"))))
+LPVLAB_GATHER_ROWS(gatherRowsV4, 64, __attribute__((target("arch=x86-64-v4"))))
 #undef LPVLAB_GATHER_ROWS
 
 bool cpuRunsKernel(const std::string& isa) {
@@ -193,6 +287,17 @@ const std::string& resolveIsa(const std::string& isa) {
 }
 
 }  // namespace
+
+int standardGatherMultiplyAdds(int coefficients) {
+  int count = 0;
+  for (int normal = 0; normal < 6; ++normal)
+    for (int k = 0; k < coefficients; ++k) {
+      count += lobeUsesBasis(normal, k) ? 1 : 0;
+      for (int direction = 0; direction < 6; ++direction)
+        count += faceUsesBasis(direction, normal, k) ? 1 : 0;
+    }
+  return count;
+}
 
 const std::vector<std::string>& cpuKernelInstructionSets() {
   static const std::vector<std::string> sets = {"x86-64", "x86-64-v3", "x86-64-v4"};

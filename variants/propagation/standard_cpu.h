@@ -6,11 +6,20 @@
 // One source of the mathematics: every number the kernel multiplies by comes from the shared
 // GLSL compiled as C++ (standard_faces.glsl: face directions, normals and solid angles;
 // sh.glsl: the SH basis and the clamped-cosine lobe), tabulated once per run in StandardFaceTable.
-// What the kernel adds is only the loop order and one factoring: every face a cell receives light
-// through has one of six normals (the axes), so the target's coefficients are
-//     sum over normals n of (sum of the fluxes of the faces with normal n) * lobe(n) / pi,
-// six lobes per cell instead of thirty. A row of cells along x is done at a time, all six
-// neighbours per cell, so the compiler vectorises along x and each target cell is written once. The grid layout is the GL kernels'
+// What the kernel adds is the loop order and three factorings, exact but for float rounding:
+//   - every face a cell receives light through has one of six normals (the axes), so the
+//     target's coefficients are sum over normals n of (the fluxes through faces with normal n) *
+//     lobe(n) / pi: six lobes per cell instead of thirty;
+//   - a face direction has non-zero components only along the flow axis and the face's normal,
+//     so the SH basis functions needing the third axis vanish there (and on the axis lobes); the
+//     kernel skips those products, knowing which when it is compiled, and the table builder checks
+//     that each skipped value is exactly zero in the shared GLSL;
+//   - a face's flux is added as f = max(f + intensity, f) = f + max(intensity, 0).
+// A row of cells along x is done a vector register at a time (GCC vector types, the register
+// width of the instruction set), all six neighbours per cell, so each target cell is written
+// once. Rows are padded to a multiple of 16 cells, the grid's edges are zero rows (a zero source
+// sends nothing), and the two x neighbours are the row itself staged shifted by a cell, so every
+// cell goes through the same vector code with no edge tests. The grid layout is the GL kernels'
 // (shaders/common/grid.glsl), so buffers move between the backends unchanged.
 //
 // Instruction sets: the row loop is compiled three times, for x86-64 (SSE2, any 64-bit x86),
@@ -48,6 +57,11 @@ struct StandardFaceTable {
 template <class Real>
 StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
                                               double sideSolidAngle);
+
+// The multiply-adds the kernel does per cell-iteration and channel with `coefficients` per
+// channel: the face products it does not skip plus the lobes' (each face's max and add not
+// counted).
+int standardGatherMultiplyAdds(int coefficients);
 
 // The CPU instruction sets the kernel is compiled for, narrowest first.
 const std::vector<std::string>& cpuKernelInstructionSets();
