@@ -7,6 +7,7 @@
 
 #include "framework/gl/resources.h"
 #include "framework/pipeline/geometry_volume.h"
+#include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/light_grid.h"
 #include "framework/pipeline/named_resources.h"
 
@@ -57,6 +58,7 @@ struct Frame {
   LightGrid& lightGrid;                 // the level being filled
   gl::Texture& indirect;                // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
   const ResourceTable* resources = nullptr;  // the level's resources (named_resources.h)
+  HostReadback* host = nullptr;  // the raster passes' images on the CPU, read once per frame
   std::span<LightGrid> levels;               // every level, finest first; empty: lightGrid alone
   float cascadeBlendCells = 0.0f;            // [cascades] blend_cells
 

@@ -127,6 +127,7 @@ Frame Pipeline::frame(int level) {
                .lightGrid = levels_[l],
                .indirect = indirectImage_,
                .resources = &resources_[l],
+               .host = &hostReadback_,
                .levels = levels_,
                .cascadeBlendCells = settings_.cascades.blendCells};
 }
@@ -166,6 +167,7 @@ void Pipeline::injectAll(int level) {
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
   const int levels = int(levels_.size());
+  hostReadback_.newFrame();
   stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
   stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });

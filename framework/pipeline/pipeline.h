@@ -24,6 +24,7 @@
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/cascade.h"
 #include "framework/pipeline/composition.h"
+#include "framework/pipeline/host_readback.h"
 
 namespace lpvlab {
 
@@ -118,6 +119,7 @@ private:
   gl::Texture directImage_, indirectImage_;
   GpuTimer gpuTimer_;
   std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
+  HostReadback hostReadback_;        // this frame's images read back for them
 };
 
 }  // namespace lpvlab

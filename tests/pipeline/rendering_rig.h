@@ -64,11 +64,13 @@ struct HandGrid {
 
 // Renders `pixels` (one row) with the strategy `type` and its [rendering] table `table`, from the
 // cascade `levels` (finest first, all with the same cell counts and SH order) blended over
-// `blendCells` cells; the output is zeroed first, as the pipeline does.
+// `blendCells` cells; the output is zeroed first, as the pipeline does. `backend` chooses where
+// the strategy runs (ComputeBackend::Cpu refuses one without a CPU kernel).
 inline std::vector<dvec3> renderPixels(const std::string& type, toml::table table,
                                        const std::vector<HandGrid>& levels,
                                        const std::vector<SurfacePixel>& pixels,
-                                       const glm::vec3& cameraPosition, float blendCells = 0.0f) {
+                                       const glm::vec3& cameraPosition, float blendCells = 0.0f,
+                                       ComputeBackend backend = ComputeBackend::Gl) {
   const HandGrid& grid = levels.front();
   test::glTestContext();
   table.insert_or_assign("type", type);
@@ -78,6 +80,7 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
   params.finish();
   Requirements requirements;
   requirements.shOrder = grid.order;
+  requirements.backend = backend;
   EXPECT_LE(grid.order, rendering->maxShOrder());
   ShaderCompiler shaders;
   rendering->prepare({.shaders = shaders, .grid = grid.geometry, .requirements = requirements});
@@ -112,9 +115,10 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
   const LightMaps noLightMaps;
   Camera camera;
   camera.position = cameraPosition;
+  HostReadback host;
   Frame frame{.camera = &camera, .gbuffer = gbuffer, .lightMaps = noLightMaps,
-              .lightGrid = lightGrids.front(), .indirect = indirect, .levels = lightGrids,
-              .cascadeBlendCells = blendCells};
+              .lightGrid = lightGrids.front(), .indirect = indirect, .host = &host,
+              .levels = lightGrids, .cascadeBlendCells = blendCells};
   rendering->render(frame);
   std::vector<float> out(std::size_t(w) * 4);
   glGetTextureImage(indirect.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)),

@@ -18,6 +18,7 @@
 
 #include "variants/rendering/trilinear_kernel.h"
 
+#include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/gl/dispatch.h"
 #include "framework/math/grid_geometry.h"
@@ -25,6 +26,7 @@
 #include "framework/pipeline/cascade.h"
 #include "framework/pipeline/frame.h"
 #include "framework/scene/scene.h"
+#include "variants/rendering/trilinear_cpu.h"
 
 namespace lpvlab {
 
@@ -36,8 +38,16 @@ TrilinearKernelOptions TrilinearKernelOptions::readDiffuse(Params& params) {
   return options;
 }
 
+std::string TrilinearKernelRendering::cpuRefusal(const Requirements&) const {
+  if (options_.specularAlbedo > 0.0f) return "the glossy march (specular_albedo > 0) has no CPU kernel yet";
+  return {};
+}
+
 void TrilinearKernelRendering::prepare(const StrategySetup& setup) {
   const Requirements& requirements = setup.requirements;
+  coefficients_ = shared::shCoefficientCount(requirements.shOrder);
+  onCpu_ = runsOnCpu(requirements);
+  if (onCpu_) return;
   program_ = setup.shaders.compute("rendering/trilinear.comp",
                              {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
                               SpecConstant::b(1, options_.leakDamping > 0.0f),
@@ -50,7 +60,35 @@ namespace kernel {
 }
 }  // namespace
 
+// The G-buffer comes from the frame's host copies (read back once per frame), each level's
+// accumulated grid from GL, and the indirect image is read, added to and written back, so that
+// strategies before and after this one (on either backend) keep their shares.
+void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
+  if (!frame.host) throw Error("rendering \"trilinear\" (CPU): the frame has no host images");
+  const std::span<const LightGrid> levels = frame.renderedLevels();
+  hostGrids_.resize(levels.size());
+  std::vector<TrilinearCpuLevel> cpuLevels;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    hostGrids_[level].resize(levels[level].floatsPerGrid());
+    levels[level].accumulated.download(hostGrids_[level].data(), hostGrids_[level].size() * sizeof(float));
+    cpuLevels.push_back({hostGrids_[level].data(), levels[level].geometry});
+  }
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  HostImage indirect = downloadImage(frame.indirect);
+  trilinearDiffuseCpu(frame.host->image(frame.gbuffer.position), frame.host->image(frame.gbuffer.normal),
+                      frame.host->image(frame.gbuffer.albedo), cpuLevels,
+                      {.coefficients = coefficients_,
+                       .normalOffsetCells = options_.normalOffsetCells,
+                       .leakDamping = options_.leakDamping,
+                       .scale = options_.scale,
+                       .blendCells = frame.cascadeBlendCells},
+                      indirect);
+  uploadImage(indirect, frame.indirect);
+}
+
 void TrilinearKernelRendering::render(Frame& frame) {
+  if (onCpu_) return renderOnCpu(frame);
   using namespace kernel;
   // The camera is needed only by the glossy march (the view direction).
   const glm::vec3 cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f);

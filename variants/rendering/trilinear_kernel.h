@@ -2,6 +2,10 @@
 // The rendering kernel shaders/rendering/trilinear.comp behind the strategies "trilinear" and
 // "glossy": one kernel whose options (leak damping, the glossy march) are specialisation
 // constants, so the trilinear sampling code exists once and a disabled option costs nothing.
+// On the CPU backend the diffuse light (without the glossy march) runs trilinear_cpu.h, which
+// calls the kernel's shared functions (shaders/rendering/trilinear_diffuse.glsl).
+
+#include <vector>
 
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/strategy.h"
@@ -31,6 +35,7 @@ public:
   explicit TrilinearKernelRendering(const TrilinearKernelOptions& options) : options_(options) {}
 
   int maxShOrder() const override { return 3; }
+  std::string cpuRefusal(const Requirements& requirements) const override;
   void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
   // Per pixel and level: the G-buffer's 3 texels (16 B each) and the output's read and write;
@@ -41,8 +46,13 @@ public:
                               const Requirements& requirements) const override;
 
 private:
+  void renderOnCpu(Frame& frame);
+
   TrilinearKernelOptions options_;
   Program program_;
+  bool onCpu_ = false;
+  int coefficients_ = 4;
+  std::vector<std::vector<float>> hostGrids_;  // on the CPU backend: each level's accumulated grid
 };
 
 }  // namespace lpvlab

@@ -1,0 +1,34 @@
+#include "framework/pipeline/host_readback.h"
+
+#include "framework/core/error.h"
+
+namespace lpvlab {
+
+HostImage downloadImage(const gl::Texture& texture) {
+  HostImage image;
+  image.width = texture.width();
+  image.height = texture.height();
+  image.texels.resize(std::size_t(image.width) * image.height);
+  glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
+                    GLsizei(image.texels.size() * sizeof(glm::vec4)), image.texels.data());
+  checkGl("reading an image back for the CPU backend");
+  return image;
+}
+
+void uploadImage(const HostImage& image, gl::Texture& texture) {
+  if (image.width != texture.width() || image.height != texture.height())
+    throw Error("CPU backend: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                " image cannot replace a " + std::to_string(texture.width()) + "x" +
+                std::to_string(texture.height()) + " texture");
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,
+                      image.texels.data());
+  checkGl("uploading an image from the CPU backend");
+}
+
+const HostImage& HostReadback::image(const gl::Texture& texture) {
+  auto it = images_.find(texture.id());
+  if (it == images_.end()) it = images_.emplace(texture.id(), downloadImage(texture)).first;
+  return it->second;
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,35 @@
+#pragma once
+// Images of a frame read back from GL to the CPU for strategies on the CPU backend: the raster
+// passes always run on GL, and each of their images is read at most once per frame, the first
+// time a CPU strategy asks for it. Texels are RGBA floats, bottom row first, as GL stores them.
+
+#include <map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "framework/gl/resources.h"
+
+namespace lpvlab {
+
+struct HostImage {
+  int width = 0, height = 0;
+  std::vector<glm::vec4> texels;  // texels[x + width * y], y = 0 the bottom row
+};
+
+// Level 0 of an RGBA32F texture, and back.
+HostImage downloadImage(const gl::Texture& texture);
+void uploadImage(const HostImage& image, gl::Texture& texture);
+
+class HostReadback {
+public:
+  // Forgets the last frame's copies (the pipeline calls it as a frame begins).
+  void newFrame() { images_.clear(); }
+  // The texture's texels this frame: read back on the first call of the frame.
+  const HostImage& image(const gl::Texture& texture);
+
+private:
+  std::map<unsigned, HostImage> images_;  // by GL texture name
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,107 @@
+#include "variants/rendering/trilinear_cpu.h"
+
+#include <string>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+
+// trilinear_diffuse.glsl reads the accumulated grid through gridCoefficient: here from the level
+// being rendered, copied cell by cell (the 3N coefficients of a cell together, so the 8 corners a
+// pixel reads are 8 short runs), set before each level's pass over the pixels and only read
+// during it.
+LPVLAB_SHARED_GLSL_BEGIN
+const float* gridCells = nullptr;
+real gridCoefficient(int channel, int k, int coefficients, int cell, int) {
+  return real(gridCells[(std::size_t(cell) * 3 + std::size_t(channel)) * std::size_t(coefficients) + std::size_t(k)]);
+}
+#include "shaders/common/cascade_fade.glsl"
+#include "shaders/rendering/trilinear_diffuse.glsl"
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+
+namespace blend_kernel {
+#include "shaders/common/cascade_blend_interface.glsl"
+}
+
+namespace {
+
+// cascade_blend.glsl's cascadeWeight: the level's fade (1 for the coarsest) times one minus the
+// fade of every finer level, at world position p.
+double cascadeWeight(const glm::dvec3& p, std::span<const TrilinearCpuLevel> levels, int current,
+                     double blendCells) {
+  const auto fade = [&](int level) {
+    const GridGeometry& g = levels[std::size_t(level)].geometry;
+    return shared::cascadeFade(shared::gridFromWorld(p, glm::dvec3(g.origin), double(g.cellSize)),
+                               g.resolution, blendCells);
+  };
+  double weight = current == int(levels.size()) - 1 ? 1.0 : fade(current);
+  for (int j = 0; j < current; ++j) weight *= 1.0 - fade(j);
+  return weight;
+}
+
+// One level's pass over the pixels with N coefficients per channel known when compiling, so the
+// shared functions' loops over the coefficients unroll once inlined here.
+template <int N>
+void addLevel(const HostImage& position, const HostImage& normal, const HostImage& albedo,
+              std::span<const TrilinearCpuLevel> levels, int current,
+              const TrilinearCpuSettings& settings, HostImage& indirect) {
+  const TrilinearCpuLevel& level = levels[std::size_t(current)];
+  const glm::dvec3 origin(level.geometry.origin);
+  const std::size_t cells = std::size_t(level.geometry.cellCount());
+  std::vector<float> byCell(cells * 3 * N);
+  for (int channel = 0; channel < 3; ++channel)
+    for (int k = 0; k < N; ++k)
+      for (std::size_t cell = 0; cell < cells; ++cell)
+        byCell[(cell * 3 + std::size_t(channel)) * N + std::size_t(k)] =
+            level.accumulated[(std::size_t(channel) * N + std::size_t(k)) * cells + cell];
+  shared::gridCells = byCell.data();
+  tbb::parallel_for(tbb::blocked_range<int>(0, position.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < position.width; ++x) {
+        const std::size_t i = std::size_t(y) * position.width + x;
+        const glm::vec4 p = position.texels[i];
+        if (p.w == 0.0f) continue;
+        const double weight = cascadeWeight(glm::dvec3(p), levels, current, settings.blendCells);
+        if (weight == 0.0) continue;
+        const glm::dvec3 radiance =
+            weight * shared::trilinearDiffuse(glm::dvec3(p), glm::dvec3(normal.texels[i]),
+                                              glm::dvec3(albedo.texels[i]), origin,
+                                              double(level.geometry.cellSize),
+                                              level.geometry.resolution, N,
+                                              double(settings.normalOffsetCells),
+                                              double(settings.leakDamping));
+        indirect.texels[i] += glm::vec4(glm::vec3(double(settings.scale) * radiance), float(weight));
+      }
+  });
+  shared::gridCells = nullptr;
+}
+
+}  // namespace
+
+void trilinearDiffuseCpu(const HostImage& position, const HostImage& normal,
+                         const HostImage& albedo, std::span<const TrilinearCpuLevel> levels,
+                         const TrilinearCpuSettings& settings, HostImage& indirect) {
+  for (const HostImage* image : {&normal, &albedo, static_cast<const HostImage*>(&indirect)})
+    if (image->width != position.width || image->height != position.height)
+      throw Error("trilinear rendering (CPU): the G-buffer and the output differ in size");
+  if (levels.size() > std::size_t(blend_kernel::CASCADE_MAX_LEVELS))
+    throw Error("trilinear rendering (CPU): at most " +
+                std::to_string(blend_kernel::CASCADE_MAX_LEVELS) + " levels can be rendered");
+  for (int current = 0; current < int(levels.size()); ++current) {
+    switch (settings.coefficients) {
+      case 4: addLevel<4>(position, normal, albedo, levels, current, settings, indirect); break;
+      case 9: addLevel<9>(position, normal, albedo, levels, current, settings, indirect); break;
+      case 16: addLevel<16>(position, normal, albedo, levels, current, settings, indirect); break;
+      default:
+        throw Error("trilinear rendering (CPU): " + std::to_string(settings.coefficients) +
+                    " SH coefficients per channel is not 4, 9 or 16");
+    }
+  }
+}
+
+}  // namespace lpvlab

@@ -1,0 +1,38 @@
+#pragma once
+// "trilinear" rendering's diffuse light on the CPU (the CPU backend, strategy.h): per G-buffer
+// pixel the functions of shaders/rendering/trilinear_diffuse.glsl compiled as C++ in double
+// precision (framework/math/shared.h), the very text the GL kernel runs, times the pixel's
+// cascade weight (cascade_fade.glsl, combined as cascade_blend.glsl does), added to the indirect
+// image as the GL kernel adds: rgb += scale * radiance, a += weight. Rows of pixels are shared out
+// by oneTBB and each pixel is written by one task, so the image does not depend on the thread
+// count. The glossy march has no CPU kernel.
+
+#include <span>
+
+#include "framework/math/grid_geometry.h"
+#include "framework/pipeline/host_readback.h"
+
+namespace lpvlab {
+
+// One cascade level (the only one without cascades): its accumulated grid (grid.glsl layout,
+// `coefficients` per channel) and its placement.
+struct TrilinearCpuLevel {
+  const float* accumulated = nullptr;
+  GridGeometry geometry;
+};
+
+struct TrilinearCpuSettings {
+  int coefficients = 4;          // SH coefficients per channel
+  float normalOffsetCells = 0.0f;
+  float leakDamping = 0.0f;      // 0: off
+  float scale = 1.0f;            // [rendering] scale
+  float blendCells = 0.0f;       // [cascades] blend_cells
+};
+
+// Adds every level's light to `indirect` at the pixels whose G-buffer `position` has w = 1.
+// Throws an Error for images of different sizes or more cascade levels than rendering blends.
+void trilinearDiffuseCpu(const HostImage& position, const HostImage& normal,
+                         const HostImage& albedo, std::span<const TrilinearCpuLevel> levels,
+                         const TrilinearCpuSettings& settings, HostImage& indirect);
+
+}  // namespace lpvlab
