@@ -1,5 +1,7 @@
 #include "framework/pipeline/host_readback.h"
 
+#include <algorithm>
+
 #include "framework/core/error.h"
 
 namespace lpvlab {
@@ -8,7 +10,8 @@ HostImage downloadImage(const gl::Texture& texture) {
   HostImage image;
   image.width = texture.width();
   image.height = texture.height();
-  image.texels.resize(std::size_t(image.width) * image.height);
+  image.layers = std::max(1, texture.depth());
+  image.texels.resize(std::size_t(image.width) * image.height * image.layers);
   glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
                     GLsizei(image.texels.size() * sizeof(glm::vec4)), image.texels.data());
   checkGl("reading an image back for the CPU backend");
@@ -16,7 +19,7 @@ HostImage downloadImage(const gl::Texture& texture) {
 }
 
 void uploadImage(const HostImage& image, gl::Texture& texture) {
-  if (image.width != texture.width() || image.height != texture.height())
+  if (image.width != texture.width() || image.height != texture.height() || image.layers != 1)
     throw Error("CPU backend: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                 " image cannot replace a " + std::to_string(texture.width()) + "x" +
                 std::to_string(texture.height()) + " texture");

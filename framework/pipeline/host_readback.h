@@ -14,10 +14,11 @@ namespace lpvlab {
 
 struct HostImage {
   int width = 0, height = 0;
-  std::vector<glm::vec4> texels;  // texels[x + width * y], y = 0 the bottom row
+  int layers = 1;                 // of an array texture
+  std::vector<glm::vec4> texels;  // texels[x + width * (y + height * layer)], y = 0 the bottom row
 };
 
-// Level 0 of an RGBA32F texture, and back.
+// Level 0 of an RGBA32F texture (every layer of an array texture), and back (2D only).
 HostImage downloadImage(const gl::Texture& texture);
 void uploadImage(const HostImage& image, gl::Texture& texture);
 

@@ -1,15 +1,11 @@
 #version 450
-// Injection of every RSM texel as a virtual point light (thesis eq. 4.1-4.3): a Lambertian VPL of
-// flux Phi and normal n has intensity I(w) = Phi / pi * max(0, n . w), whose coefficients
-// Phi / pi * cosLobe(n) (any SH order) are added (atomically) to the cell containing the texel's
-// position moved `shiftCells` cells along n (against self-illumination). Each texel's flux lands
-// whole in the grid: the sum over cells of the SH integral equals the RSM's total flux, less what
-// falls outside.
+// Injection of every RSM texel as a virtual point light (vpl.glsl: its cell and its coefficients,
+// any SH order), added atomically. Each texel's flux lands whole in the grid: the sum over cells
+// of the SH integral equals the RSM's total flux, less what falls outside.
 // With a normal grid (directed propagation), the flux-weighted normal, and the weight, are added
 // to the same cell: xyz = sum Phi n, w = sum Phi (Phi summed over RGB).
 #extension GL_EXT_shader_atomic_float : require
-#include "../common/sh.glsl"
-#include "../common/grid.glsl"
+#include "vpl.glsl"
 
 #include "rsm_vpl_interface.glsl"
 layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
@@ -34,13 +30,12 @@ void main() {
   vec4 flux = texelFetch(rsmFlux, texel, 0);
   if (flux.w == 0.0) return;
   vec3 n = texelFetch(rsmNormal, texel, 0).xyz;
-  vec3 p = texelFetch(rsmPosition, texel, 0).xyz + n * (shiftCells * cellSize);
-  ivec3 cell = cellContaining(gridFromWorld(p, gridOrigin, cellSize));
+  ivec3 cell = vplCell(texelFetch(rsmPosition, texel, 0).xyz, n, gridOrigin, cellSize, shiftCells);
   if (!cellInside(cell, resolution)) return;
   int cells = cellCount(resolution);
   int index = cellIndex(cell, resolution);
   for (int k = 0; k < SH_COEFFICIENTS; ++k) {
-    float lobe = shCosineLobeAt(k, n) / PI;
+    float lobe = vplLobeAt(k, n);
     for (int channel = 0; channel < 3; ++channel)
       atomicAdd(grid[coefficientIndex(channel, k, SH_COEFFICIENTS, index, cells)], flux[channel] * lobe);
   }

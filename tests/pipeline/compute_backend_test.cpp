@@ -3,8 +3,9 @@
 //      standard propagation on the CPU ("auto" on llvmpipe) and on GL, within float rounding;
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
 //      a strategy without a CPU kernel for its composition (here: with the GV) on GL;
-//   c. "cpu" refuses, naming the strategy and saying why, a composition with a strategy that has
-//      no CPU kernel, and an unknown backend is an error naming the key.
+//   c. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
+//      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
+//      the key.
 
 #include <cmath>
 #include <string>
@@ -78,10 +79,14 @@ TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelEx
 }
 
 TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {
-  const std::string message =
-      test::errorOf([] { loadExperiment("", {"compute.backend=\"cpu\""}); });
-  EXPECT_TRUE(test::contains(message, "[injection] type = \"rsm_vpl\" cannot run on the CPU backend"));
-  EXPECT_TRUE(test::contains(message, "no CPU kernel yet"));
+  // The default composition has CPU kernels throughout; the GV's occlusion has none yet.
+  EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\""}));
+  const std::string message = test::errorOf([] {
+    loadExperiment("", {"compute.backend=\"cpu\"", "occlusion.type=\"geometry_volume\""});
+  });
+  EXPECT_TRUE(test::contains(message, "[occlusion] type = \"geometry_volume\" cannot run on the CPU backend"))
+      << message;
+  EXPECT_TRUE(test::contains(message, "no CPU kernel yet")) << message;
   EXPECT_TRUE(test::contains(
       test::errorOf([] { loadExperiment("", {"compute.backend=\"vulkan\""}); }), "compute.backend"));
 }

@@ -1,19 +1,26 @@
 // Injection "rsm_vpl": every reflective-shadow-map texel becomes a virtual point light in the
 // light grid (thesis 4.3, eq. 4.1-4.3; kernel shaders/injection/rsm_vpl.comp), at any SH order.
 // It produces the normal grid: when a strategy consumes it (directed propagation), the VPLs'
-// normals go there too.
+// normals go there too. On the CPU backend it runs rsm_vpl_cpu.h (the same shared VPL
+// functions, shaders/injection/vpl.glsl, without atomics): the RSM is read back once per frame,
+// and the grid it adds to is read from GL and written back.
 //
 // | parameter | type  | default | meaning                                                       |
 // |-----------|-------|---------|---------------------------------------------------------------|
 // | shift     | float | 1.0     | move each VPL this many cells along its normal before         |
 // |           |       |         | choosing its cell (the thesis found half a cell too little)   |
 
+#include <string>
+#include <vector>
+
+#include "framework/core/error.h"
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/injection/rsm_vpl_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -29,6 +36,7 @@ public:
 
   int maxShOrder() const override { return 3; }
   void declare(ResourceUses& uses) const override { uses.produces(kNormalGrid); }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,
   // about a multiply-add each) and 3N products added atomically (read and write, 8 B each); the
@@ -42,6 +50,9 @@ public:
   }
 
   void prepare(const StrategySetup& setup) override {
+    coefficients_ = shared::shCoefficientCount(setup.requirements.shOrder);
+    onCpu_ = runsOnCpu(setup.requirements);
+    if (onCpu_) return;
     program_ = setup.shaders.compute(
         "injection/rsm_vpl.comp",
         {SpecConstant::i(0, shared::shCoefficientCount(setup.requirements.shOrder)),
@@ -49,6 +60,7 @@ public:
   }
 
   void inject(Frame& frame) override {
+    if (onCpu_) return injectOnCpu(frame);
     using namespace kernel;
     const LightMaps& maps = frame.lightMaps;
     const GridGeometry& grid = frame.lightGrid.geometry;
@@ -67,9 +79,37 @@ public:
                      {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
+  std::size_t memoryBytes() const override {
+    return (hostGrid_.size() + hostNormals_.size()) * sizeof(float);
+  }
+
 private:
+  void injectOnCpu(Frame& frame) {
+    if (!frame.host) throw Error("[injection] rsm_vpl (CPU): the frame has no host images");
+    const LightMaps& maps = frame.lightMaps;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    LightGrid& grid = frame.lightGrid;
+    hostGrid_.resize(grid.floatsPerGrid());
+    grid.current.download(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    NormalGrid* normals = frame.find(kNormalGrid);
+    if (normals) {
+      hostNormals_.resize(std::size_t(grid.geometry.cellCount()) * 4);
+      normals->normals.download(hostNormals_.data(), hostNormals_.size() * sizeof(float));
+    }
+    injectRsmVplsCpu({.position = &frame.host->image(maps.rsmPosition),
+                      .normal = &frame.host->image(maps.rsmNormal),
+                      .flux = &frame.host->image(maps.rsmFlux)},
+                     grid.geometry, coefficients_, shiftCells_, hostGrid_.data(),
+                     normals ? hostNormals_.data() : nullptr);
+    grid.current.upload(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    if (normals) normals->normals.upload(hostNormals_.data(), hostNormals_.size() * sizeof(float));
+  }
+
   float shiftCells_;
   Program program_;
+  bool onCpu_ = false;
+  int coefficients_ = 4;
+  std::vector<float> hostGrid_, hostNormals_;  // on the CPU backend
 };
 
 LPVLAB_REGISTER(InjectionStrategy, "rsm_vpl",

@@ -1,0 +1,78 @@
+#include "variants/injection/rsm_vpl_cpu.h"
+
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/injection/vpl.glsl"
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+
+void injectRsmVplsCpu(const RsmImages& rsm, const GridGeometry& grid, int coefficients,
+                      float shiftCells, float* coefficientsOut, float* normals) {
+  const std::size_t texels = rsm.position->texels.size();
+  if (rsm.normal->texels.size() != texels || rsm.flux->texels.size() != texels)
+    throw Error("RSM injection (CPU): the RSM's images differ in size");
+  if (coefficients < 1 || coefficients > 16)
+    throw Error("RSM injection (CPU): " + std::to_string(coefficients) + " SH coefficients per channel");
+  const int cells = grid.cellCount();
+  const glm::dvec3 origin(grid.origin);
+
+  // Each texel's cell, or -1 (not covered, or outside the grid).
+  std::vector<int> cellOf(texels, -1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, texels), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t t = r.begin(); t < r.end(); ++t) {
+      if (rsm.flux->texels[t].w == 0.0f) continue;
+      const glm::ivec3 cell = shared::vplCell(glm::dvec3(rsm.position->texels[t]),
+                                              glm::dvec3(rsm.normal->texels[t]), origin,
+                                              double(grid.cellSize), double(shiftCells));
+      if (shared::cellInside(cell, grid.resolution)) cellOf[t] = shared::cellIndex(cell, grid.resolution);
+    }
+  });
+
+  // The texels sorted by cell, in texel order within a cell: first[cell] .. first[cell + 1].
+  std::vector<std::size_t> first(std::size_t(cells) + 1, 0);
+  for (int cell : cellOf)
+    if (cell >= 0) ++first[std::size_t(cell) + 1];
+  for (int cell = 0; cell < cells; ++cell) first[std::size_t(cell) + 1] += first[std::size_t(cell)];
+  std::vector<std::size_t> next(first.begin(), first.end() - 1), order(first.back());
+  for (std::size_t t = 0; t < texels; ++t)
+    if (cellOf[t] >= 0) order[next[std::size_t(cellOf[t])]++] = t;
+
+  // Each cell sums its VPLs.
+  tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
+    std::vector<double> sum(std::size_t(3) * coefficients);
+    for (int cell = r.begin(); cell < r.end(); ++cell) {
+      const std::size_t begin = first[std::size_t(cell)], end = first[std::size_t(cell) + 1];
+      if (begin == end) continue;
+      std::fill(sum.begin(), sum.end(), 0.0);
+      glm::dvec4 normal(0.0);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t t = order[i];
+        const glm::dvec3 n(rsm.normal->texels[t]);
+        const glm::dvec3 phi(rsm.flux->texels[t]);
+        for (int k = 0; k < coefficients; ++k) {
+          const double lobe = shared::vplLobeAt(k, n);
+          for (int channel = 0; channel < 3; ++channel)
+            sum[std::size_t(channel) * coefficients + k] += phi[channel] * lobe;
+        }
+        const double weight = phi.x + phi.y + phi.z;
+        normal += glm::dvec4(weight * n, weight);
+      }
+      for (int channel = 0; channel < 3; ++channel)
+        for (int k = 0; k < coefficients; ++k)
+          coefficientsOut[shared::coefficientIndex(channel, k, coefficients, cell, cells)] +=
+              float(sum[std::size_t(channel) * coefficients + k]);
+      if (normals)
+        for (int c = 0; c < 4; ++c) normals[std::size_t(cell) * 4 + c] += float(normal[c]);
+    }
+  });
+}
+
+}  // namespace lpvlab
