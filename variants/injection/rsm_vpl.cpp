@@ -39,14 +39,16 @@ public:
   std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,
-  // about a multiply-add each) and 3N products added atomically (read and write, 8 B each); the
-  // cell from the shifted position (about 10); with the normal grid 4 more atomic adds.
+  // about a multiply-add each) and 3N products; the cell from the shifted position (about 10);
+  // with the normal grid 4 more sums. GL adds the products atomically (read and write, 8 B
+  // each); the CPU writes and reads the texel's cell and its place in the sort by cell
+  // (4 + 8 B, each twice) and sums in registers, each cell's total stored once (not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const double n = shape.coefficients;
     const double normals = requirements.has(kNormalGrid) ? 4.0 : 0.0;
-    return {{"VPL", shape.rsmTexels * shape.levels, 4 * n + 10 + normals,
-             3 * 16 + 8 * (3 * n + normals)}};
+    const double bytes = runsOnCpu(requirements) ? 3 * 16 + 2 * (4 + 8) : 3 * 16 + 8 * (3 * n + normals);
+    return {{"VPL", shape.rsmTexels * shape.levels, 4 * n + 10 + normals, bytes}};
   }
 
   void prepare(const StrategySetup& setup) override {
