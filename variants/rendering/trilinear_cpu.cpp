@@ -44,14 +44,37 @@ double cascadeWeight(const glm::dvec3& p, std::span<const TrilinearCpuLevel> lev
   return weight;
 }
 
-// One level's pass over the pixels with N coefficients per channel known when compiling, so the
-// shared functions' loops over the coefficients unroll once inlined here.
+// Row y of one level's pass. Everything it calls is inlined into it (flatten), so the shared
+// functions' loops over the N coefficients per channel, known when compiling, unroll.
+template <int N>
+[[gnu::flatten]] void shadeRow(const HostImage& position, const HostImage& normal,
+                               const HostImage& albedo, std::span<const TrilinearCpuLevel> levels,
+                               int current, const TrilinearCpuSettings& settings,
+                               HostImage& indirect, int y) {
+  const TrilinearCpuLevel& level = levels[std::size_t(current)];
+  const glm::dvec3 origin(level.geometry.origin);
+  for (int x = 0; x < position.width; ++x) {
+    const std::size_t i = std::size_t(y) * position.width + x;
+    const glm::vec4 p = position.texels[i];
+    if (p.w == 0.0f) continue;
+    const double weight = cascadeWeight(glm::dvec3(p), levels, current, settings.blendCells);
+    if (weight == 0.0) continue;
+    const glm::dvec3 radiance =
+        weight * shared::trilinearDiffuse(glm::dvec3(p), glm::dvec3(normal.texels[i]),
+                                          glm::dvec3(albedo.texels[i]), origin,
+                                          double(level.geometry.cellSize), level.geometry.resolution,
+                                          N, double(settings.normalOffsetCells),
+                                          double(settings.leakDamping));
+    indirect.texels[i] += glm::vec4(glm::vec3(double(settings.scale) * radiance), float(weight));
+  }
+}
+
+// One level's pass over the pixels, its grid first copied cell by cell.
 template <int N>
 void addLevel(const HostImage& position, const HostImage& normal, const HostImage& albedo,
               std::span<const TrilinearCpuLevel> levels, int current,
               const TrilinearCpuSettings& settings, HostImage& indirect) {
   const TrilinearCpuLevel& level = levels[std::size_t(current)];
-  const glm::dvec3 origin(level.geometry.origin);
   const std::size_t cells = std::size_t(level.geometry.cellCount());
   std::vector<float> byCell(cells * 3 * N);
   for (int channel = 0; channel < 3; ++channel)
@@ -62,21 +85,7 @@ void addLevel(const HostImage& position, const HostImage& normal, const HostImag
   shared::gridCells = byCell.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, position.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < position.width; ++x) {
-        const std::size_t i = std::size_t(y) * position.width + x;
-        const glm::vec4 p = position.texels[i];
-        if (p.w == 0.0f) continue;
-        const double weight = cascadeWeight(glm::dvec3(p), levels, current, settings.blendCells);
-        if (weight == 0.0) continue;
-        const glm::dvec3 radiance =
-            weight * shared::trilinearDiffuse(glm::dvec3(p), glm::dvec3(normal.texels[i]),
-                                              glm::dvec3(albedo.texels[i]), origin,
-                                              double(level.geometry.cellSize),
-                                              level.geometry.resolution, N,
-                                              double(settings.normalOffsetCells),
-                                              double(settings.leakDamping));
-        indirect.texels[i] += glm::vec4(glm::vec3(double(settings.scale) * radiance), float(weight));
-      }
+      shadeRow<N>(position, normal, albedo, levels, current, settings, indirect, y);
   });
   shared::gridCells = nullptr;
 }
