@@ -14,13 +14,56 @@ LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 
+namespace {
+
+// What the per-cell sums read and write.
+struct CellSums {
+  const RsmImages& rsm;
+  const std::vector<std::size_t>& order;  // texels sorted by cell
+  const std::vector<std::size_t>& first;  // cell c's texels: order[first[c] .. first[c + 1])
+  int cells;
+  float* coefficients;
+  float* normals;  // or null
+};
+
+// Cells [begin, end) add their VPLs, in texel order. Everything it calls is inlined (flatten), so
+// the shared lobe's loop over the N coefficients per channel, known when compiling, unrolls.
+template <int N>
+[[gnu::flatten]] void sumCells(const CellSums& s, int begin, int end) {
+  for (int cell = begin; cell < end; ++cell) {
+    const std::size_t from = s.first[std::size_t(cell)], to = s.first[std::size_t(cell) + 1];
+    if (from == to) continue;
+    double sum[3][N] = {};
+    glm::dvec4 normal(0.0);
+    for (std::size_t i = from; i < to; ++i) {
+      const std::size_t t = s.order[i];
+      const glm::dvec3 n(s.rsm.normal->texels[t]);
+      const glm::dvec3 phi(s.rsm.flux->texels[t]);
+      for (int k = 0; k < N; ++k) {
+        const double lobe = shared::vplLobeAt(k, n);
+        for (int channel = 0; channel < 3; ++channel) sum[channel][k] += phi[channel] * lobe;
+      }
+      const double weight = phi.x + phi.y + phi.z;
+      normal += glm::dvec4(weight * n, weight);
+    }
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < N; ++k)
+        s.coefficients[shared::coefficientIndex(channel, k, N, cell, s.cells)] += float(sum[channel][k]);
+    if (s.normals)
+      for (int c = 0; c < 4; ++c) s.normals[std::size_t(cell) * 4 + c] += float(normal[c]);
+  }
+}
+
+}  // namespace
+
 void injectRsmVplsCpu(const RsmImages& rsm, const GridGeometry& grid, int coefficients,
                       float shiftCells, float* coefficientsOut, float* normals) {
   const std::size_t texels = rsm.position->texels.size();
   if (rsm.normal->texels.size() != texels || rsm.flux->texels.size() != texels)
     throw Error("RSM injection (CPU): the RSM's images differ in size");
-  if (coefficients < 1 || coefficients > 16)
-    throw Error("RSM injection (CPU): " + std::to_string(coefficients) + " SH coefficients per channel");
+  if (coefficients != 4 && coefficients != 9 && coefficients != 16)
+    throw Error("RSM injection (CPU): " + std::to_string(coefficients) +
+                " SH coefficients per channel is not 4, 9 or 16");
   const int cells = grid.cellCount();
   const glm::dvec3 origin(grid.origin);
 
@@ -46,31 +89,12 @@ void injectRsmVplsCpu(const RsmImages& rsm, const GridGeometry& grid, int coeffi
     if (cellOf[t] >= 0) order[next[std::size_t(cellOf[t])]++] = t;
 
   // Each cell sums its VPLs.
+  const CellSums sums{rsm, order, first, cells, coefficientsOut, normals};
   tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
-    std::vector<double> sum(std::size_t(3) * coefficients);
-    for (int cell = r.begin(); cell < r.end(); ++cell) {
-      const std::size_t begin = first[std::size_t(cell)], end = first[std::size_t(cell) + 1];
-      if (begin == end) continue;
-      std::fill(sum.begin(), sum.end(), 0.0);
-      glm::dvec4 normal(0.0);
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t t = order[i];
-        const glm::dvec3 n(rsm.normal->texels[t]);
-        const glm::dvec3 phi(rsm.flux->texels[t]);
-        for (int k = 0; k < coefficients; ++k) {
-          const double lobe = shared::vplLobeAt(k, n);
-          for (int channel = 0; channel < 3; ++channel)
-            sum[std::size_t(channel) * coefficients + k] += phi[channel] * lobe;
-        }
-        const double weight = phi.x + phi.y + phi.z;
-        normal += glm::dvec4(weight * n, weight);
-      }
-      for (int channel = 0; channel < 3; ++channel)
-        for (int k = 0; k < coefficients; ++k)
-          coefficientsOut[shared::coefficientIndex(channel, k, coefficients, cell, cells)] +=
-              float(sum[std::size_t(channel) * coefficients + k]);
-      if (normals)
-        for (int c = 0; c < 4; ++c) normals[std::size_t(cell) * 4 + c] += float(normal[c]);
+    switch (coefficients) {
+      case 4: return sumCells<4>(sums, r.begin(), r.end());
+      case 9: return sumCells<9>(sums, r.begin(), r.end());
+      default: return sumCells<16>(sums, r.begin(), r.end());
     }
   });
 }
