@@ -1,0 +1,97 @@
+// The shipped experiments on the CPU backend (issue 13's "done when"): the first configuration of
+// every file in experiments/, made small, either is refused by `[compute] backend = "cpu"` with a
+// strategy named (one without a CPU kernel yet), or renders the same images as on GL, within
+// float rounding (or is a file for the path tracer alone, whose scene has no LPV light). Prints which run and which are refused, and why: the CPU backend's coverage.
+// The default experiment must run.
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/core/error.h"
+#include "framework/experiment/experiment.h"
+#include "framework/experiment/sweep.h"
+#include "framework/pipeline/pipeline.h"
+#include "io/temp_dir.h"
+#include "pipeline_test_support.h"
+
+namespace lpvlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kSmall = {
+    "output.width=48", "output.height=48", "light_maps.rsm_resolution=32",
+    "light_maps.shadow_resolution=128", "timing.warmup=0", "timing.repeats=1"};
+
+Image combined(const std::string& file, const std::string& backend) {
+  std::vector<std::string> overrides = kSmall;
+  overrides.push_back("compute.backend=\"" + backend + "\"");
+  Experiment e = loadExperiment(file, overrides);
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  pipeline.renderFrame();
+  return findAov(pipeline.readOutputs(), "combined");
+}
+
+TEST(ShippedOnCpu, EachShippedExperimentRunsOnTheCpuAsOnGlOrIsRefusedByName) {
+  test::glTestContext();
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(LPVLAB_SOURCE_DIR) / "experiments"))
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  test::TempDir dir;
+  std::vector<std::string> ran, refused;
+  for (const fs::path& file : files) {
+    SCOPED_TRACE(file.filename().string());
+    const std::vector<SweepConfiguration> sweep = expandSweep(file.string());
+    ASSERT_FALSE(sweep.empty());
+    const fs::path first = dir.path() / (file.stem().string() + ".toml");
+    std::ofstream(first) << configurationToml(file.string(), sweep.front());
+    try {
+      loadExperiment(first.string(), {"compute.backend=\"cpu\""});
+    } catch (const Error& error) {
+      const std::string why = error.what();
+      EXPECT_NE(why.find("cannot run on the CPU backend"), std::string::npos) << why;
+      const std::size_t strategy = why.find(": [");  // past the temporary file's name
+      const std::size_t end = why.find(" ([compute]");
+      refused.push_back(file.filename().string() +
+                        why.substr(strategy == std::string::npos ? 0 : strategy, end - strategy));
+      continue;
+    }
+    Image cpu, gl;
+    try {
+      cpu = combined(first.string(), "cpu");
+      gl = combined(first.string(), "gl");
+    } catch (const Error& error) {  // a file for the path tracer alone: no LPV light
+      const std::string why = error.what();
+      EXPECT_NE(why.find("no light the LPV pipeline can use"), std::string::npos) << why;
+      refused.push_back(file.filename().string() + ": not an LPV experiment (no LPV light)");
+      continue;
+    }
+    ASSERT_EQ(cpu.pixels.size(), gl.pixels.size());
+    double largest = 0.0, scale = 0.0;
+    for (std::size_t i = 0; i < cpu.pixels.size(); ++i) {
+      largest = std::max(largest, double(std::abs(cpu.pixels[i] - gl.pixels[i])));
+      scale = std::max(scale, double(std::abs(gl.pixels[i])));
+    }
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LT(largest, 1e-4 * scale);
+    ran.push_back(file.filename().string());
+  }
+  std::cout << "[ cpu backend ] " << ran.size() << " of " << files.size()
+            << " shipped experiments (first configuration) run on the CPU backend:";
+  for (const std::string& name : ran) std::cout << " " << name;
+  std::cout << "\n[ cpu backend ] refused:\n";
+  for (const std::string& why : refused) std::cout << "  " << why << "\n";
+  EXPECT_NE(std::find(ran.begin(), ran.end(), "cornell_box.toml"), ran.end());
+}
+
+}  // namespace
+}  // namespace lpvlab
