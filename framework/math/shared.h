@@ -32,6 +32,7 @@ using real = double;
 using vec2 = glm::dvec2;
 using vec3 = glm::dvec3;
 using vec4 = glm::dvec4;
+using ivec2 = glm::ivec2;
 using ivec3 = glm::ivec3;
 using glm::abs;
 using glm::clamp;

@@ -5,7 +5,6 @@
 // sky_columns.glsl). Texels that meet no surface inside the grid inject nothing: that light
 // leaves through the grid's bottom without lighting anything.
 #extension GL_EXT_shader_atomic_float : require
-#include "../common/grid.glsl"
 #include "sky_columns.glsl"
 
 #include "sky_columns_interface.glsl"
@@ -27,12 +26,7 @@ void main() {
   if (texel.x >= size.x || texel.y >= size.y) return;
   float depth = texelFetch(skyDepth, texel, 0).r;
   if (depth >= 1.0) return;
-  vec3 extent = vec3(resolution) * cellSize;
-  float surfaceY = skySurfaceHeight(depth, gridOrigin.y + extent.y, extent.y);
-  // Texel (i, j) is the column over x in [i, i+1) and z in [j, j+1) texel widths.
-  ivec3 cell = ivec3((texel.x * resolution.x) / size.x,
-                     skyInjectionLayer(surfaceY, shiftCells, gridOrigin.y, cellSize, resolution.y),
-                     (texel.y * resolution.z) / size.y);
+  ivec3 cell = skyColumnCell(texel, size, depth, gridOrigin, cellSize, resolution, shiftCells);
   int cells = cellCount(resolution);
   int index = cellIndex(cell, resolution);
   for (int k = 0; k < SH_COEFFICIENTS; ++k) {

@@ -1,5 +1,6 @@
 // Sky light injected column by column (injection "sky_columns", thesis 5.3 and 6.9.4), shared by
-// the kernel shaders/injection/sky_columns.comp and the double-precision C++ of the tests.
+// the kernel shaders/injection/sky_columns.comp, the CPU kernel
+// (variants/injection/sky_columns_cpu.cpp) and the double-precision C++ of the tests.
 //
 // A top-down orthographic depth map covers the grid's xz extent; its near plane is the grid's top
 // face, its far plane the bottom face, so a texel's depth d in [0, 1] is the first surface below
@@ -17,16 +18,35 @@
 #ifndef LPVLAB_SKY_COLUMNS_GLSL
 #define LPVLAB_SKY_COLUMNS_GLSL
 #include "../common/sh.glsl"
+#include "../common/grid.glsl"
 
 // Height (world y) of the first surface below the grid's top at depth-map depth `depth`.
 real skySurfaceHeight(real depth, real gridTop, real gridHeight) {
   return gridTop - depth * gridHeight;
 }
 
+// A surface this close below a layer boundary (in cells) counts as on it. Surfaces often lie
+// exactly on a boundary (a grid fitted to the scene with a whole number of margin cells puts the
+// floor on one), where float (GL) and double (CPU, tests) arithmetic would otherwise round to
+// different layers.
+const real SKY_LAYER_TOLERANCE = 1e-4;
+
 // The layer (grid y index) that receives the light falling on a surface at height `surfaceY`.
 int skyInjectionLayer(real surfaceY, real shiftCells, real gridOriginY, real cellSize, int layers) {
-  int layer = int(floor((surfaceY - gridOriginY) / cellSize + shiftCells));
+  int layer = int(floor((surfaceY - gridOriginY) / cellSize + shiftCells + SKY_LAYER_TOLERANCE));
   return clamp(layer, 0, layers - 1);
+}
+
+// The cell that depth-map texel `texel` (of a `size` map covering the grid's xz extent) lights,
+// for the first surface at depth `depth` (< 1) below the grid's top: texel (i, j) is the column
+// over x in [i, i+1) and z in [j, j+1) texel widths.
+ivec3 skyColumnCell(ivec2 texel, ivec2 size, real depth, vec3 gridOrigin, real cellSize,
+                    ivec3 resolution, real shiftCells) {
+  real height = real(resolution.y) * cellSize;
+  real surfaceY = skySurfaceHeight(depth, gridOrigin.y + height, height);
+  return ivec3((texel.x * resolution.x) / size.x,
+               skyInjectionLayer(surfaceY, shiftCells, gridOrigin.y, cellSize, resolution.y),
+               (texel.y * resolution.z) / size.y);
 }
 
 // Coefficient k of I(w) = max(0, -y . w): the downward Lambertian lobe per unit of L a.

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <toml++/toml.h>
 
 #include "framework/core/error.h"
@@ -66,7 +67,8 @@ const GridGeometry kGrid{glm::vec3(-0.1f), 0.1f, glm::ivec3(10, 6, 8)};
 // sky_columns created as an experiment creates it, injecting into its own light grid.
 class SkyRig {
 public:
-  SkyRig(const Scene& scene, int shOrder, int texelsPerCell = 4, float shift = 1.0f)
+  SkyRig(const Scene& scene, int shOrder, int texelsPerCell = 4, float shift = 1.0f,
+         ComputeBackend backend = ComputeBackend::Gl)
       : scene_(scene) {
     table_.insert("type", "sky_columns");
     table_.insert("texels_per_cell", texelsPerCell);
@@ -75,6 +77,7 @@ public:
     strategy_ = Registry<InjectionStrategy>::instance().create(params, "rsm_vpl");
     params.finish();
     requirements_ = test::standInRequirements(*strategy_, shOrder, {std::string(kSkyLight.name)});
+    requirements_.backend = backend;
     EXPECT_TRUE(requirements_.has(kSkyLight));
     EXPECT_GE(strategy_->maxShOrder(), shOrder);
     grid_ = LightGrid(kGrid, shOrder);
@@ -241,6 +244,32 @@ TEST(SkyInjection, GpuGridMatchesRayCastColumnsInDoublePrecision) {
             << "texels_per_cell " << texels << ", shift " << shift << ", grid index " << i;
     }
   }
+}
+
+// The CPU backend's kernel (sky_columns_cpu.h) against the same ray-cast model, at every order,
+// and its grid bit for bit across thread counts.
+TEST(SkyInjection, CpuGridMatchesRayCastColumnsAndDoesNotDependOnTheThreadCount) {
+  const Scene scene = sceneOf({{-0.04f, 0.87f, -0.06f, 0.66f, -0.07f},
+                               {0.112f, 0.388f, 0.09f, 0.51f, 0.17f},
+                               {0.52f, 0.77f, 0.33f, 0.64f, 0.255f}});
+  const glm::vec3 sky(0.7f, 1.3f, 0.2f);
+  for (int order = 1; order <= 3; ++order)
+    for (const float shift : {0.0f, 1.0f, 2.5f}) {
+      SkyRig rig(scene, order, 3, shift, ComputeBackend::Cpu);
+      const Grid onCpu = rig.inject(sky);
+      const Grid model = raycastInjection(scene, glm::dvec3(sky), 3, shift, rig.coefficients());
+      double largest = 0.0;
+      for (float v : model) largest = std::max(largest, double(std::abs(v)));
+      ASSERT_GT(largest, 0.0);
+      for (std::size_t i = 0; i < onCpu.size(); ++i)
+        ASSERT_NEAR(onCpu[i], model[i], 1e-5 * largest) << "order " << order << " shift " << shift;
+      Grid single;
+      {
+        const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+        single = rig.inject(sky);
+      }
+      EXPECT_EQ(single, onCpu);
+    }
 }
 
 TEST(SkyInjection, DimAndBrightSkiesStayFiniteAndProportional) {

@@ -4,7 +4,9 @@
 // first surface; the flux pi L a through the texel's open top (a its area) is added to the cell
 // above that surface as a downward Lambertian lobe (shaders/injection/sky_columns.glsl), at any
 // SH order. Geometry above the grid's top and light entering through the grid's sides are
-// ignored. Meant for [[injection.also]] beside the RSM injection.
+// ignored. Meant for [[injection.also]] beside the RSM injection. On the CPU backend the depth
+// map is still rasterised by GL, read back, and injected by sky_columns_cpu.h (the same shared
+// functions).
 //
 // | parameter       | type  | default | meaning                                                 |
 // |-----------------|-------|---------|---------------------------------------------------------|
@@ -25,6 +27,7 @@
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/sky_light.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/injection/sky_columns_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -57,12 +60,15 @@ public:
         shiftCells_(params.get<float>("shift", 1.0f, {.min = 0.0f, .max = 4.0f})) {}
 
   void declare(ResourceUses& uses) const override { uses.produces(kSkyLight); }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
   int maxShOrder() const override { return 3; }
 
   void prepare(const StrategySetup& setup) override {
     ShaderCompiler& shaders = setup.shaders;
     const GridGeometry& grid = setup.grid;
     skyRadiance_ = setup.skyRadiance;
+    coefficients_ = shared::shCoefficientCount(setup.requirements.shOrder);
+    onCpu_ = runsOnCpu(setup.requirements);
     depthProgram_ = shaders.graphics("raster/scene.vert", "raster/shadow.frag");
     injectProgram_ = shaders.compute(
         "injection/sky_columns.comp",
@@ -85,7 +91,9 @@ public:
     clipFromWorld_ = skyClipFromWorld(grid);
   }
 
-  std::size_t memoryBytes() const override { return depth_.bytes(); }
+  std::size_t memoryBytes() const override {
+    return depth_.bytes() + (hostDepth_.size() + hostGrid_.size()) * sizeof(float);
+  }
 
   void inject(Frame& frame) override {
     if (!glm::any(glm::greaterThan(skyRadiance_, glm::vec3(0.0f)))) return;
@@ -94,6 +102,7 @@ public:
     const GridGeometry& grid = frame.lightGrid.geometry;
     const float texelSize = grid.cellSize / float(texelsPerCell_);
     const glm::vec3 perTexel = skyRadiance_ * (texelSize * texelSize);  // L a, W/sr
+    if (onCpu_) return injectOnCpu(frame.lightGrid, perTexel);
     using namespace kernel;
     injectProgram_.use();
     glBindTextureUnit(UNIT_SKY_DEPTH, depth_.id());
@@ -108,6 +117,19 @@ public:
   }
 
 private:
+  // The depth map read back, the grid read from GL, added to and written back.
+  void injectOnCpu(LightGrid& grid, const glm::vec3& perTexel) {
+    hostDepth_.resize(std::size_t(width_) * height_);
+    glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      GLsizei(hostDepth_.size() * sizeof(float)), hostDepth_.data());
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    hostGrid_.resize(grid.floatsPerGrid());
+    grid.current.download(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    injectSkyColumnsCpu(hostDepth_, width_, height_, grid.geometry, coefficients_, shiftCells_,
+                        perTexel, hostGrid_.data());
+    grid.current.upload(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+  }
+
   void renderDepth(const SceneGpu& scene) {
     beginRaster(*framebuffer_, width_, height_, 0);
     depthProgram_.use();
@@ -120,6 +142,9 @@ private:
   int texelsPerCell_;
   float shiftCells_;
   glm::vec3 skyRadiance_{0.0f};  // the run's [sky] radiance, W/(m^2 sr)
+  int coefficients_ = 4;
+  bool onCpu_ = false;
+  std::vector<float> hostDepth_, hostGrid_;  // on the CPU backend
   int width_ = 0, height_ = 0;
   glm::mat4 clipFromWorld_{1.0f};
   Program depthProgram_, injectProgram_;
