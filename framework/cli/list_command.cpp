@@ -26,8 +26,9 @@ std::string resourceLine(const ResourceUses& uses) {
 }  // namespace
 
 // The strategies of each stage in pipeline order, with the resources each produces and consumes
-// (named_resources.h) with its default parameters; their parameters are documented in the
-// header of variants/<stage>/<name>.cpp and in docs/variants.md.
+// (named_resources.h) and whether it has a CPU kernel ([compute] backend), with its default
+// parameters; their parameters are documented in the header of variants/<stage>/<name>.cpp and in
+// docs/variants.md.
 int listCommand() {
   std::string stage;
   for (const CatalogueEntry& entry : strategyCatalogue()) {
@@ -35,6 +36,8 @@ int listCommand() {
     std::cout << "  " << entry.name << ": " << entry.description << "\n";
     if (const std::string resources = resourceLine(entry.uses); !resources.empty())
       std::cout << "      (" << resources << ")\n";
+    std::cout << "      (CPU backend: "
+              << (entry.cpuRefusal.empty() ? "yes" : "no, " + entry.cpuRefusal) << ")\n";
   }
   return 0;
 }

@@ -14,8 +14,12 @@ void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
   for (const auto& [name, entry] : Registry<Interface>::instance().entries()) {
     const toml::table defaults;
     Params params(defaults, "the strategy catalogue", stage);
-    CatalogueEntry item{stage, name, entry.description, {}};
-    entry.factory(params)->declare(item.uses);
+    CatalogueEntry item{stage, name, entry.description, {}, {}};
+    const auto strategy = entry.factory(params);
+    strategy->declare(item.uses);
+    Requirements alone;  // order 1, one level, no resources from other strategies
+    alone.backend = ComputeBackend::Cpu;
+    item.cpuRefusal = strategy->cpuRefusal(alone);
     out.push_back(std::move(item));
   }
 }

@@ -15,6 +15,7 @@ struct CatalogueEntry {
   std::string name;   // the registered name ([<stage>] type = "<name>")
   std::string description;
   ResourceUses uses;  // with the default parameters (a parameter may change them)
+  std::string cpuRefusal;  // why it has no CPU kernel with its defaults alone, or "" if it has one
 };
 
 // In pipeline order, each stage's strategies by name.

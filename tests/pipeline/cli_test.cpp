@@ -160,6 +160,14 @@ TEST_F(Cli, ListNamesEveryStageAndItsStrategies) {
                                "geometry_volume:", "standard:", "directed:", "tetrahedral:",
                                "trilinear:", "glossy:"})
     EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " missing from:\n" << r.out;
+  // Whether each has a CPU kernel: standard gathering does, the tetrahedral lattice not yet.
+  const std::size_t standard = r.out.find("standard:"), tetrahedral = r.out.find("tetrahedral:");
+  ASSERT_LT(standard, tetrahedral);
+  const std::string standardEntry = r.out.substr(standard, tetrahedral - standard);
+  const std::string tetrahedralEntry = r.out.substr(tetrahedral, r.out.find("[rendering]") - tetrahedral);
+  EXPECT_NE(standardEntry.find("(CPU backend: yes)"), std::string::npos) << standardEntry;
+  EXPECT_NE(tetrahedralEntry.find("(CPU backend: no, it has no CPU kernel yet)"), std::string::npos)
+      << tetrahedralEntry;
 }
 
 TEST_F(Cli, RunAndBenchSayWhereTheKernelsRan) {
