@@ -19,7 +19,8 @@ void listStage(const std::string& stage, const std::vector<std::unique_ptr<S>>& 
                      strategies[i].get());
 }
 
-std::string who(const std::string& table, const Strategy& strategy) {
+// "[propagation] type = \"directed\"": how messages name a strategy.
+std::string strategyLabel(const std::string& table, const Strategy& strategy) {
   return "[" + table + "] type = \"" + strategy.name() + "\"";
 }
 
@@ -81,7 +82,7 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
   for (const auto& [table, strategy] : strategies.all()) {
     ResourceUses uses;
     strategy->declare(uses);
-    declared.emplace_back(who(table, *strategy), std::move(uses));
+    declared.emplace_back(strategyLabel(table, *strategy), std::move(uses));
   }
   if (glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f)))) {
     ResourceUses sky;
@@ -90,7 +91,7 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
   }
   requirements.resources = resolveResources(declared);
   for (const auto& [table, strategy] : strategies.all()) {
-    const std::string who = lpvlab::who(table, *strategy);
+    const std::string who = strategyLabel(table, *strategy);
     if (requirements.shOrder > strategy->maxShOrder())
       throw Error(who + " handles SH order up to " + std::to_string(strategy->maxShOrder()) +
                   ", but the light grid has order " + std::to_string(requirements.shOrder) +

@@ -70,8 +70,8 @@ struct Frame {
   // The level's resource of that key, which the strategy consumes (an Error when missing).
   template <class T>
   T& get(const ResourceKey<T>& key) const {
-    if (T* value = find(key)) return *value;
-    return ResourceTable().get(key);  // throws, naming the resource
+    static const ResourceTable none;  // a frame without resources has none of any name
+    return (resources ? *resources : none).get(key);
   }
 
   // What rendering reads: every level, finest first (one level without cascades).

@@ -6,6 +6,16 @@
 
 namespace lpvlab {
 
+void downloadFloats(const gl::Buffer& buffer, std::size_t floats, std::vector<float>& host) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  host.resize(floats);
+  buffer.download(host.data(), floats * sizeof(float));
+}
+
+void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer) {
+  buffer.upload(host.data(), host.size() * sizeof(float));
+}
+
 HostImage downloadImage(const gl::Texture& texture) {
   HostImage image;
   image.width = texture.width();

@@ -18,6 +18,12 @@ struct HostImage {
   std::vector<glm::vec4> texels;  // texels[x + width * (y + height * layer)], y = 0 the bottom row
 };
 
+// The first `floats` of a GL buffer of floats (a light grid's, the normal grid's) into `host`,
+// after GL's shader writes to it, and `host` back: how a CPU strategy reads and adds to what GL
+// strategies wrote.
+void downloadFloats(const gl::Buffer& buffer, std::size_t floats, std::vector<float>& host);
+void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer);
+
 // Level 0 of an RGBA32F texture (every layer of an array texture), and back (2D only).
 HostImage downloadImage(const gl::Texture& texture);
 void uploadImage(const HostImage& image, gl::Texture& texture);

@@ -64,16 +64,12 @@ struct Requirements {
                           // exists once per level
   ComputeBackend backend = ComputeBackend::Gl;
   // The resources the run has: produced by one strategy and used by another, each with the
-  // producer's allocator (named_resources.h). A test that provides a resource itself adds it by key.
+  // producer's allocator (named_resources.h).
   std::map<std::string, ResourceAllocator> resources;
 
   template <class T>
   bool has(const ResourceKey<T>& key) const {
     return resources.count(std::string(key.name)) > 0;
-  }
-  template <class T>
-  void add(const ResourceKey<T>& key) {
-    resources.emplace(std::string(key.name), ResourceAllocator{});
   }
 };
 

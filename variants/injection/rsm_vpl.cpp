@@ -89,22 +89,18 @@ private:
   void injectOnCpu(Frame& frame) {
     if (!frame.host) throw Error("[injection] rsm_vpl (CPU): the frame has no host images");
     const LightMaps& maps = frame.lightMaps;
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the RSMs, before reading them back
     LightGrid& grid = frame.lightGrid;
-    hostGrid_.resize(grid.floatsPerGrid());
-    grid.current.download(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    downloadFloats(grid.current, grid.floatsPerGrid(), hostGrid_);
     NormalGrid* normals = frame.find(kNormalGrid);
-    if (normals) {
-      hostNormals_.resize(std::size_t(grid.geometry.cellCount()) * 4);
-      normals->normals.download(hostNormals_.data(), hostNormals_.size() * sizeof(float));
-    }
+    if (normals) downloadFloats(normals->normals, std::size_t(grid.geometry.cellCount()) * 4, hostNormals_);
     injectRsmVplsCpu({.position = &frame.host->image(maps.rsmPosition),
                       .normal = &frame.host->image(maps.rsmNormal),
                       .flux = &frame.host->image(maps.rsmFlux)},
                      grid.geometry, coefficients_, shiftCells_, hostGrid_.data(),
                      normals ? hostNormals_.data() : nullptr);
-    grid.current.upload(hostGrid_.data(), hostGrid_.size() * sizeof(float));
-    if (normals) normals->normals.upload(hostNormals_.data(), hostNormals_.size() * sizeof(float));
+    uploadFloats(hostGrid_, grid.current);
+    if (normals) uploadFloats(hostNormals_, normals->normals);
   }
 
   float shiftCells_;

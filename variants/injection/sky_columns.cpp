@@ -122,12 +122,10 @@ private:
     hostDepth_.resize(std::size_t(width_) * height_);
     glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       GLsizei(hostDepth_.size() * sizeof(float)), hostDepth_.data());
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    hostGrid_.resize(grid.floatsPerGrid());
-    grid.current.download(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    downloadFloats(grid.current, grid.floatsPerGrid(), hostGrid_);
     injectSkyColumnsCpu(hostDepth_, width_, height_, grid.geometry, coefficients_, shiftCells_,
                         perTexel, hostGrid_.data());
-    grid.current.upload(hostGrid_.data(), hostGrid_.size() * sizeof(float));
+    uploadFloats(hostGrid_, grid.current);
   }
 
   void renderDepth(const SceneGpu& scene) {

@@ -160,17 +160,15 @@ public:
 
 private:
   void propagateOnCpu(LightGrid& grid) {
-    const std::size_t bytes = cpuCurrent_.size() * sizeof(float);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // injection's shader writes, before reading back
-    grid.current.download(cpuCurrent_.data(), bytes);
+    downloadFloats(grid.current, grid.floatsPerGrid(), cpuCurrent_);
     cpuAccumulated_ = cpuCurrent_;  // the pipeline starts the accumulated grid as the injected one
     for (int i = 0; i < iterations_; ++i) {
       standardGatherCpu(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
                         cpuAccumulated_.data());
       std::swap(cpuCurrent_, cpuNext_);
     }
-    grid.current.upload(cpuCurrent_.data(), bytes);
-    grid.accumulated.upload(cpuAccumulated_.data(), bytes);
+    uploadFloats(cpuCurrent_, grid.current);
+    uploadFloats(cpuAccumulated_, grid.accumulated);
   }
 
   int iterations_;

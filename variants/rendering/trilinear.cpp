@@ -68,10 +68,8 @@ void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
   const std::span<const LightGrid> levels = frame.renderedLevels();
   hostGrids_.resize(levels.size());
   std::vector<TrilinearCpuLevel> cpuLevels;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   for (std::size_t level = 0; level < levels.size(); ++level) {
-    hostGrids_[level].resize(levels[level].floatsPerGrid());
-    levels[level].accumulated.download(hostGrids_[level].data(), hostGrids_[level].size() * sizeof(float));
+    downloadFloats(levels[level].accumulated, levels[level].floatsPerGrid(), hostGrids_[level]);
     cpuLevels.push_back({hostGrids_[level].data(), levels[level].geometry});
   }
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
