@@ -34,6 +34,8 @@ using vec3 = glm::dvec3;
 using vec4 = glm::dvec4;
 using ivec2 = glm::ivec2;
 using ivec3 = glm::ivec3;
+using ivec4 = glm::ivec4;
+using mat4 = glm::dmat4;
 using glm::abs;
 using glm::clamp;
 using glm::cross;
@@ -43,6 +45,7 @@ using glm::length;
 using glm::max;
 using glm::min;
 using glm::normalize;
+using glm::pow;
 using glm::sqrt;
 
 #include "shaders/common/sh.glsl"

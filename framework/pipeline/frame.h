@@ -9,6 +9,7 @@
 #include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/light_grid.h"
+#include "framework/pipeline/light_views.h"
 #include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
@@ -40,6 +41,7 @@ struct LightMaps {
   gl::Texture shadowDepth;  // DEPTH32F, shadowResolution^2 per layer
   gl::Buffer lightRecords;  // GpuLight[] (bound where shaders/common/light_records_interface.glsl says)
   gl::Buffer viewRecords;   // GpuView[]
+  LightViews records;       // the host's copy of both, for CPU kernels
   int lightCount = 0;
   std::size_t memoryBytes() const;
 };

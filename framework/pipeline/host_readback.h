@@ -18,6 +18,13 @@ struct HostImage {
   std::vector<glm::vec4> texels;  // texels[x + width * (y + height * layer)], y = 0 the bottom row
 };
 
+// A frame's reflective shadow maps on the host (LightMaps' RSM textures), one layer per view.
+struct RsmImages {
+  const HostImage* position = nullptr;  // RGBA: world position, w = 1 where covered
+  const HostImage* normal = nullptr;    // RGBA: unit normal
+  const HostImage* flux = nullptr;      // RGBA: reflected flux (W per channel), w = 1 where covered
+};
+
 // The first `floats` of a GL buffer of floats (a light grid's, the normal grid's) into `host`,
 // after GL's shader writes to it, and `host` back: how a CPU strategy reads and adds to what GL
 // strategies wrote.

@@ -110,6 +110,7 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  maps_.records = views;
   maps_.lightRecords = gl::Buffer(std::max<size_t>(1, views.lights.size()) * sizeof(GpuLight),
                                   "light records", nullptr);
   if (!views.lights.empty())

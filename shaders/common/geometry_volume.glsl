@@ -27,6 +27,27 @@ vec3 sharedFaceCrossing(vec3 from, vec3 d, vec3 w) {
   return from + w * (0.5 / dot(w, d));
 }
 
+// A surfel's blocking weight A_s / s^2 (area over the cell's face): what its lobe is scaled by, and
+// the weight of its albedo in the cell's mean albedo.
+real gvSurfelWeight(real area, real cellSize) {
+  return area / (cellSize * cellSize);
+}
+
+// The order-1 blocking potential one surfel adds to its GV cell: its weight times cosLobe(-n),
+// times the occlusion strategy's blocking_scale.
+vec4 gvSurfelBlocking(vec3 n, real weight, real blockingScale) {
+  return (blockingScale * weight) * shCosineLobe(-n);
+}
+
+// Merging two sources' GVs "by the larger coefficients" (thesis 4.3): per GV cell the merged cell
+// is the whole cell of the source whose c0, the blocking averaged over directions, is larger; on a
+// tie the first source's is kept. Taking one source's cell whole, rather than a per-coefficient
+// maximum, keeps B a sum of real surfels' lobes; a sum of both would count a surface seen by both
+// views twice.
+bool gvMergeTakesOther(real firstC0, real otherC0) {
+  return otherC0 > firstC0;
+}
+
 // Fraction of light travelling in direction w that passes blocking potential `b`.
 real gvTransmittance(vec4 b, vec3 w) {
   return clamp(1.0 - shEvaluate(b, w), 0.0, 1.0);

@@ -1,10 +1,10 @@
 #version 450
 // Geometry-volume injection from the camera's G-buffer: every covered pixel is a surfel whose
-// area is its footprint on the surface (surfel_area.glsl, perspective view), with the G-buffer's
-// albedo (WITH_ALBEDO).
+// area is its footprint on the surface (gv_surfel_sources.glsl, perspective view), with the
+// G-buffer's albedo (WITH_ALBEDO).
 #extension GL_EXT_shader_atomic_float : require
 #include "gv_surfel.glsl"
-#include "surfel_area.glsl"
+#include "gv_surfel_sources.glsl"
 
 #include "gv_camera_interface.glsl"
 layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
@@ -21,10 +21,8 @@ void main() {
   vec4 position = texelFetch(gPosition, pixel, 0);
   if (position.w == 0.0) return;
   vec4 normalDepth = texelFetch(gNormal, pixel, 0);
-  vec3 n = normalDepth.xyz;
-  vec3 toEye = cameraPosition - position.xyz;
-  float distance = length(toEye);
-  float area = perspectiveSurfelArea(texelEdge, normalDepth.w, distance, dot(n, toEye) / distance);
+  float area = gvCameraSurfelArea(position.xyz, normalDepth.xyz, normalDepth.w, cameraPosition,
+                                  texelEdge);
   vec3 albedo = WITH_ALBEDO ? texelFetch(gAlbedo, pixel, 0).rgb : vec3(0.0);
-  gvAddSurfel(position.xyz, n, area, albedo, true);
+  gvAddSurfel(position.xyz, normalDepth.xyz, area, albedo, true);
 }

@@ -1,15 +1,10 @@
 #version 450
 // Geometry-volume injection from the reflective shadow maps: every covered RSM texel is a surfel
-// whose area is its footprint on the surface (surfel_area.glsl), perspective for the cube faces
-// of point and spot lights, orthographic for a directional light's box. With WITH_ALBEDO, the
-// surfel's albedo is its reflected flux (the RSM) over the flux arriving at it
-// (raster/rsm_texel.glsl, the very function the RSM multiplied by the albedo); a texel whose
-// arriving light is 0 in some channel (outside a spot's cone, a light without that colour) tells
-// nothing about the albedo and adds blocking only.
+// whose area is its footprint on the surface, with (WITH_ALBEDO) the albedo its reflected flux
+// tells (gv_surfel_sources.glsl); a texel whose albedo is unknown adds blocking only.
 #extension GL_EXT_shader_atomic_float : require
 #include "gv_surfel.glsl"
-#include "surfel_area.glsl"
-#include "../raster/rsm_texel.glsl"
+#include "gv_surfel_sources.glsl"
 
 #include "gv_rsm_interface.glsl"
 #include "../common/light_records_interface.glsl"
@@ -30,23 +25,10 @@ void main() {
   vec3 n = texelFetch(rsmNormal, texel, 0).xyz;
   GpuView view = views[texel.z];
   GpuLight light = lights[int(view.params.z)];
-  float area;
-  if (view.params.x == 1.0) {
-    area = orthographicSurfelArea(view.params.y / float(rsmResolution),
-                                  dot(n, -light.directionCosOuter.xyz));
-  } else {
-    vec3 toLight = light.positionType.xyz - p;
-    float distance = length(toLight);
-    float depth = (view.clipFromWorld * vec4(p, 1.0)).w;  // distance along the face's axis
-    area = perspectiveSurfelArea(2.0 * view.params.y / float(rsmResolution), depth, distance,
-                                 dot(n, toLight) / distance);
-  }
-  vec3 albedo = vec3(0.0);
-  bool albedoKnown = false;
-  if (WITH_ALBEDO) {
-    vec3 arriving = rsmTexelLight(view, light, p, n, vec2(texel.xy) + 0.5, rsmResolution).flux;
-    albedoKnown = min(arriving.r, min(arriving.g, arriving.b)) > 0.0;
-    if (albedoKnown) albedo = texelFetch(rsmFlux, texel, 0).rgb / arriving;
-  }
-  gvAddSurfel(p, n, area, albedo, albedoKnown);
+  float area = gvRsmSurfelArea(view, light, p, n, rsmResolution);
+  GvSurfelAlbedo albedo = GvSurfelAlbedo(vec3(0.0), false);
+  if (WITH_ALBEDO)
+    albedo = gvRsmSurfelAlbedo(view, light, p, n, vec2(texel.xy) + 0.5,
+                               texelFetch(rsmFlux, texel, 0).rgb, rsmResolution);
+  gvAddSurfel(p, n, area, albedo.albedo, albedo.known);
 }

@@ -12,6 +12,7 @@
 #define LPVLAB_GV_SURFEL_GLSL
 #include "../common/sh.glsl"
 #include "../common/grid.glsl"
+#include "../common/geometry_volume.glsl"
 
 #include "gv_surfel_interface.glsl"
 layout(std430, binding = BUFFER_TARGET) buffer Target { float gv[]; };  // the GV's blocking coefficients
@@ -29,12 +30,12 @@ void gvAddSurfel(vec3 p, vec3 n, float area, vec3 rho, bool albedoKnown) {
   int cells = cellCount(gvResolution);
   int index = cellIndex(cell, gvResolution);
   // The albedo's weight is the unscaled blocking: the mean albedo does not depend on the scale.
-  float scale = area / (cellSize * cellSize);
-  for (int k = 0; k < 4; ++k)
-    atomicAdd(gv[k * cells + index], blockingScale * scale * shCosineLobeAt(k, -n));
+  float weight = gvSurfelWeight(area, cellSize);
+  vec4 blocking = gvSurfelBlocking(n, weight, blockingScale);
+  for (int k = 0; k < 4; ++k) atomicAdd(gv[k * cells + index], blocking[k]);
   if (WITH_ALBEDO && albedoKnown) {
-    for (int c = 0; c < 3; ++c) atomicAdd(gvAlbedo[4 * index + c], scale * rho[c]);
-    atomicAdd(gvAlbedo[4 * index + 3], scale);
+    for (int c = 0; c < 3; ++c) atomicAdd(gvAlbedo[4 * index + c], weight * rho[c]);
+    atomicAdd(gvAlbedo[4 * index + 3], weight);
   }
 }
 

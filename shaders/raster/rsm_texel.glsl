@@ -1,10 +1,12 @@
 // The light arriving at the surface patch one RSM texel sees, shared by the reflective shadow map
-// (raster/rsm.frag: albedo times this is the reflected flux) and the subsurface LPV's RSM
-// (subsurface/rsm.frag: transmittance times this enters translucent objects).
+// (raster/rsm.frag: albedo times this is the reflected flux), the subsurface LPV's RSM
+// (subsurface/rsm.frag: transmittance times this enters translucent objects) and the geometry
+// volume's albedo (occlusion/gv_rsm_surfel.glsl, on GL and on the CPU).
 //   point and spot views: I(w) * (texel solid angle) [* spot falloff]; the patch's slope cancels:
 //     its area times cos / r^2 is exactly the texel's solid angle;
 //   directional views: irradiance (on a surface facing the light) * texel area.
-// The including shader declares the Lights and Views buffers (lights_gpu.glsl records).
+// Written in the shared subset (prelude.glsl): C++ compiles it too. The including shader declares
+// the Lights and Views buffers (lights_gpu.glsl records).
 #ifndef LPVLAB_RSM_TEXEL_GLSL
 #define LPVLAB_RSM_TEXEL_GLSL
 #include "../common/lights_gpu.glsl"
@@ -18,22 +20,24 @@ struct RsmTexelLight {
 RsmTexelLight rsmTexelLight(GpuView view, GpuLight light, vec3 worldPosition, vec3 worldNormal,
                             vec2 fragCoord, int resolution) {
   vec3 n = normalize(worldNormal);
+  vec3 intensity = vec3(light.intensityCosInner);
+  vec3 lightDirection = vec3(light.directionCosOuter);
   if (view.params.x > 0.5) {
-    if (dot(n, light.directionCosOuter.xyz) > 0.0) n = -n;
-    float texelSize = view.params.y / float(resolution);
-    return RsmTexelLight(light.intensityCosInner.rgb * texelSize * texelSize, n);
+    if (dot(n, lightDirection) > 0.0) n = -n;
+    real texelSize = real(view.params.y) / real(resolution);
+    return RsmTexelLight(intensity * (texelSize * texelSize), n);
   }
-  vec3 toSurface = normalize(worldPosition - light.positionType.xyz);
+  vec3 toSurface = normalize(worldPosition - vec3(light.positionType));
   if (dot(n, toSurface) > 0.0) n = -n;
   // Texel centre in the view's image plane at unit distance (tan(fov/2) = params.y).
-  vec2 plane = (2.0 * fragCoord / float(resolution) - 1.0) * view.params.y;
-  float texel = 2.0 * view.params.y / float(resolution);
-  float solidAngle = texel * texel / pow(1.0 + dot(plane, plane), 1.5);
-  float falloff = 1.0;
+  vec2 plane = (2.0 * fragCoord / real(resolution) - 1.0) * real(view.params.y);
+  real texel = 2.0 * real(view.params.y) / real(resolution);
+  real solidAngle = texel * texel / pow(1.0 + dot(plane, plane), real(1.5));
+  real falloff = 1.0;
   if (int(light.positionType.w) == LIGHT_SPOT)
-    falloff = spotFalloff(dot(toSurface, light.directionCosOuter.xyz), light.intensityCosInner.w,
+    falloff = spotFalloff(dot(toSurface, lightDirection), light.intensityCosInner.w,
                           light.directionCosOuter.w);
-  return RsmTexelLight(light.intensityCosInner.rgb * falloff * solidAngle, n);
+  return RsmTexelLight(intensity * (falloff * solidAngle), n);
 }
 
 #endif

@@ -43,6 +43,8 @@ using test::Grid;
 using test::maxAbs;
 using test::maxDifference;
 using test::randomFloats;
+using test::randomAlbedo;
+using test::randomGv;
 
 toml::table bounceTable(int iterations, const std::string& method, bool bounces) {
   toml::table t = test::iterationsTable(iterations, method);
@@ -66,28 +68,6 @@ struct BounceRig {
     return rig.current();
   }
 };
-
-// Random blocking: c0 in [0, 1.5], band 1 as large (as gather_scatter_test's), so transmittances
-// cover [0, 1] with both clamps and the normal estimate sees every direction.
-Grid randomGv(const glm::ivec3& gvRes, std::mt19937& random) {
-  Grid gv = randomFloats(std::size_t(4) * test::cells(gvRes), random, -1.0f, 1.0f);
-  for (int i = 0; i < test::cells(gvRes); ++i) gv[i] = 0.75f * (gv[i] + 1.0f);
-  return gv;
-}
-
-// Random albedo (rho A, A) per GV cell: A in [0, 1) with a fifth of the cells unseen (A = 0),
-// rho in [0, 1] per channel.
-Grid randomAlbedo(const glm::ivec3& gvRes, std::mt19937& random) {
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-  Grid albedo(std::size_t(4) * test::cells(gvRes), 0.0f);
-  for (int i = 0; i < test::cells(gvRes); ++i) {
-    if (uniform(random) < 0.2f) continue;
-    const float weight = uniform(random);
-    for (int c = 0; c < 3; ++c) albedo[4 * i + c] = weight * uniform(random);
-    albedo[4 * i + 3] = weight;
-  }
-  return albedo;
-}
 
 // The same albedo rho (grey) in every GV cell.
 Grid uniformAlbedo(const glm::ivec3& gvRes, float rho) {

@@ -1,8 +1,9 @@
 // [compute] backend (framework/pipeline/strategy.h, ComputeBackend):
-//   a. the default Cornell box and a cascaded, SH order 2 composition give the same images with
-//      standard propagation on the CPU ("auto" on llvmpipe) and on GL, within float rounding;
+//   a. the default Cornell box, a cascaded SH order 2 composition and the GV with bounces give
+//      the same images with the strategies on the CPU ("auto" on llvmpipe) and on GL, within
+//      float rounding;
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
-//      a strategy without a CPU kernel for its composition (here: with the GV) on GL;
+//      a strategy without a CPU kernel for its composition (here: scattering) on GL;
 //   c. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
 //      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
 //      the key.
@@ -52,7 +53,9 @@ double relativeDifference(const Rendered& a, const Rendered& b, const std::strin
 
 TEST(ComputeBackend, CpuAndGlPropagationGiveTheSameImages) {
   for (const std::vector<std::string>& composition :
-       {std::vector<std::string>{}, {"grid.sh_order=2", "cascades.levels=2"}}) {
+       {std::vector<std::string>{},
+        {"grid.sh_order=2", "cascades.levels=2"},
+        {"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}}) {
     const Rendered gl = render([&] {
       auto o = composition;
       o.push_back("compute.backend=gl");
@@ -73,18 +76,21 @@ TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelEx
   EXPECT_EQ(resolveBackend("auto", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Gl);
   EXPECT_EQ(resolveBackend("cpu", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Cpu);
   EXPECT_EQ(resolveBackend("gl", "llvmpipe"), ComputeBackend::Gl);
-  // With the GV, standard propagation has no CPU kernel yet: "auto" keeps it on GL.
-  EXPECT_FALSE(render({"occlusion.type=\"geometry_volume\""}).propagationOnCpu);
+  // Standard propagation with the GV has a CPU kernel; scattering has none: "auto" keeps it on GL.
+  EXPECT_TRUE(render({"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}).propagationOnCpu);
   EXPECT_FALSE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
 }
 
 TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {
-  // The default composition has CPU kernels throughout; the GV's occlusion has none yet.
+  // The default composition, and the GV with bounces, have CPU kernels throughout; directed
+  // propagation has none yet.
   EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\""}));
+  EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\"", "occlusion.type=\"geometry_volume\"",
+                                      "propagation.bounces=true"}));
   const std::string message = test::errorOf([] {
-    loadExperiment("", {"compute.backend=\"cpu\"", "occlusion.type=\"geometry_volume\""});
+    loadExperiment("", {"compute.backend=\"cpu\"", "propagation.type=\"directed\""});
   });
-  EXPECT_TRUE(test::contains(message, "[occlusion] type = \"geometry_volume\" cannot run on the CPU backend"))
+  EXPECT_TRUE(test::contains(message, "[propagation] type = \"directed\" cannot run on the CPU backend"))
       << message;
   EXPECT_TRUE(test::contains(message, "no CPU kernel yet")) << message;
   EXPECT_TRUE(test::contains(

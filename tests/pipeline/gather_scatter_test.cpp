@@ -28,15 +28,7 @@ using test::Grid;
 using test::maxAbs;
 using test::maxDifference;
 using test::randomFloats;
-
-// A random GV: c0 in [0, 1.5] (blocking from none to more than opaque), the band-1 coefficients
-// up to as large, so transmittances cover (0, 1) and both clamps.
-Grid randomGv(std::size_t floats, std::mt19937& random) {
-  Grid gv = randomFloats(floats, random, -1.0f, 1.0f);
-  const std::size_t cells = floats / 4;
-  for (std::size_t i = 0; i < cells; ++i) gv[i] = 0.75f * (gv[i] + 1.0f);
-  return gv;
-}
+using test::randomGv;
 
 struct Result {
   Grid current, accumulated;
@@ -60,7 +52,7 @@ void gatherEqualsScatter(int order, bool withGv) {
   const std::size_t n = std::size_t(3) * (order + 1) * (order + 1) * res.x * res.y * res.z;
   const Grid current = randomFloats(n, random, -1.0f, 1.0f);
   const Grid accumulated = randomFloats(n, random, -1.0f, 1.0f);
-  const Grid gv = randomGv(std::size_t(4) * (res.x + 1) * (res.y + 1) * (res.z + 1), random);
+  const Grid gv = randomGv(res + 1, random);
   const Grid* gvOrNull = withGv ? &gv : nullptr;
   const Result gather = run("gather", res, order, iterations, current, accumulated, gvOrNull, 1);
   const Result scatter = run("scatter", res, order, iterations, current, accumulated, gvOrNull, 1);
@@ -135,7 +127,7 @@ void stepMatchesReference(const std::string& method) {
   const std::size_t n = std::size_t(3) * 4 * res.x * res.y * res.z;
   const Grid current = randomFloats(n, random, -1.0f, 1.0f);
   const Grid accumulated = randomFloats(n, random, -1.0f, 1.0f);
-  const Grid gv = randomGv(std::size_t(4) * 7 * 6 * 5, random);
+  const Grid gv = randomGv(glm::ivec3(7, 6, 5), random);
 
   const Result gpu = run(method, res, 1, 1, current, accumulated, &gv, 0);
   const Grid expected = referenceStep(res, current, &gv);

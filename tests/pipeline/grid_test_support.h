@@ -81,6 +81,28 @@ inline Grid randomFloats(std::size_t n, std::mt19937& random, float low = -1.0f,
   return v;
 }
 
+// Random blocking: c0 in [0, 1.5], band 1 as large so transmittances
+// cover [0, 1] with both clamps and the normal estimate sees every direction.
+inline Grid randomGv(const glm::ivec3& gvRes, std::mt19937& random) {
+  Grid gv = randomFloats(std::size_t(4) * cells(gvRes), random, -1.0f, 1.0f);
+  for (int i = 0; i < cells(gvRes); ++i) gv[i] = 0.75f * (gv[i] + 1.0f);
+  return gv;
+}
+
+// Random albedo (rho A, A) per GV cell: A in [0, 1) with a fifth of the cells unseen (A = 0),
+// rho in [0, 1] per channel.
+inline Grid randomAlbedo(const glm::ivec3& gvRes, std::mt19937& random) {
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  Grid albedo(std::size_t(4) * cells(gvRes), 0.0f);
+  for (int i = 0; i < cells(gvRes); ++i) {
+    if (uniform(random) < 0.2f) continue;
+    const float weight = uniform(random);
+    for (int c = 0; c < 3; ++c) albedo[4 * i + c] = weight * uniform(random);
+    albedo[4 * i + 3] = weight;
+  }
+  return albedo;
+}
+
 // Blocking potential of random surfels for a GV of `gvCells` cells (order 1, 4 floats per cell,
 // coefficient-major): c0 in [0, 0.6], the linear part smaller, so that 1 - B ranges over (0, 1]
 // and the clamp sometimes acts.

@@ -9,6 +9,8 @@
 //     pixel;
 //   - merging by the larger coefficients: per GV cell the merged GV is the camera's cell or the
 //     light views' cell, whichever has the larger c0;
+//   - the CPU backend fills the GV and its albedo the GL kernels fill, within float rounding, for
+//     every choice of sources, and independently of the thread count;
 //   - a wall of fully blocking GV cells stops the light of a VPL behind it (exactly: the GV's
 //     transmittance is 0 there), while without the GV the light passes;
 //   - the parameters: skip_first_iteration sets GeometryVolume::firstOccludedIteration, and bad
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <toml++/toml.h>
 
 #include "framework/core/error.h"
@@ -47,10 +50,11 @@ ResourceUses declared(const Strategy& strategy) {
   return uses;
 }
 
-// What a propagation that is occluded by a GV declares.
-ResourceUses gvReader() {
+// What a propagation that is occluded by a GV declares (and, bouncing, reads its albedo).
+ResourceUses gvReader(bool withAlbedo = false) {
   ResourceUses uses;
   uses.reads(kGeometryVolume);
+  if (withAlbedo) uses.reads(kSurfaceAlbedo);
   return uses;
 }
 
@@ -69,9 +73,11 @@ public:
     grid_ = LightGrid(s.grid, 1);
   }
 
-  // The GV's blocking coefficients after the strategy with these sources injected.
+  // The GV's blocking coefficients after the strategy with these sources injected, on `backend`;
+  // with `albedo`, the GV's albedo too (a composition that bounces).
   Grid inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
-                bool skipFirst = true, double blockingScale = 1.0) {
+              bool skipFirst = true, double blockingScale = 1.0,
+              ComputeBackend backend = ComputeBackend::Gl, Grid* albedo = nullptr) {
     toml::table table;
     toml::array list;
     for (const std::string& source : sources) list.push_back(source);
@@ -84,27 +90,35 @@ public:
     // The GV as the pipeline allocates it, from the strategy's own declaration (which fixes its
     // first occluded iteration).
     const std::map<std::string, ResourceAllocator> resources = resolveResources(
-        {{"occlusion test", declared(*strategy)}, {"a propagation", gvReader()}});
+        {{"occlusion test", declared(*strategy)}, {"a propagation", gvReader(albedo != nullptr)}});
     EXPECT_EQ(resources.count(std::string(kGeometryVolume.name)), 1u);
-    EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), 0u);  // nobody uses it
+    // Nobody uses the albedo unless the propagation bounces.
+    EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), albedo ? 1u : 0u);
     Requirements requirements;
     requirements.resources = resources;
+    requirements.backend = backend;
     strategy->prepare({.shaders = shaders_, .grid = grid_.geometry, .requirements = requirements});
     ResourceTable levelResources;
-    const ComputeBackend backend = ComputeBackend::Gl;
-    levelResources.adopt(std::string(kGeometryVolume.name),
-                         resources.at(std::string(kGeometryVolume.name))({grid_.geometry, 1, backend}));
+    for (const auto& [name, allocate] : resources)
+      levelResources.adopt(name, allocate({grid_.geometry, 1, backend}));
     GeometryVolume& gv = *levelResources.find(kGeometryVolume);
     gv.clear();
+    if (albedo) levelResources.find(kSurfaceAlbedo)->clear();
+    host_.newFrame();
     Frame frame{.scene = scene_.get(), .camera = &experiment_.camera,
                 .gbuffer = gbufferPass_->gbuffer(), .lightMaps = lightMapsPass_->lightMaps(),
-                .lightGrid = grid_, .indirect = indirect_, .resources = &levelResources};
+                .lightGrid = grid_, .indirect = indirect_, .resources = &levelResources,
+                .host = &host_};
     strategy->inject(frame);
     glFinish();
     checkGl("occlusion test");
     if (firstOccluded) *firstOccluded = gv.firstOccludedIteration;
     Grid blocking(std::size_t(gv.geometry.cellCount()) * 4);
     gv.blocking.download(blocking.data(), blocking.size() * sizeof(float));
+    if (albedo) {
+      albedo->resize(std::size_t(gv.geometry.cellCount()) * 4);
+      levelResources.find(kSurfaceAlbedo)->albedo.download(albedo->data(), albedo->size() * sizeof(float));
+    }
     return blocking;
   }
 
@@ -124,6 +138,7 @@ private:
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   LightGrid grid_;
   gl::Texture indirect_;
+  HostReadback host_;
 };
 
 // Sum over GV cells of shIntegral(c) / pi: the surfels' area in units of s^2.
@@ -225,6 +240,45 @@ TEST(Occlusion, SkipFirstIterationSetsTheFirstOccludedIteration) {
   EXPECT_EQ(first, 1);
   scene.inject({"camera"}, &first, false);
   EXPECT_EQ(first, 0);
+}
+
+double maxRelativeDifference(const Grid& a, const Grid& b) {
+  double largest = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    largest = std::max(largest, double(std::abs(a[i] - b[i])));
+    scale = std::max(scale, double(std::abs(b[i])));
+  }
+  return scale > 0.0 ? largest / scale : largest;
+}
+
+// The CPU backend's surfels (geometry_volume_cpu.h) are the GL kernels' shared functions summed
+// per cell in double: the same GV and albedo within float rounding, for every choice of sources
+// (the merge included), and bit for bit whatever the thread count.
+TEST(Occlusion, CpuBackendFillsTheGvAndAlbedoOfTheGlKernels) {
+  GvScene scene;
+  for (const std::vector<std::string>& sources :
+       {std::vector<std::string>{"camera"}, {"light"}, {"light", "camera"}}) {
+    const std::string what = sources.size() == 2 ? "both" : sources[0];
+    Grid glAlbedo, cpuAlbedo;
+    const Grid gl = scene.inject(sources, nullptr, true, 1.5, ComputeBackend::Gl, &glAlbedo);
+    const Grid cpu = scene.inject(sources, nullptr, true, 1.5, ComputeBackend::Cpu, &cpuAlbedo);
+    ASSERT_GT(gvArea(gl), 1.0) << what;
+    // GL sums a cell's hundreds of float surfels with atomics in any order (as the merge test
+    // above allows); the CPU sums them in double.
+    EXPECT_LT(maxRelativeDifference(cpu, gl), 1e-4) << what;
+    EXPECT_LT(maxRelativeDifference(cpuAlbedo, glAlbedo), 1e-4) << what;
+    double weight = 0.0;
+    for (std::size_t i = 3; i < glAlbedo.size(); i += 4) weight += glAlbedo[i];
+    EXPECT_GT(weight, 0.0) << what << ": the albedo was compared where there is some";
+    Grid oneThreadAlbedo;
+    Grid oneThread;
+    {
+      tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+      oneThread = scene.inject(sources, nullptr, true, 1.5, ComputeBackend::Cpu, &oneThreadAlbedo);
+    }
+    EXPECT_EQ(oneThread, cpu) << what;
+    EXPECT_EQ(oneThreadAlbedo, cpuAlbedo) << what;
+  }
 }
 
 void expectSourcesError(const std::vector<std::string>& sources, const std::string& phrase) {

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "framework/core/buckets.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
 
@@ -19,8 +20,7 @@ namespace {
 // What the per-cell sums read and write.
 struct CellSums {
   const RsmImages& rsm;
-  const std::vector<std::size_t>& order;  // texels sorted by cell
-  const std::vector<std::size_t>& first;  // cell c's texels: order[first[c] .. first[c + 1])
+  const Buckets& byCell;  // the texels sorted by cell
   int cells;
   float* coefficients;
   float* normals;  // or null
@@ -31,12 +31,13 @@ struct CellSums {
 template <int N>
 [[gnu::flatten]] void sumCells(const CellSums& s, int begin, int end) {
   for (int cell = begin; cell < end; ++cell) {
-    const std::size_t from = s.first[std::size_t(cell)], to = s.first[std::size_t(cell) + 1];
+    const std::size_t from = s.byCell.first[std::size_t(cell)];
+    const std::size_t to = s.byCell.first[std::size_t(cell) + 1];
     if (from == to) continue;
     double sum[3][N] = {};
     glm::dvec4 normal(0.0);
     for (std::size_t i = from; i < to; ++i) {
-      const std::size_t t = s.order[i];
+      const std::size_t t = s.byCell.order[i];
       const glm::dvec3 n(s.rsm.normal->texels[t]);
       const glm::dvec3 phi(s.rsm.flux->texels[t]);
       for (int k = 0; k < N; ++k) {
@@ -79,17 +80,11 @@ void injectRsmVplsCpu(const RsmImages& rsm, const GridGeometry& grid, int coeffi
     }
   });
 
-  // The texels sorted by cell, in texel order within a cell: first[cell] .. first[cell + 1].
-  std::vector<std::size_t> first(std::size_t(cells) + 1, 0);
-  for (int cell : cellOf)
-    if (cell >= 0) ++first[std::size_t(cell) + 1];
-  for (int cell = 0; cell < cells; ++cell) first[std::size_t(cell) + 1] += first[std::size_t(cell)];
-  std::vector<std::size_t> next(first.begin(), first.end() - 1), order(first.back());
-  for (std::size_t t = 0; t < texels; ++t)
-    if (cellOf[t] >= 0) order[next[std::size_t(cellOf[t])]++] = t;
+  // The texels sorted by cell, in texel order within a cell.
+  const Buckets byCell = bucketByKey(cellOf, cells);
 
   // Each cell sums its VPLs.
-  const CellSums sums{rsm, order, first, cells, coefficientsOut, normals};
+  const CellSums sums{rsm, byCell, cells, coefficientsOut, normals};
   tbb::parallel_for(tbb::blocked_range<int>(0, cells), [&](const tbb::blocked_range<int>& r) {
     switch (coefficients) {
       case 4: return sumCells<4>(sums, r.begin(), r.end());

@@ -14,12 +14,6 @@
 
 namespace lpvlab {
 
-struct RsmImages {
-  const HostImage* position = nullptr;  // RGBA: world position, w = 1 where covered
-  const HostImage* normal = nullptr;    // RGBA: unit normal
-  const HostImage* flux = nullptr;      // RGBA: reflected flux (W per channel), w = 1 where covered
-};
-
 // Adds the VPLs of every layer of `rsm` to `grid` (grid.glsl layout, `coefficients` per channel)
 // and, if `normals` is not null, to the normal grid (vec4 per cell). Throws an Error for images
 // of different sizes.

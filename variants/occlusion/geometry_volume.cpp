@@ -11,7 +11,8 @@
 // each surfel also adds its albedo, weighted by its A_s / s^2, to the GV's albedo: a camera
 // surfel the G-buffer's, an RSM surfel its reflected flux over the flux arriving at it. Albedo is
 // a weighted mean, not a sum, so both sources add to the one albedo buffer without merging.
-// docs/variants.md#geometry_volume has the mathematics.
+// docs/variants.md#geometry_volume has the mathematics. On the CPU backend the same surfels are
+// summed per cell without atomics (geometry_volume_cpu.h).
 //
 // | parameter            | type     | default             | meaning                              |
 // |----------------------|----------|---------------------|--------------------------------------|
@@ -38,6 +39,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
+#include "variants/occlusion/geometry_volume_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -81,6 +83,21 @@ public:
     uses.produces(kSurfaceAlbedo);
   }
   int maxShOrder() const override { return 3; }  // the GV is order 1 whatever the light grid's
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
+
+  // Per surfel (a covered G-buffer pixel or RSM texel): its position, normal and albedo source
+  // read (3 x 16 B), its area and lobe (about 20), 4 coefficients and, with the albedo, 4 sums.
+  // GL adds them atomically (read and write, 4 B each); the CPU writes and reads the surfel's cell
+  // and its place in the sort by cell (4 + 8 B, each twice), summing each cell in registers.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override {
+    if (!requirements.has(kGeometryVolume)) return {};
+    const double sums = requirements.has(kSurfaceAlbedo) ? 8.0 : 4.0;
+    const double bytes = 3 * 16 + (runsOnCpu(requirements) ? 2 * (4 + 8) : 2 * 4 * sums);
+    const double surfels =
+        ((fromLight_ ? shape.rsmTexels : 0.0) + (fromCamera_ ? shape.pixels : 0.0)) * shape.levels;
+    return {{"surfel", surfels, 20 + sums, bytes}};
+  }
 
   void prepare(const StrategySetup& setup) override {
     ShaderCompiler& shaders = setup.shaders;
@@ -88,6 +105,8 @@ public:
     active_ = setup.requirements.has(kGeometryVolume);  // no propagation uses one: nothing to do
     withAlbedo_ = setup.requirements.has(kSurfaceAlbedo);
     if (!active_) return;
+    onCpu_ = runsOnCpu(setup.requirements);
+    if (onCpu_) return;
     const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
     if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
     if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);
@@ -102,6 +121,7 @@ public:
 
   void inject(Frame& frame) override {
     if (!active_) return;
+    if (onCpu_) return injectOnCpu(frame);
     GeometryVolume& gv = frame.get(kGeometryVolume);
     // The camera's surfels go straight into the GV; the lights' too when they are the only source.
     if (fromCamera_) injectCamera(frame, gv.blocking);
@@ -121,7 +141,9 @@ public:
     }
   }
 
-  std::size_t memoryBytes() const override { return lightScratch_.size(); }
+  std::size_t memoryBytes() const override {
+    return lightScratch_.size() + (hostBlocking_.size() + hostLight_.size() + hostAlbedo_.size()) * sizeof(float);
+  }
 
 private:
   // What both injection kernels read first (gv_surfel_interface.glsl): the GV's placement, the
@@ -151,10 +173,54 @@ private:
     using namespace camera_kernel;
     useInjection(camera_, frame, g.position, g.normal, g.albedo, target);
     glUniform3fv(LOCATION_CAMERA_POSITION, 1, &frame.camera->position[0]);
-    glUniform1f(LOCATION_TEXEL_EDGE, 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(g.height));
+    glUniform1f(LOCATION_TEXEL_EDGE, cameraTexelEdge(frame));
     glUniform2i(LOCATION_SIZE, g.width, g.height);
     dispatchCovering({g.width, g.height, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                      GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  // The edge of a G-buffer pixel at unit depth.
+  static float cameraTexelEdge(const Frame& frame) {
+    return 2.0f * std::tan(0.5f * frame.camera->verticalFov) / float(frame.gbuffer.height);
+  }
+
+  // The same surfels on the CPU (geometry_volume_cpu.h), from the frame's host images, into host
+  // copies of the GV (and its albedo) that replace the cleared GL buffers.
+  void injectOnCpu(Frame& frame) {
+    if (!frame.host) throw Error("[occlusion] geometry_volume (CPU): the frame has no host images");
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the G-buffer and RSMs, before reading them
+    GeometryVolume& gv = frame.get(kGeometryVolume);
+    const std::size_t floats = std::size_t(gv.geometry.cellCount()) * GeometryVolume::kCoefficients;
+    hostBlocking_.assign(floats, 0.0f);
+    SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
+    if (albedo) hostAlbedo_.assign(std::size_t(gv.geometry.cellCount()) * 4, 0.0f);
+    const GvTarget target{.gv = gv.geometry, .blockingScale = blockingScale_,
+                          .blocking = hostBlocking_.data(),
+                          .albedo = albedo ? hostAlbedo_.data() : nullptr};
+    if (fromCamera_) {
+      const GBuffer& g = frame.gbuffer;
+      addCameraSurfelsCpu({.position = &frame.host->image(g.position),
+                           .normal = &frame.host->image(g.normal),
+                           .albedo = albedo ? &frame.host->image(g.albedo) : nullptr},
+                          frame.camera->position, cameraTexelEdge(frame), target);
+    }
+    if (fromLight_) {
+      const LightMaps& maps = frame.lightMaps;
+      const RsmImages rsm{.position = &frame.host->image(maps.rsmPosition),
+                          .normal = &frame.host->image(maps.rsmNormal),
+                          .flux = &frame.host->image(maps.rsmFlux)};
+      if (fromCamera_) {  // a GV of its own, merged
+        hostLight_.assign(floats, 0.0f);
+        GvTarget lightTarget = target;
+        lightTarget.blocking = hostLight_.data();
+        addRsmSurfelsCpu(rsm, maps.records, lightTarget);
+        mergeGeometryVolumesCpu(hostBlocking_.data(), hostLight_.data(), gv.geometry.cellCount());
+      } else {
+        addRsmSurfelsCpu(rsm, maps.records, target);
+      }
+    }
+    uploadFloats(hostBlocking_, gv.blocking);
+    if (albedo) uploadFloats(hostAlbedo_, albedo->albedo);
   }
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
@@ -174,8 +240,10 @@ private:
   bool fromLight_ = false, fromCamera_ = false;
   bool active_ = false;
   bool withAlbedo_ = false;
+  bool onCpu_ = false;
   Program camera_, rsm_, merge_;
   gl::Buffer lightScratch_;
+  std::vector<float> hostBlocking_, hostLight_, hostAlbedo_;  // on the CPU backend
 };
 
 LPVLAB_REGISTER(OcclusionStrategy, "geometry_volume",

@@ -13,10 +13,10 @@
 // surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
 // from, every occluded iteration, so light bounces as often as iterations allow
 // (standard_faces.glsl has the mathematics).
-// On the CPU backend ([compute] backend, strategy.h) gathering without a GV runs the CPU kernel
-// of standard_cpu.h: the injected grid is read back from GL once, every iteration runs on the
-// CPU, and the light and the accumulated grid go back to GL for rendering (all inside the
-// propagation stage's time). The GV, bounces and scattering have no CPU kernel yet.
+// On the CPU backend ([compute] backend, strategy.h) gathering runs the CPU kernel of
+// standard_cpu.h, with the GV and its bounces: the injected grid (and the GV) are read back from
+// GL once, every iteration runs on the CPU, and the light and the accumulated grid go back to GL
+// for rendering (all inside the propagation stage's time). Scattering has no CPU kernel yet.
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
@@ -74,9 +74,8 @@ public:
     }
   }
   std::string cpuRefusal(const Requirements& requirements) const override {
+    (void)requirements;
     if (scatter_) return "method = \"scatter\" has no CPU kernel (gathering computes the same grid)";
-    if (requirements.has(kGeometryVolume))
-      return "the geometry volume's attenuation has no CPU kernel yet";
     return {};
   }
 
@@ -103,7 +102,7 @@ public:
   }
 
   void propagate(Frame& frame) override {
-    if (onCpu_) return propagateOnCpu(frame.lightGrid);
+    if (onCpu_) return propagateOnCpu(frame);
     using namespace kernel;
     LightGrid& grid = frame.lightGrid;
     program_.use();
@@ -142,12 +141,13 @@ public:
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const double n = shape.coefficients;
-    double madds = runsOnCpu(requirements) ? 3.0 * standardGatherMultiplyAdds(shape.coefficients)
-                                           : 3 * 30 * 2 * n;
+    const bool onCpu = runsOnCpu(requirements);
+    double madds = onCpu ? 3.0 * standardGatherMultiplyAdds(shape.coefficients) : 3 * 30 * 2 * n;
     double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
     if (requirements.has(kGeometryVolume)) {
-      madds += 30 * 8 * 4;
-      bytes += 8 * 16;
+      // The CPU reads each face's transmittance, found once per frame, and multiplies by it.
+      madds += onCpu ? 3 * 30 : 30 * 8 * 4;
+      bytes += onCpu ? 30 * 4 : 8 * 16;
     }
     if (bounces_) madds *= 2;
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, madds, bytes}};
@@ -155,16 +155,31 @@ public:
 
   std::size_t memoryBytes() const override {
     return scratch_.size() +
-           (cpuCurrent_.size() + cpuNext_.size() + cpuAccumulated_.size()) * sizeof(float);
+           (cpuCurrent_.size() + cpuNext_.size() + cpuAccumulated_.size() + cpuGv_.size() +
+            cpuGvAlbedo_.size() + cpuOcclusion_.transmittance.size() +
+            cpuOcclusion_.bounceLobes.size()) * sizeof(float) +
+           cpuOcclusion_.bounces.size() * sizeof(StandardOcclusion<float>::Bounce);
   }
 
 private:
-  void propagateOnCpu(LightGrid& grid) {
+  // With a GV, what it does to every face (and its bounces) is found once for the frame
+  // (standard_cpu.h), and used from its first occluded iteration on.
+  void propagateOnCpu(Frame& frame) {
+    LightGrid& grid = frame.lightGrid;
     downloadFloats(grid.current, grid.floatsPerGrid(), cpuCurrent_);
     cpuAccumulated_ = cpuCurrent_;  // the pipeline starts the accumulated grid as the injected one
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
+    if (gv) {
+      const std::size_t gvCells = std::size_t(gv->geometry.cellCount());
+      downloadFloats(gv->blocking, gvCells * GeometryVolume::kCoefficients, cpuGv_);
+      if (bounces_) downloadFloats(frame.get(kSurfaceAlbedo).albedo, gvCells * 4, cpuGvAlbedo_);
+      cpuOcclusion_ = makeStandardOcclusion(cpuTable_, grid.geometry.resolution, cpuGv_.data(),
+                                            bounces_ ? cpuGvAlbedo_.data() : nullptr);
+    }
     for (int i = 0; i < iterations_; ++i) {
+      const bool occluded = gv && i >= gv->firstOccludedIteration;
       standardGatherCpu(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
-                        cpuAccumulated_.data());
+                        cpuAccumulated_.data(), "auto", 0, occluded ? &cpuOcclusion_ : nullptr);
       std::swap(cpuCurrent_, cpuNext_);
     }
     uploadFloats(cpuCurrent_, grid.current);
@@ -180,6 +195,8 @@ private:
   bool onCpu_ = false;
   StandardFaceTable<float> cpuTable_;
   std::vector<float> cpuCurrent_, cpuNext_, cpuAccumulated_;  // host copies, on the CPU backend
+  std::vector<float> cpuGv_, cpuGvAlbedo_;
+  StandardOcclusion<float> cpuOcclusion_;
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "standard",

@@ -15,6 +15,12 @@
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/standard_faces.glsl"
+using glm::mix;
+// The kernels' GV lookup over one GV buffer (coefficient-major, 4 values per GV cell).
+struct GvLookup {
+  const float* gvBlocking;
+#include "shaders/common/geometry_volume_lookup.glsl"
+};
 LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
@@ -109,11 +115,128 @@ template StandardFaceTable<double> makeStandardFaceTable<double>(int, double, do
 
 namespace {
 
+// The row padding of the kernel (see gatherRegister's callers).
+constexpr int kRowPadding = 16;
+
+// Per table entry (light from neighbour `direction` into the face with `normal`), the face index
+// f of standard_faces.glsl for the flow -offset, or -1 for the shared face.
+struct FaceGeometry {
+  int face[6][6];
+  glm::dvec3 flow[6];  // -offset: the direction light flows
+};
+
+FaceGeometry faceGeometry(const glm::ivec3 (&offset)[6]) {
+  FaceGeometry g{};
+  for (int direction = 0; direction < 6; ++direction) {
+    g.flow[direction] = -glm::dvec3(offset[direction]);
+    for (int normal = 0; normal < 6; ++normal) g.face[direction][normal] = -1;
+    for (int f = 0; f < shared::STANDARD_FACES; ++f) {
+      const glm::dvec3 n = shared::standardFaceNormal(g.flow[direction], f);
+      for (int normal = 0; normal < 6; ++normal)
+        if (glm::dvec3(offset[normal]) == n) g.face[direction][normal] = f;
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+template <class Real>
+StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& table,
+                                              const glm::ivec3& res, const float* gvBlocking,
+                                              const float* gvAlbedo) {
+  StandardOcclusion<Real> o;
+  o.resolution = res;
+  o.coefficients = table.coefficients;
+  o.width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
+  const int rows = res.y * res.z, N = table.coefficients;
+  constexpr int kFaces = StandardOcclusion<Real>::kFaces;
+  o.transmittance.assign(std::size_t(kFaces) * rows * o.width, Real(1));
+  const glm::ivec3 gvRes = res + 1;
+  const std::size_t gvCells = std::size_t(gvRes.x) * gvRes.y * gvRes.z;
+  shared::GvLookup blocking{gvBlocking};  // (its GLSL functions are not const members)
+  // The albedo's (rho A, A) are interpolated as the blocking is (standard_transfer.glsl's
+  // gvAlbedoFromCorners): the same lookup over a coefficient-major copy.
+  std::vector<float> albedoByComponent;
+  if (gvAlbedo) {
+    albedoByComponent.resize(4 * gvCells);
+    for (std::size_t i = 0; i < gvCells; ++i)
+      for (std::size_t c = 0; c < 4; ++c) albedoByComponent[c * gvCells + i] = gvAlbedo[4 * i + c];
+  }
+  shared::GvLookup albedo{albedoByComponent.data()};
+  const FaceGeometry faces = faceGeometry(table.offset);
+  // Whether GV cell c blocks anything (a cell whose eight corners are all empty lets every face
+  // through whole, T = 1, and blocks nothing to bounce).
+  auto empty = [&](const glm::ivec3& c) {
+    const std::size_t i = std::size_t(shared::cellIndex(c, gvRes));
+    for (std::size_t k = 0; k < 4; ++k)
+      if (gvBlocking[k * gvCells + i] != 0.0f) return false;
+    return true;
+  };
+  std::vector<std::vector<typename StandardOcclusion<Real>::Bounce>> bounces(gvAlbedo ? rows : 0);
+  std::vector<std::vector<Real>> lobes(gvAlbedo ? rows : 0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, rows), [&](const tbb::blocked_range<int>& range) {
+    for (int row = range.begin(); row < range.end(); ++row) {
+      const int y = row % res.y, z = row / res.y;
+      for (int x = 0; x < res.x; ++x) {
+        const glm::ivec3 cell(x, y, z);
+        bool blocked = false;
+        for (int corner = 0; corner < 8 && !blocked; ++corner)
+          blocked = !empty(cell + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1));
+        if (!blocked) continue;
+        const glm::dvec3 centre = glm::dvec3(cell) + 0.5;
+        for (int direction = 0; direction < 6; ++direction)
+          for (int normal = 0; normal < 6; ++normal) {
+            const int f = faces.face[direction][normal];
+            if (f < 0) continue;
+            const glm::dvec3 flow = faces.flow[direction];
+            const glm::dvec3 w = shared::standardFaceDirection(flow, f);
+            // Light from the neighbour into this cell: the shared face is this cell's.
+            const glm::dvec3 in =
+                shared::standardFaceCrossing(centre + glm::dvec3(table.offset[direction]), flow, f);
+            const double t = shared::gvTransmittance(blocking.gvBlockingAt(in, gvRes), w);
+            o.transmittance[(std::size_t(standardFaceSlot(direction, normal)) * rows + row) * o.width + x] = Real(t);
+            if (!gvAlbedo) continue;
+            // This cell's own light leaving along `flow` through the same kind of face.
+            const glm::dvec3 out = shared::standardFaceCrossing(centre, flow, f);
+            const glm::dvec4 b = blocking.gvBlockingAt(out, gvRes);
+            const double tOut = shared::gvTransmittance(b, w);
+            if (!(tOut < 1.0)) continue;
+            const glm::dvec3 rho = shared::gvMeanAlbedo(albedo.gvBlockingAt(out, gvRes));
+            if (rho == glm::dvec3(0.0)) continue;
+            const glm::dvec3 n = shared::gvSurfaceNormal(b, w);
+            typename StandardOcclusion<Real>::Bounce bounce{x, direction, normal, {}};
+            for (int c = 0; c < 3; ++c) bounce.weight[c] = Real(rho[c] * (1.0 - tOut));
+            bounces[std::size_t(row)].push_back(bounce);
+            for (int k = 0; k < N; ++k)
+              lobes[std::size_t(row)].push_back(Real(shared::shCosineLobeAt(k, n) / shared::PI));
+          }
+      }
+    }
+  });
+  o.firstBounce.assign(std::size_t(rows) + 1, 0);
+  for (int row = 0; row < rows && gvAlbedo; ++row) {
+    o.firstBounce[std::size_t(row) + 1] = o.firstBounce[std::size_t(row)] + bounces[std::size_t(row)].size();
+    o.bounces.insert(o.bounces.end(), bounces[std::size_t(row)].begin(), bounces[std::size_t(row)].end());
+    o.bounceLobes.insert(o.bounceLobes.end(), lobes[std::size_t(row)].begin(), lobes[std::size_t(row)].end());
+  }
+  return o;
+}
+
+template StandardOcclusion<float> makeStandardOcclusion<float>(const StandardFaceTable<float>&,
+                                                               const glm::ivec3&, const float*,
+                                                               const float*);
+template StandardOcclusion<double> makeStandardOcclusion<double>(const StandardFaceTable<double>&,
+                                                                 const glm::ivec3&, const float*,
+                                                                 const float*);
+
+namespace {
+
 // Cells along x are computed a register at a time: a GCC vector (vector_size) of `Bytes`, the
 // width of the instruction set's registers (16 SSE, 32 AVX2, 64 AVX-512), so every cell is
 // computed with vector instructions. Rows are staged padded to a multiple of kRowPadding cells,
-// a whole number of registers at every width, so no cell falls to a scalar remainder loop.
-constexpr int kRowPadding = 16;
+// a whole number of registers at every width, so no cell falls to a scalar remainder loop
+// (kRowPadding).
 template <class Real, int Bytes>
 struct RegisterOf {
   typedef Real type __attribute__((vector_size(Bytes)));
@@ -128,11 +251,13 @@ struct RegisterOf {
 // are skipped: the loops are unrolled, so the tests are resolved when compiling. A face's flux
 // is added as f = max(f + intensity, f), which is f + max(intensity, 0) with the sum folded into
 // the intensity's multiply-adds.
-template <int N, int Bytes, class Real>
+// Occluded: each face's flux is max(intensity, 0) times the face's transmittance, read from
+// t[standardFaceSlot(d, normal) * tStride + x].
+template <int N, int Bytes, bool Occluded, class Real>
 [[gnu::always_inline]] inline void gatherRegister(const StandardFaceTable<Real>& table,
                                                   const Real* const (&from)[6],
                                                   const std::size_t (&stride)[6], int width, int x,
-                                                  Real* out) {
+                                                  const Real* t, std::size_t tStride, Real* out) {
   using V = typename RegisterOf<Real, Bytes>::type;
   V fluxByNormal[6] = {};
 #pragma GCC unroll 6
@@ -143,11 +268,22 @@ template <int N, int Bytes, class Real>
 #pragma GCC unroll 6
     for (int normal = 0; normal < 6; ++normal) {
       if (normal == d) continue;  // the shared face receives nothing
-      V total = fluxByNormal[normal];
+      if constexpr (Occluded) {
+        V intensity = {};
 #pragma GCC unroll 16
-      for (int k = 0; k < N; ++k)
-        if (faceUsesBasis(d, normal, k)) total += s[k] * table.scaledBasis[d][normal][k];
-      fluxByNormal[normal] = total > fluxByNormal[normal] ? total : fluxByNormal[normal];
+        for (int k = 0; k < N; ++k)
+          if (faceUsesBasis(d, normal, k)) intensity += s[k] * table.scaledBasis[d][normal][k];
+        const V zero = {};
+        V transmittance;
+        std::memcpy(&transmittance, t + standardFaceSlot(d, normal) * tStride + x, sizeof(V));
+        fluxByNormal[normal] += transmittance * (intensity > zero ? intensity : zero);
+      } else {
+        V total = fluxByNormal[normal];
+#pragma GCC unroll 16
+        for (int k = 0; k < N; ++k)
+          if (faceUsesBasis(d, normal, k)) total += s[k] * table.scaledBasis[d][normal][k];
+        fluxByNormal[normal] = total > fluxByNormal[normal] ? total : fluxByNormal[normal];
+      }
     }
   }
 #pragma GCC unroll 16
@@ -157,6 +293,27 @@ template <int N, int Bytes, class Real>
     for (int normal = 0; normal < 6; ++normal)
       if (lobeUsesBasis(normal, k)) sum += fluxByNormal[normal] * table.normalLobe[normal][k];
     std::memcpy(out + k * width + x, &sum, sizeof sum);
+  }
+}
+
+// What the GV's surfaces at the blocked outgoing faces of a row's cells re-emit into those cells,
+// one channel, added to out[k * width + x]: per blocked face the intensity towards it (the row's
+// own light, `own`: coefficient k of cell x at own[k * plane + x]) times the solid angle (the
+// table's scaled basis), clamped, times albedo (1 - T), times the surfaces' lobe over pi
+// (standard_faces.glsl's standardBlockedFlux and bounce lobe).
+template <int N, class Real>
+inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclusion<Real>& o,
+                       int row, const Real* own, std::size_t plane, int channel, int width,
+                       Real* out) {
+  for (std::size_t i = o.firstBounce[std::size_t(row)]; i < o.firstBounce[std::size_t(row) + 1]; ++i) {
+    const typename StandardOcclusion<Real>::Bounce& b = o.bounces[i];
+    const Real* basis = table.scaledBasis[b.direction][b.normal];
+    Real intensity = 0;
+    for (int k = 0; k < N; ++k) intensity += own[k * plane + std::size_t(b.x)] * basis[k];
+    if (!(intensity > Real(0))) continue;
+    const Real reemitted = b.weight[channel] * intensity;
+    const Real* lobe = o.bounceLobes.data() + i * N;
+    for (int k = 0; k < N; ++k) out[std::size_t(k) * width + b.x] += reemitted * lobe[k];
   }
 }
 
@@ -188,12 +345,14 @@ template <int Bytes, class Real>
 // shift leaves the grid, and a neighbour row outside the grid (or one whose padded read would
 // pass the grid's end) is read from a staged copy padded with zeros. A zero source sends
 // max(0, 0) = 0 through every face, so the loop needs no test for the grid's edges. Each target
-// cell is then stored once and added to `accumulated`.
+// cell is then stored once and added to `accumulated`. With `occlusion`, the faces' fluxes are
+// attenuated and the row's bounces added before storing.
 template <int N, int Bytes, class Real>
 [[gnu::always_inline]] inline void gatherRowsImpl(const StandardFaceTable<Real>& table,
                                                   const glm::ivec3& res, const Real* source,
                                                   Real* target, Real* accumulated, int rowBegin,
-                                                  int rowEnd) {
+                                                  int rowEnd,
+                                                  const StandardOcclusion<Real>* occlusion) {
   const std::size_t plane = std::size_t(res.x) * res.y * res.z;  // cells: one coefficient's span
   const Real* const sourceEnd = source + 3 * N * plane;
   const int width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
@@ -232,8 +391,18 @@ template <int N, int Bytes, class Real>
           std::copy(neighbourRow + k * plane + first + o.x, neighbourRow + k * plane + last + o.x,
                     copy + std::size_t(k) * width + first);
       }
-      for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
-        gatherRegister<N, Bytes>(table, from, stride, width, x, out.data());
+      if (occlusion) {
+        const std::size_t tStride = std::size_t(res.y) * res.z * width;
+        const Real* t = occlusion->transmittance.data() + std::size_t(row) * width;
+        for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
+          gatherRegister<N, Bytes, true>(table, from, stride, width, x, t, tStride, out.data());
+        addBounces<N>(table, *occlusion, row, source + channelBase + base, plane, channel, width,
+                      out.data());
+      } else {
+        for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
+          gatherRegister<N, Bytes, false>(table, from, stride, width, x, static_cast<const Real*>(nullptr),
+                                          0, out.data());
+      }
       for (int k = 0; k < N; ++k)
         storeRow<Bytes>(out.data() + std::size_t(k) * width,
                         target + channelBase + k * plane + base,
@@ -244,15 +413,16 @@ template <int N, int Bytes, class Real>
 
 template <class Real>
 using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*,
-                              Real*, Real*, int, int);
+                              Real*, Real*, int, int, const StandardOcclusion<Real>*);
 
 // The row loop compiled for each instruction set with its register width (the inlined body takes
 // the function's target).
 #define LPVLAB_GATHER_ROWS(name, bytes, attributes)                                             \
   template <int N, class Real>                                                                  \
   attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,             \
-                       const Real* source, Real* target, Real* accumulated, int begin, int end) { \
-    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end);              \
+                       const Real* source, Real* target, Real* accumulated, int begin, int end,  \
+                       const StandardOcclusion<Real>* occlusion) {                              \
+    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end, occlusion);   \
   }
 LPVLAB_GATHER_ROWS(gatherRowsX86_64, 16, )
 LPVLAB_GATHER_ROWS(gatherRowsV3, 32, __attribute__((target("arch=x86-64-v3"))))
@@ -311,9 +481,11 @@ std::vector<std::string> supportedCpuKernelInstructionSets() {
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated, const std::string& isa,
-                       int threads) {
+                       int threads, const StandardOcclusion<Real>* occlusion) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
+  if (occlusion && (occlusion->resolution != resolution || occlusion->coefficients != table.coefficients))
+    throw Error("standard propagation (CPU): the geometry volume's faces were made for another grid");
   const std::string& chosen = resolveIsa(isa);
   RowsFunction<Real> rows = table.coefficients == 4   ? rowsFor<4, Real>(chosen)
                             : table.coefficients == 9 ? rowsFor<9, Real>(chosen)
@@ -321,7 +493,7 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
   const int rowCount = resolution.y * resolution.z;
   auto work = [&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, rowCount), [&](const tbb::blocked_range<int>& r) {
-      rows(table, resolution, source, target, accumulated, r.begin(), r.end());
+      rows(table, resolution, source, target, accumulated, r.begin(), r.end(), occlusion);
     });
   };
   if (threads > 0) {
@@ -333,8 +505,10 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
 }
 
 template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
-                                       const float*, float*, float*, const std::string&, int);
+                                       const float*, float*, float*, const std::string&, int,
+                                       const StandardOcclusion<float>*);
 template void standardGatherCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
-                                        const double*, double*, double*, const std::string&, int);
+                                        const double*, double*, double*, const std::string&, int,
+                                        const StandardOcclusion<double>*);
 
 }  // namespace lpvlab

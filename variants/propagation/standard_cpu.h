@@ -1,7 +1,7 @@
 #pragma once
-// Standard propagation by gathering, on the CPU (first slice of the CPU backend, issue 13): the
-// transfer of shaders/propagation/standard_gather.comp without a geometry volume, at SH orders
-// 1-3, generic in its scalar type (float for speed, double for the tests).
+// Standard propagation by gathering, on the CPU (the CPU backend, strategy.h): the transfer of
+// shaders/propagation/standard_gather.comp at SH orders 1-3, with or without the geometry volume
+// and its bounces, generic in its scalar type (float for speed, double for the tests).
 //
 // One source of the mathematics: every number the kernel multiplies by comes from the shared
 // GLSL compiled as C++ (standard_faces.glsl: face directions, normals and solid angles;
@@ -26,6 +26,15 @@
 // x86-64-v3 (AVX2 and FMA) and x86-64-v4 (AVX-512), and the widest this CPU has runs ("auto"),
 // or the one named, so one binary is correct and fast from the oldest to the newest machine and
 // a machine with AVX-512 can test the narrower versions too.
+//
+// The geometry volume does not change during a frame's propagation, so what it does to each face
+// is found once per frame (StandardOcclusion, from the shared GLSL in double precision): per
+// target cell and face the transmittance T where the face's direction crosses the shared face
+// (geometry_volume_lookup.glsl's gvBlockingAt, gvTransmittance), by which the kernel multiplies
+// the face's flux; and, with bounces, per cell and outgoing face whose T < 1, the surfaces' albedo
+// times the blocked fraction and their lobe (gvMeanAlbedo, gvSurfaceNormal, shCosineLobeAt).
+// Bounces are sparse (only faces at surfaces block), so they are a list per row, added to the
+// row's cells after its vector pass.
 //
 // Threads: rows are shared out by oneTBB. Each target cell is written by exactly one task, in a
 // fixed order of additions, so the result does not depend on the thread count (no atomics).
@@ -53,10 +62,45 @@ struct StandardFaceTable {
   Real normalLobe[kDirections][kMaxCoefficients];                // [normal][k]
 };
 
+// What the geometry volume does to the faces of a frame's propagation (see above).
+template <class Real>
+struct StandardOcclusion {
+  static constexpr int kFaces = 30;  // per target cell: 6 neighbours x 5 faces
+  glm::ivec3 resolution{0};
+  int width = 0;  // cells per row as the kernel pads rows
+  // transmittance[(face * rows + row) * width + x], face = standardFaceSlot(direction, normal),
+  // rows = resolution.y * resolution.z; 1 in the padding.
+  std::vector<Real> transmittance;
+  // A face of a cell's own outgoing transfer that the GV blocks (T < 1), with bounces.
+  struct Bounce {
+    int x;                 // the cell in its row
+    int direction, normal; // the table's entry for the face (light flowing along -offset)
+    Real weight[3];        // per channel: mean albedo times (1 - T)
+  };
+  std::vector<Bounce> bounces;           // by row, then x
+  std::vector<std::size_t> firstBounce;  // row r's bounces: [firstBounce[r], firstBounce[r + 1])
+  std::vector<Real> bounceLobes;         // per bounce, `coefficients` values: lobe(n) / pi
+  int coefficients = 4;
+};
+
+// The slot of the face with `normal` receiving light from neighbour `direction` (normal !=
+// direction): 0..29.
+constexpr int standardFaceSlot(int direction, int normal) {
+  return direction * 5 + (normal < direction ? normal : normal - 1);
+}
+
 // Throws an Error for an SH order outside 1..3 or a negative or non-finite solid angle.
 template <class Real>
 StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
                                               double sideSolidAngle);
+
+// What a GV (geometry_volume.h's layout, on the GV's cells: one more than `resolution` per axis)
+// does to the faces of a grid of `resolution`; with `gvAlbedo` (its (rho A, A) per GV cell) also
+// the bounces. `table` gives the faces' solid angles and basis.
+template <class Real>
+StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& table,
+                                              const glm::ivec3& resolution, const float* gvBlocking,
+                                              const float* gvAlbedo);
 
 // The multiply-adds the kernel does per cell-iteration and channel with `coefficients` per
 // channel: the face products it does not skip plus the lobes' (each face's max and add not
@@ -70,11 +114,14 @@ std::vector<std::string> supportedCpuKernelInstructionSets();
 
 // One gathering iteration: target = what every cell receives from its six neighbours' `source`,
 // accumulated += target. Grids in grid.glsl's layout (3 channels x coefficients x cells).
+// `occlusion`: the GV's faces, made for this table and resolution, or null (no GV, or an
+// iteration before the GV's first occluded one).
 // `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for an unknown one or one
 // this CPU lacks. `threads`: 0 for oneTBB's default (all cores).
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated,
-                       const std::string& isa = "auto", int threads = 0);
+                       const std::string& isa = "auto", int threads = 0,
+                       const StandardOcclusion<Real>* occlusion = nullptr);
 
 }  // namespace lpvlab

@@ -128,10 +128,8 @@ bool SubsurfaceRendering::setUp(const SceneGpu& scene, const LightMaps& lightMap
 
   // The RSM: one layer per light view of the main light maps, with their view matrices.
   const int views = lightMaps.views, r = rsmResolution_;
-  std::vector<GpuView> viewRecords(static_cast<std::size_t>(views));
-  lightMaps.viewRecords.download(viewRecords.data(), viewRecords.size() * sizeof(GpuView));
   rsmClipFromWorld_.clear();
-  for (const GpuView& view : viewRecords) rsmClipFromWorld_.push_back(view.clipFromWorld);
+  for (const GpuView& view : lightMaps.records.views) rsmClipFromWorld_.push_back(view.clipFromWorld);
   rsm_ = LightMaps();
   rsm_.views = views;
   rsm_.rsmResolution = r;
