@@ -4,6 +4,10 @@
 // machine has, all cores. Reported per configuration: the median of 5 repetitions (after one
 // untimed warm-up iteration) of cell-iterations/s and of multiply-adds/s, counting the kernel's
 // own arithmetic (standardGatherMultiplyAdds per channel: the skipped zeros not counted).
+// Standard propagation at order 1 by gathering and scattering, without a GV, with a GV and with
+// its bounces (standard_variants/auto: a GV of four walls, as a box's, the kind of scene LPV
+// blocks in), and the per-frame cost of finding what that GV does to every face
+// (standard_occlusion_setup: makeStandardOcclusion, once per frame).
 // And the machine's multiply-add peak per instruction set (fma_peak/...), all cores running
 // independent chains of vector multiply-adds, so a kernel's figure can be read as a fraction of
 // it (SSE2 has no fused multiply-add: there a multiply and an add count as one).
@@ -42,6 +46,68 @@ void standardGather(benchmark::State& state, const std::string& isa) {
   state.counters["cell_it/s"] = benchmark::Counter(cellIterations, benchmark::Counter::kIsRate);
   state.counters["madd/s"] = benchmark::Counter(
       cellIterations * 3 * standardGatherMultiplyAdds(table.coefficients), benchmark::Counter::kIsRate);
+}
+
+// A GV (res + 1 cells per axis) whose cells on four walls (x = 1, y = 1, z = 1 and x = res / 2)
+// block like a surface facing +x, +y, +z or -x, with albedo 0.5.
+struct WallsGv {
+  std::vector<float> blocking, albedo;
+};
+WallsGv wallsGv(int resolution) {
+  const int n = resolution + 1, cells = n * n * n;
+  WallsGv gv{std::vector<float>(std::size_t(4) * cells, 0.0f), std::vector<float>(std::size_t(4) * cells, 0.0f)};
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const int axis = x == 1 ? 3 : y == 1 ? 1 : z == 1 ? 2 : x == resolution / 2 ? 3 : -1;
+        if (axis < 0) continue;
+        const int i = x + n * (y + n * z);
+        gv.blocking[i] = 0.8f;                                                  // c0
+        gv.blocking[std::size_t(axis) * cells + i] = axis == 2 ? 0.8f : -0.8f;  // band 1
+        for (int c = 0; c < 3; ++c) gv.albedo[std::size_t(4) * i + c] = 0.5f;
+        gv.albedo[std::size_t(4) * i + 3] = 1.0f;
+      }
+  return gv;
+}
+
+// Args: resolution, scatter (0, 1), occlusion (0 none, 1 GV, 2 GV and bounces).
+void standardVariants(benchmark::State& state) {
+  const int resolution = int(state.range(0));
+  const bool scatter = state.range(1) != 0;
+  const int occlusion = int(state.range(2));
+  const glm::ivec3 res(resolution);
+  const auto table = makeStandardFaceTable<float>(1, cubeFaceSolidAngles().farFace,
+                                                  cubeFaceSolidAngles().sideFace);
+  const WallsGv gv = wallsGv(resolution);
+  const StandardOcclusion<float> faces = makeStandardOcclusion(
+      table, res, gv.blocking.data(), occlusion == 2 ? gv.albedo.data() : nullptr);
+  const std::size_t cells = std::size_t(resolution) * resolution * resolution;
+  std::vector<float> current(cells * 12), next(cells * 12), accumulated(cells * 12, 0.0f);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+  for (float& v : current) v = value(random);
+  const auto step = scatter ? standardScatterCpu<float> : standardGatherCpu<float>;
+  const StandardOcclusion<float>* used = occlusion > 0 ? &faces : nullptr;
+  step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used);  // warm-up
+  for (auto _ : state) {
+    step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used);
+    std::swap(current, next);
+    benchmark::ClobberMemory();
+  }
+  state.counters["cell_it/s"] =
+      benchmark::Counter(double(cells) * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["bounce_faces"] = double(faces.bounces.size());
+}
+
+// Args: resolution, bounces (0, 1).
+void standardOcclusionSetup(benchmark::State& state) {
+  const int resolution = int(state.range(0));
+  const auto table = makeStandardFaceTable<float>(1, cubeFaceSolidAngles().farFace,
+                                                  cubeFaceSolidAngles().sideFace);
+  const WallsGv gv = wallsGv(resolution);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(makeStandardOcclusion(table, glm::ivec3(resolution), gv.blocking.data(),
+                                                   state.range(1) ? gv.albedo.data() : nullptr));
 }
 
 // `rounds` of kChains independent multiply-add chains on registers of `Bytes`: enough chains to
@@ -94,6 +160,20 @@ const bool registered = [] {
         ->Unit(benchmark::kMillisecond)
         ->Repetitions(5)
         ->ReportAggregatesOnly(true);
+  benchmark::RegisterBenchmark("standard_variants/auto", standardVariants)
+      ->ArgsProduct({{32, 64}, {0, 1}, {0, 1, 2}})
+      ->ArgNames({"res", "scatter", "gv"})
+      ->UseRealTime()
+      ->Unit(benchmark::kMillisecond)
+      ->Repetitions(5)
+      ->ReportAggregatesOnly(true);
+  benchmark::RegisterBenchmark("standard_occlusion_setup", standardOcclusionSetup)
+      ->ArgsProduct({{32, 64}, {0, 1}})
+      ->ArgNames({"res", "bounces"})
+      ->UseRealTime()
+      ->Unit(benchmark::kMillisecond)
+      ->Repetitions(5)
+      ->ReportAggregatesOnly(true);
   for (const std::string& isa : supportedCpuKernelInstructionSets())
     benchmark::RegisterBenchmark(("fma_peak/" + isa).c_str(), multiplyAddPeak, isa)
         ->UseRealTime()

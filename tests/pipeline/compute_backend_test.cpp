@@ -3,7 +3,7 @@
 //      the same images with the strategies on the CPU ("auto" on llvmpipe) and on GL, within
 //      float rounding;
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
-//      a strategy without a CPU kernel for its composition (here: scattering) on GL;
+//      a strategy without a CPU kernel for its composition (here: directed propagation) on GL;
 //   c. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
 //      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
 //      the key.
@@ -76,9 +76,11 @@ TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelEx
   EXPECT_EQ(resolveBackend("auto", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Gl);
   EXPECT_EQ(resolveBackend("cpu", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Cpu);
   EXPECT_EQ(resolveBackend("gl", "llvmpipe"), ComputeBackend::Gl);
-  // Standard propagation with the GV has a CPU kernel; scattering has none: "auto" keeps it on GL.
+  // Standard propagation has a CPU kernel with the GV and by scattering; directed propagation has
+  // none yet: "auto" keeps it on GL.
   EXPECT_TRUE(render({"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}).propagationOnCpu);
-  EXPECT_FALSE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
+  EXPECT_TRUE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
+  EXPECT_FALSE(render({"propagation.type=\"directed\""}).propagationOnCpu);
 }
 
 TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {

@@ -47,27 +47,30 @@ TEST(ResourceEconomy, NoOcclusionAllocatesNoGeometryVolume) {
 }
 
 TEST(ResourceEconomy, TheGeometryVolumeIsResPlusOneCubedTimesFourFloats) {
-  for (const std::string sources : {"[\"camera\"]", "[\"light\"]", "[\"light\", \"camera\"]"}) {
-    const Report r =
-        memoryOf({"occlusion.type=\"geometry_volume\"", "occlusion.sources=" + sources});
-    const std::size_t gv = cells(r.resolution + 1) * 4 * kFloat;
-    EXPECT_EQ(r.bytes.at("geometry_volume").get<std::size_t>(), gv) << sources;
-    // Merging two sources needs a second GV; one source fills the GV directly.
-    const bool both = sources.find(',') != std::string::npos;
-    EXPECT_EQ(r.bytes.at("occlusion").get<std::size_t>(), both ? gv : 0u) << sources;
-  }
+  for (const std::string backend : {"gl", "cpu"})
+    for (const std::string sources : {"[\"camera\"]", "[\"light\"]", "[\"light\", \"camera\"]"}) {
+      const Report r = memoryOf({"occlusion.type=\"geometry_volume\"", "occlusion.sources=" + sources,
+                                 "compute.backend=" + backend});
+      const std::size_t gv = cells(r.resolution + 1) * 4 * kFloat;
+      EXPECT_EQ(r.bytes.at("geometry_volume").get<std::size_t>(), gv) << sources;
+      // Merging two sources needs a second GV; one source fills the GV directly (on GL; the CPU
+      // fills a host copy, uploaded).
+      const bool both = sources.find(',') != std::string::npos;
+      const std::size_t own = backend == "gl" ? (both ? gv : 0u) : (both ? 2 * gv : gv);
+      EXPECT_EQ(r.bytes.at("occlusion").get<std::size_t>(), own) << sources << " on " << backend;
+    }
 }
 
 TEST(ResourceEconomy, LightGridAndScratchHoldExactlyTheOrdersCoefficients) {
   for (int order = 1; order <= 3; ++order) {
-    for (const std::string method : {"gather", "scatter"}) {
+    for (const std::string backend : {"gl", "cpu"}) {
       const Report r = memoryOf({"grid.sh_order=" + std::to_string(order),
-                                 "propagation.method=\"" + method + "\""});
+                                 "propagation.method=\"scatter\"", "compute.backend=" + backend});
       const std::size_t perGrid = cells(r.resolution) * 3 * (order + 1) * (order + 1) * kFloat;
       EXPECT_EQ(r.bytes.at("light_grid").get<std::size_t>(), 2 * perGrid) << "order " << order;
-      // On GL (scatter here) a ping-pong partner for `current`; gathering runs on the CPU on
-      // llvmpipe ("auto"), with host copies of current, its partner and the accumulated grid.
-      const std::size_t grids = method == "gather" ? 3 : 1;
+      // On GL a ping-pong partner for `current`; on the CPU host copies of current, its partner
+      // and the accumulated grid.
+      const std::size_t grids = backend == "cpu" ? 3 : 1;
       EXPECT_EQ(r.bytes.at("propagation").get<std::size_t>(), grids * perGrid) << "order " << order;
     }
   }

@@ -1,10 +1,10 @@
-// The CPU kernel of standard gathering with the geometry volume (variants/propagation/
-// standard_cpu.h's StandardOcclusion):
-//   a. float on every CPU instruction set this machine has, and double, against the GLSL gather
-//      kernel with a random GV (some GV cells empty, so the kernel's shortcut for unblocked cells
+// The CPU kernels of standard gathering and scattering with the geometry volume
+// (variants/propagation/standard_cpu.h's StandardOcclusion):
+//   a. float on every CPU instruction set this machine has, and double, against the GLSL kernel
+//      of the same method (gather, scatter) with a random GV (some GV cells empty, so the kernel's shortcut for unblocked cells
 //      is crossed) at SH orders 1-3, the GV switched on from the second iteration, with and
 //      without bounces (random albedo), current and accumulated grids;
-//   b. bit-identical results for 1 and 2 threads with the GV and bounces;
+//   b. bit-identical results for 1 and 2 threads with the GV and bounces, both methods;
 //   c. flux: an isotropic source's step never sends on more than it had, with albedo 1 it sends
 //      on all of it through the faces a GV of zeros leaves open, and with a GV of zeros the GV
 //      changes nothing (T = 1, nothing to bounce).
@@ -32,19 +32,21 @@ struct Propagated {
 };
 
 // `iterations` CPU steps from `injected` with the GV (and, with `albedo`, its bounces) from
-// iteration `firstOccluded` on.
+// iteration `firstOccluded` on, by `method`.
 template <class Real>
 Propagated cpuPropagate(const Grid& injected, const glm::ivec3& res, int order, int iterations,
                         const Grid& gv, const Grid* albedo, int firstOccluded,
-                        const std::string& isa = "auto", int threads = 0) {
+                        const std::string& isa = "auto", int threads = 0,
+                        const std::string& method = "gather") {
+  const auto step = method == "scatter" ? standardScatterCpu<Real> : standardGatherCpu<Real>;
   const StandardFaceTable<Real> table = makeStandardFaceTable<Real>(order, kFar, kSide);
   const StandardOcclusion<Real> occlusion =
       makeStandardOcclusion(table, res, gv.data(), albedo ? albedo->data() : nullptr);
   std::vector<Real> current(injected.begin(), injected.end()), next(current.size()),
       accumulated = current;
   for (int i = 0; i < iterations; ++i) {
-    standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa, threads,
-                      i >= firstOccluded ? &occlusion : nullptr);
+    step(table, res, current.data(), next.data(), accumulated.data(), isa, threads,
+         i >= firstOccluded ? &occlusion : nullptr);
     std::swap(current, next);
   }
   return {std::vector<double>(current.begin(), current.end()),
@@ -69,11 +71,11 @@ Grid sparseRandomGv(const glm::ivec3& gvRes, std::mt19937& random) {
   return gv;
 }
 
-void matchesGlsl(bool bounces) {
+void matchesGlsl(bool bounces, const std::string& method) {
   const glm::ivec3 res(9, 6, 7);
   std::mt19937 random(bounces ? 21 : 12);
   for (int order = 1; order <= 3; ++order) {
-    toml::table table = test::iterationsTable(3);
+    toml::table table = test::iterationsTable(3, method);
     table.insert("bounces", bounces);
     test::PropagationRig rig("standard", res, table, order, true);
     const Grid injected = test::randomFloats(rig.floatsPerGrid(), random);
@@ -85,13 +87,16 @@ void matchesGlsl(bool bounces) {
     rig.propagate();
     const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
     const Grid* albedoOrNull = bounces ? &albedo : nullptr;
-    const std::string what = "order " + std::to_string(order) + (bounces ? ", bounces" : "");
+    const std::string what =
+        method + ", order " + std::to_string(order) + (bounces ? ", bounces" : "");
     for (const std::string& isa : supportedCpuKernelInstructionSets()) {
-      const Propagated cpu = cpuPropagate<float>(injected, res, order, 3, gv, albedoOrNull, 1, isa);
+      const Propagated cpu =
+          cpuPropagate<float>(injected, res, order, 3, gv, albedoOrNull, 1, isa, 0, method);
       EXPECT_LT(maxRelativeDifference(cpu.current, gpuCurrent), 2e-5) << what << ", " << isa;
       EXPECT_LT(maxRelativeDifference(cpu.accumulated, gpuAccumulated), 2e-5) << what << ", " << isa;
     }
-    const Propagated cpu = cpuPropagate<double>(injected, res, order, 3, gv, albedoOrNull, 1);
+    const Propagated cpu =
+        cpuPropagate<double>(injected, res, order, 3, gv, albedoOrNull, 1, "auto", 0, method);
     EXPECT_LT(maxRelativeDifference(cpu.current, gpuCurrent), 2e-5) << what << ", double";
     EXPECT_LT(maxRelativeDifference(cpu.accumulated, gpuAccumulated), 2e-5) << what << ", double";
     // The GV made a difference, so the comparison covered it.
@@ -101,17 +106,21 @@ void matchesGlsl(bool bounces) {
   }
 }
 
-TEST(StandardCpuGv, MatchesTheGlslGatherKernelWithAGv) { matchesGlsl(false); }
-TEST(StandardCpuGv, MatchesTheGlslGatherKernelWithBounces) { matchesGlsl(true); }
+TEST(StandardCpuGv, MatchesTheGlslGatherKernelWithAGv) { matchesGlsl(false, "gather"); }
+TEST(StandardCpuGv, MatchesTheGlslGatherKernelWithBounces) { matchesGlsl(true, "gather"); }
+TEST(StandardCpuGv, MatchesTheGlslScatterKernelWithAGv) { matchesGlsl(false, "scatter"); }
+TEST(StandardCpuGv, MatchesTheGlslScatterKernelWithBounces) { matchesGlsl(true, "scatter"); }
 
 TEST(StandardCpuGv, ResultsDoNotDependOnTheThreadCount) {
   const glm::ivec3 res(16, 16, 16);
   std::mt19937 random(4);
   const Grid injected = test::randomFloats(std::size_t(16 * 16 * 16) * 27, random);
   const Grid gv = sparseRandomGv(res + 1, random), albedo = test::randomAlbedo(res + 1, random);
-  const Propagated one = cpuPropagate<float>(injected, res, 2, 4, gv, &albedo, 0, "auto", 1);
-  const Propagated two = cpuPropagate<float>(injected, res, 2, 4, gv, &albedo, 0, "auto", 2);
-  EXPECT_EQ(one.accumulated, two.accumulated);
+  for (const std::string method : {"gather", "scatter"}) {
+    const Propagated one = cpuPropagate<float>(injected, res, 2, 4, gv, &albedo, 0, "auto", 1, method);
+    const Propagated two = cpuPropagate<float>(injected, res, 2, 4, gv, &albedo, 0, "auto", 2, method);
+    EXPECT_EQ(one.accumulated, two.accumulated) << method;
+  }
 }
 
 TEST(StandardCpuGv, AStepNeverSendsOnMoreFluxThanItHad) {

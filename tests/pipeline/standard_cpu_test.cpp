@@ -7,7 +7,9 @@
 //   c. bit-identical results for 1 and 2 threads (no atomics, fixed order of additions);
 //   d. flux: an isotropic source sends its whole flux on in one step (the 30 faces tile the
 //      sphere);
-//   e. bad instruction sets and extreme grids (1 cell, 1 x 1 x N) are errors or stay finite.
+//   e. scattering (six passes, one per direction) against the GLSL scatter kernel and the CPU
+//      gather, at every order and instruction set;
+//   f. bad instruction sets and extreme grids (1 cell, 1 x 1 x N) are errors or stay finite.
 
 #include <cmath>
 #include <cstring>
@@ -80,6 +82,32 @@ TEST(StandardCpu, MatchesTheGlslGatherKernelAtEveryOrderAndInstructionSet) {
     const auto [current, accumulated] = cpuPropagate<double>(injected, res, order, 3);
     EXPECT_LT(maxRelativeDifference(current, gpuCurrent), 2e-5) << "order " << order << ", double";
     EXPECT_LT(maxRelativeDifference(accumulated, gpuAccumulated), 2e-5) << "order " << order;
+  }
+}
+
+TEST(StandardCpu, ScatterMatchesTheGlslScatterKernelAndTheGather) {
+  const glm::ivec3 res(9, 6, 7);
+  std::mt19937 random(15);
+  for (int order = 1; order <= 3; ++order) {
+    test::PropagationRig rig("standard", res, test::iterationsTable(3, "scatter"), order);
+    const Grid injected = test::randomFloats(rig.floatsPerGrid(), random);
+    rig.load(injected);
+    rig.propagate();
+    const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
+    const auto [gatherCurrent, gatherAccumulated] = cpuPropagate<double>(injected, res, order, 3);
+    const Grid gathered(gatherAccumulated.begin(), gatherAccumulated.end());
+    const StandardFaceTable<float> table = makeStandardFaceTable<float>(order, kFar, kSide);
+    for (const std::string& isa : supportedCpuKernelInstructionSets()) {
+      std::vector<float> current(injected.begin(), injected.end()), next(current.size()),
+          accumulated = current;
+      for (int i = 0; i < 3; ++i) {
+        standardScatterCpu(table, res, current.data(), next.data(), accumulated.data(), isa);
+        std::swap(current, next);
+      }
+      EXPECT_LT(maxRelativeDifference(current, gpuCurrent), 2e-5) << "order " << order << ", " << isa;
+      EXPECT_LT(maxRelativeDifference(accumulated, gpuAccumulated), 2e-5) << "order " << order << ", " << isa;
+      EXPECT_LT(maxRelativeDifference(accumulated, gathered), 2e-5) << "order " << order << ", " << isa;
+    }
   }
 }
 

@@ -99,7 +99,9 @@ TEST(WorkReport, PerUnitFiguresFollowTheKernelsRun) {
   EXPECT_DOUBLE_EQ(cpu, 3 * (6 * (2 + 4 * 3) + 6 * 2));
   EXPECT_DOUBLE_EQ(gl, 3 * 60 * 4);
   EXPECT_DOUBLE_EQ(perCell({"compute.backend=gl", "grid.sh_order=2"}), 3 * 60 * 9);
-  EXPECT_GT(perCell({"occlusion.type=\"geometry_volume\""}), gl);
+  // The GV adds its transmittances (on the CPU, found once per frame: one product per face).
+  EXPECT_DOUBLE_EQ(perCell({"occlusion.type=\"geometry_volume\""}), cpu + 3 * 30);
+  EXPECT_GT(perCell({"occlusion.type=\"geometry_volume\"", "compute.backend=gl"}), gl);
 }
 
 TEST(WorkReport, StrategiesWithoutAModelAreListedAsNotCounted) {

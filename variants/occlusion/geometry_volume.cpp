@@ -106,7 +106,13 @@ public:
     withAlbedo_ = setup.requirements.has(kSurfaceAlbedo);
     if (!active_) return;
     onCpu_ = runsOnCpu(setup.requirements);
-    if (onCpu_) return;
+    if (onCpu_) {  // the host copies, allocated once (each frame refills them)
+      const std::size_t gvCells = std::size_t(GeometryVolume::placementFor(grid).cellCount());
+      hostBlocking_.assign(gvCells * GeometryVolume::kCoefficients, 0.0f);
+      if (fromCamera_ && fromLight_) hostLight_.assign(gvCells * GeometryVolume::kCoefficients, 0.0f);
+      if (withAlbedo_) hostAlbedo_.assign(gvCells * 4, 0.0f);
+      return;
+    }
     const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
     if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
     if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);

@@ -13,10 +13,10 @@
 // surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
 // from, every occluded iteration, so light bounces as often as iterations allow
 // (standard_faces.glsl has the mathematics).
-// On the CPU backend ([compute] backend, strategy.h) gathering runs the CPU kernel of
-// standard_cpu.h, with the GV and its bounces: the injected grid (and the GV) are read back from
-// GL once, every iteration runs on the CPU, and the light and the accumulated grid go back to GL
-// for rendering (all inside the propagation stage's time). Scattering has no CPU kernel yet.
+// On the CPU backend ([compute] backend, strategy.h) gathering and scattering run the CPU kernels
+// of standard_cpu.h, with the GV and its bounces: the injected grid (and the GV) are read back
+// from GL once, every iteration runs on the CPU, and the light and the accumulated grid go back to
+// GL for rendering (all inside the propagation stage's time).
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
@@ -73,11 +73,7 @@ public:
       uses.reads(kGeometryVolume);
     }
   }
-  std::string cpuRefusal(const Requirements& requirements) const override {
-    (void)requirements;
-    if (scatter_) return "method = \"scatter\" has no CPU kernel (gathering computes the same grid)";
-    return {};
-  }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   void prepare(const StrategySetup& setup) override {
     const Requirements& requirements = setup.requirements;
@@ -134,22 +130,26 @@ public:
   // Per cell-iteration, with N coefficients per channel and 3 channels. Reads: the six
   // neighbours' 3N floats; writes: the cell's 3N; the accumulated grid's 3N read and written.
   // Transfers: the CPU kernel sums fluxes per face normal and skips the SH terms that vanish on
-  // axis-aligned faces (standardGatherMultiplyAdds: 96 of 30 x 4 + 6 x 4 at order 1); the GL
-  // kernels do 30 faces x 2N per channel (their SH evaluations per face not counted). Scattering adds into its 6 neighbours atomically (6 x 3N
-  // read-modify-writes instead of 3N writes). The GV reads its 8 corners (vec4) per cell and
-  // interpolates 8 x 4 per face; bounces run every face twice.
+  // axis-aligned faces (standardGatherMultiplyAdds: 96 of 30 x 4 + 6 x 4 at order 1; scattering
+  // adds the lobes in each of its six passes); the GL kernels do 30 faces x 2N per channel (their
+  // SH evaluations per face not counted). Scattering adds into its 6 neighbours (atomically on
+  // GL; in six read-modify-write passes on the CPU): 6 x 3N read-modify-writes instead of 3N
+  // writes. The GV reads its 8 corners (vec4) per cell and interpolates 8 x 4 per face; bounces
+  // run every face twice (on the CPU only the blocked faces, not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const double n = shape.coefficients;
     const bool onCpu = runsOnCpu(requirements);
-    double madds = onCpu ? 3.0 * standardGatherMultiplyAdds(shape.coefficients) : 3 * 30 * 2 * n;
+    const int cpuMadds = scatter_ ? standardScatterMultiplyAdds(shape.coefficients)
+                                  : standardGatherMultiplyAdds(shape.coefficients);
+    double madds = onCpu ? 3.0 * cpuMadds : 3 * 30 * 2 * n;
     double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
     if (requirements.has(kGeometryVolume)) {
       // The CPU reads each face's transmittance, found once per frame, and multiplies by it.
       madds += onCpu ? 3 * 30 : 30 * 8 * 4;
       bytes += onCpu ? 30 * 4 : 8 * 16;
     }
-    if (bounces_) madds *= 2;
+    if (bounces_ && !onCpu) madds *= 2;
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, madds, bytes}};
   }
 
@@ -178,8 +178,9 @@ private:
     }
     for (int i = 0; i < iterations_; ++i) {
       const bool occluded = gv && i >= gv->firstOccludedIteration;
-      standardGatherCpu(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
-                        cpuAccumulated_.data(), "auto", 0, occluded ? &cpuOcclusion_ : nullptr);
+      const auto iteration = scatter_ ? standardScatterCpu<float> : standardGatherCpu<float>;
+      iteration(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
+                cpuAccumulated_.data(), "auto", 0, occluded ? &cpuOcclusion_ : nullptr);
       std::swap(cpuCurrent_, cpuNext_);
     }
     uploadFloats(cpuCurrent_, grid.current);

@@ -252,16 +252,18 @@ struct RegisterOf {
 // is added as f = max(f + intensity, f), which is f + max(intensity, 0) with the sum folded into
 // the intensity's multiply-adds.
 // Occluded: each face's flux is max(intensity, 0) times the face's transmittance, read from
-// t[standardFaceSlot(d, normal) * tStride + x].
+// t[standardFaceSlot(d, normal) * tStride + x]. `only` >= 0: from that neighbour alone.
 template <int N, int Bytes, bool Occluded, class Real>
 [[gnu::always_inline]] inline void gatherRegister(const StandardFaceTable<Real>& table,
                                                   const Real* const (&from)[6],
                                                   const std::size_t (&stride)[6], int width, int x,
-                                                  const Real* t, std::size_t tStride, Real* out) {
+                                                  const Real* t, std::size_t tStride, int only,
+                                                  Real* out) {
   using V = typename RegisterOf<Real, Bytes>::type;
   V fluxByNormal[6] = {};
 #pragma GCC unroll 6
   for (int d = 0; d < 6; ++d) {
+    if (only >= 0 && d != only) continue;
     V s[N];
 #pragma GCC unroll 16
     for (int k = 0; k < N; ++k) std::memcpy(&s[k], from[d] + k * stride[d] + x, sizeof(V));
@@ -317,24 +319,40 @@ inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclu
   }
 }
 
-// to[x] = computed[x] and sum[x] += computed[x] for the `cells` cells of a row, a register at a
-// time (the compiler cannot prove the three rows apart to vectorise the plain loop).
+// How a row pass writes what it computed: gathering stores it and adds it to the accumulated
+// grid; scattering's first pass stores it, the others add it (the accumulated grid once after).
+enum class RowOutput { StoreAndAccumulate, Store, Add };
+
+// The row's `cells` computed values written as `output` says into `to` (and `sum`), a register at
+// a time (the compiler cannot prove the three rows apart to vectorise the plain loop).
 template <int Bytes, class Real>
-[[gnu::always_inline]] inline void storeRow(const Real* computed, Real* to, Real* sum, int cells) {
+[[gnu::always_inline]] inline void storeRow(const Real* computed, Real* to, Real* sum, int cells,
+                                            RowOutput output) {
   using V = typename RegisterOf<Real, Bytes>::type;
   constexpr int kLanes = RegisterOf<Real, Bytes>::kLanes;
   int x = 0;
   for (; x + kLanes <= cells; x += kLanes) {
     V value, total;
     std::memcpy(&value, computed + x, sizeof(V));
+    if (output == RowOutput::Add) {
+      std::memcpy(&total, to + x, sizeof(V));
+      total += value;
+      std::memcpy(to + x, &total, sizeof(V));
+      continue;
+    }
+    std::memcpy(to + x, &value, sizeof(V));
+    if (output == RowOutput::Store) continue;
     std::memcpy(&total, sum + x, sizeof(V));
     total += value;
-    std::memcpy(to + x, &value, sizeof(V));
     std::memcpy(sum + x, &total, sizeof(V));
   }
   for (; x < cells; ++x) {
+    if (output == RowOutput::Add) {
+      to[x] += computed[x];
+      continue;
+    }
     to[x] = computed[x];
-    sum[x] += computed[x];
+    if (output == RowOutput::StoreAndAccumulate) sum[x] += computed[x];
   }
 }
 
@@ -346,13 +364,15 @@ template <int Bytes, class Real>
 // pass the grid's end) is read from a staged copy padded with zeros. A zero source sends
 // max(0, 0) = 0 through every face, so the loop needs no test for the grid's edges. Each target
 // cell is then stored once and added to `accumulated`. With `occlusion`, the faces' fluxes are
-// attenuated and the row's bounces added before storing.
+// attenuated and the row's bounces added before storing. A scattering pass (`only` >= 0) takes
+// the light of neighbour `only` alone and writes as `output` says (the bounces in the first pass).
 template <int N, int Bytes, class Real>
 [[gnu::always_inline]] inline void gatherRowsImpl(const StandardFaceTable<Real>& table,
                                                   const glm::ivec3& res, const Real* source,
                                                   Real* target, Real* accumulated, int rowBegin,
                                                   int rowEnd,
-                                                  const StandardOcclusion<Real>* occlusion) {
+                                                  const StandardOcclusion<Real>* occlusion,
+                                                  int only, RowOutput output) {
   const std::size_t plane = std::size_t(res.x) * res.y * res.z;  // cells: one coefficient's span
   const Real* const sourceEnd = source + 3 * N * plane;
   const int width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
@@ -373,7 +393,8 @@ template <int N, int Bytes, class Real>
         const glm::ivec3 o = table.offset[d];
         Real* copy = stage.data() + d * staged;
         stride[d] = std::size_t(width);
-        if (y + o.y < 0 || y + o.y >= res.y || z + o.z < 0 || z + o.z >= res.z) {
+        if ((only >= 0 && d != only) || y + o.y < 0 || y + o.y >= res.y || z + o.z < 0 ||
+            z + o.z >= res.z) {
           from[d] = zeros.data();
           continue;
         }
@@ -395,25 +416,27 @@ template <int N, int Bytes, class Real>
         const std::size_t tStride = std::size_t(res.y) * res.z * width;
         const Real* t = occlusion->transmittance.data() + std::size_t(row) * width;
         for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
-          gatherRegister<N, Bytes, true>(table, from, stride, width, x, t, tStride, out.data());
-        addBounces<N>(table, *occlusion, row, source + channelBase + base, plane, channel, width,
-                      out.data());
+          gatherRegister<N, Bytes, true>(table, from, stride, width, x, t, tStride, only, out.data());
+        if (output != RowOutput::Add)
+          addBounces<N>(table, *occlusion, row, source + channelBase + base, plane, channel, width,
+                        out.data());
       } else {
         for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
-          gatherRegister<N, Bytes, false>(table, from, stride, width, x, static_cast<const Real*>(nullptr),
-                                          0, out.data());
+          gatherRegister<N, Bytes, false>(table, from, stride, width, x,
+                                          static_cast<const Real*>(nullptr), 0, only, out.data());
       }
       for (int k = 0; k < N; ++k)
         storeRow<Bytes>(out.data() + std::size_t(k) * width,
                         target + channelBase + k * plane + base,
-                        accumulated + channelBase + k * plane + base, res.x);
+                        accumulated + channelBase + k * plane + base, res.x, output);
     }
   }
 }
 
 template <class Real>
 using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*,
-                              Real*, Real*, int, int, const StandardOcclusion<Real>*);
+                              Real*, Real*, int, int, const StandardOcclusion<Real>*, int,
+                              RowOutput);
 
 // The row loop compiled for each instruction set with its register width (the inlined body takes
 // the function's target).
@@ -421,8 +444,9 @@ using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&,
   template <int N, class Real>                                                                  \
   attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,             \
                        const Real* source, Real* target, Real* accumulated, int begin, int end,  \
-                       const StandardOcclusion<Real>* occlusion) {                              \
-    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end, occlusion);   \
+                       const StandardOcclusion<Real>* occlusion, int only, RowOutput output) {  \
+    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end, occlusion,    \
+                             only, output);                                                     \
   }
 LPVLAB_GATHER_ROWS(gatherRowsX86_64, 16, )
 LPVLAB_GATHER_ROWS(gatherRowsV3, 32, __attribute__((target("arch=x86-64-v3"))))
@@ -458,15 +482,33 @@ const std::string& resolveIsa(const std::string& isa) {
 
 }  // namespace
 
-int standardGatherMultiplyAdds(int coefficients) {
+namespace {
+
+// The face products the kernel does per cell-iteration and channel, and the lobes' per pass.
+int faceMultiplyAdds(int coefficients) {
   int count = 0;
   for (int normal = 0; normal < 6; ++normal)
-    for (int k = 0; k < coefficients; ++k) {
-      count += lobeUsesBasis(normal, k) ? 1 : 0;
+    for (int k = 0; k < coefficients; ++k)
       for (int direction = 0; direction < 6; ++direction)
         count += faceUsesBasis(direction, normal, k) ? 1 : 0;
-    }
   return count;
+}
+
+int lobeMultiplyAdds(int coefficients) {
+  int count = 0;
+  for (int normal = 0; normal < 6; ++normal)
+    for (int k = 0; k < coefficients; ++k) count += lobeUsesBasis(normal, k) ? 1 : 0;
+  return count;
+}
+
+}  // namespace
+
+int standardGatherMultiplyAdds(int coefficients) {
+  return faceMultiplyAdds(coefficients) + lobeMultiplyAdds(coefficients);
+}
+
+int standardScatterMultiplyAdds(int coefficients) {
+  return faceMultiplyAdds(coefficients) + 6 * lobeMultiplyAdds(coefficients);
 }
 
 const std::vector<std::string>& cpuKernelInstructionSets() {
@@ -478,10 +520,14 @@ std::vector<std::string> supportedCpuKernelInstructionSets() {
   return namesThisCpuRuns(cpuKernelInstructionSets(), cpuRunsKernel);
 }
 
+namespace {
+
+// One iteration, gathering (one pass over the target rows) or scattering (six passes, one per
+// neighbour direction; see standardScatterCpu).
 template <class Real>
-void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
-                       const Real* source, Real* target, Real* accumulated, const std::string& isa,
-                       int threads, const StandardOcclusion<Real>* occlusion) {
+void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                  const Real* source, Real* target, Real* accumulated, const std::string& isa,
+                  int threads, const StandardOcclusion<Real>* occlusion, bool scatter) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
   if (occlusion && (occlusion->resolution != resolution || occlusion->coefficients != table.coefficients))
@@ -491,10 +537,23 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
                             : table.coefficients == 9 ? rowsFor<9, Real>(chosen)
                                                       : rowsFor<16, Real>(chosen);
   const int rowCount = resolution.y * resolution.z;
-  auto work = [&] {
+  const auto pass = [&](int only, RowOutput output) {
     tbb::parallel_for(tbb::blocked_range<int>(0, rowCount), [&](const tbb::blocked_range<int>& r) {
-      rows(table, resolution, source, target, accumulated, r.begin(), r.end(), occlusion);
+      rows(table, resolution, source, target, accumulated, r.begin(), r.end(), occlusion, only,
+           output);
     });
+  };
+  auto work = [&] {
+    if (!scatter) return pass(-1, RowOutput::StoreAndAccumulate);
+    for (int direction = 0; direction < 6; ++direction)
+      pass(direction, direction == 0 ? RowOutput::Store : RowOutput::Add);
+    const std::size_t floats = std::size_t(3) * table.coefficients * rowCount * resolution.x;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, floats),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        Real* __restrict sum = accumulated;
+                        const Real* __restrict add = target;
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) sum[i] += add[i];
+                      });
   };
   if (threads > 0) {
     tbb::task_arena arena(threads);
@@ -504,6 +563,29 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
   }
 }
 
+}  // namespace
+
+template <class Real>
+void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                       const Real* source, Real* target, Real* accumulated, const std::string& isa,
+                       int threads, const StandardOcclusion<Real>* occlusion) {
+  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion, false);
+}
+
+template <class Real>
+void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                        const Real* source, Real* target, Real* accumulated,
+                        const std::string& isa, int threads,
+                        const StandardOcclusion<Real>* occlusion) {
+  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion, true);
+}
+
+template void standardScatterCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
+                                        const float*, float*, float*, const std::string&, int,
+                                        const StandardOcclusion<float>*);
+template void standardScatterCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
+                                         const double*, double*, double*, const std::string&, int,
+                                         const StandardOcclusion<double>*);
 template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                        const float*, float*, float*, const std::string&, int,
                                        const StandardOcclusion<float>*);

@@ -36,6 +36,12 @@
 // Bounces are sparse (only faces at surfaces block), so they are a list per row, added to the
 // row's cells after its vector pass.
 //
+// Scattering (standardScatterCpu) sends each cell's light to one neighbour direction at a time:
+// six passes over the grid, each adding into the target what every cell sends that way (within a
+// pass each target receives from exactly one source, so no atomics), then the accumulated grid
+// once. It does scattering's extra work and traffic (six lobe sums and six read-modify-writes of
+// the target per cell, where gathering does one of each) and gives the same grid as gathering.
+//
 // Threads: rows are shared out by oneTBB. Each target cell is written by exactly one task, in a
 // fixed order of additions, so the result does not depend on the thread count (no atomics).
 
@@ -106,6 +112,8 @@ StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& tab
 // channel: the face products it does not skip plus the lobes' (each face's max and add not
 // counted).
 int standardGatherMultiplyAdds(int coefficients);
+// The same for scattering, whose six passes each add the lobes.
+int standardScatterMultiplyAdds(int coefficients);
 
 // The CPU instruction sets the kernel is compiled for, narrowest first.
 const std::vector<std::string>& cpuKernelInstructionSets();
@@ -123,5 +131,12 @@ void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& r
                        const Real* source, Real* target, Real* accumulated,
                        const std::string& isa = "auto", int threads = 0,
                        const StandardOcclusion<Real>* occlusion = nullptr);
+
+// The same iteration by scattering (see above): the same result, scattering's work.
+template <class Real>
+void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                        const Real* source, Real* target, Real* accumulated,
+                        const std::string& isa = "auto", int threads = 0,
+                        const StandardOcclusion<Real>* occlusion = nullptr);
 
 }  // namespace lpvlab
