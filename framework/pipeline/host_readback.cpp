@@ -16,8 +16,7 @@ void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer) {
   buffer.upload(host.data(), host.size() * sizeof(float));
 }
 
-HostImage downloadImage(const gl::Texture& texture) {
-  HostImage image;
+void downloadImage(const gl::Texture& texture, HostImage& image) {
   image.width = texture.width();
   image.height = texture.height();
   image.layers = std::max(1, texture.depth());
@@ -25,6 +24,11 @@ HostImage downloadImage(const gl::Texture& texture) {
   glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
                     GLsizei(image.texels.size() * sizeof(glm::vec4)), image.texels.data());
   checkGl("reading an image back for the CPU backend");
+}
+
+HostImage downloadImage(const gl::Texture& texture) {
+  HostImage image;
+  downloadImage(texture, image);
   return image;
 }
 
@@ -38,10 +42,17 @@ void uploadImage(const HostImage& image, gl::Texture& texture) {
   checkGl("uploading an image from the CPU backend");
 }
 
+void HostReadback::newFrame() {
+  for (auto& [id, copy] : images_) copy.current = false;
+}
+
 const HostImage& HostReadback::image(const gl::Texture& texture) {
-  auto it = images_.find(texture.id());
-  if (it == images_.end()) it = images_.emplace(texture.id(), downloadImage(texture)).first;
-  return it->second;
+  Copy& copy = images_[texture.id()];
+  if (!copy.current) {
+    downloadImage(texture, copy.image);  // into last frame's storage: no allocation
+    copy.current = true;
+  }
+  return copy.image;
 }
 
 }  // namespace lpvlab

@@ -33,17 +33,23 @@ void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer);
 
 // Level 0 of an RGBA32F texture (every layer of an array texture), and back (2D only).
 HostImage downloadImage(const gl::Texture& texture);
+void downloadImage(const gl::Texture& texture, HostImage& image);  // reusing image's storage
 void uploadImage(const HostImage& image, gl::Texture& texture);
 
 class HostReadback {
 public:
-  // Forgets the last frame's copies (the pipeline calls it as a frame begins).
-  void newFrame() { images_.clear(); }
+  // Marks the last frame's copies out of date (the pipeline calls it as a frame begins); their
+  // storage is kept, so a frame's read-backs allocate nothing.
+  void newFrame();
   // The texture's texels this frame: read back on the first call of the frame.
   const HostImage& image(const gl::Texture& texture);
 
 private:
-  std::map<unsigned, HostImage> images_;  // by GL texture name
+  struct Copy {
+    HostImage image;
+    bool current = false;  // read back this frame
+  };
+  std::map<unsigned, Copy> images_;  // by GL texture name
 };
 
 }  // namespace lpvlab

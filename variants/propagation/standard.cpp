@@ -32,6 +32,7 @@
 // |            |        |          | scaled, since the transfer is linear in them                  |
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -154,33 +155,43 @@ public:
   }
 
   std::size_t memoryBytes() const override {
-    return scratch_.size() +
-           (cpuCurrent_.size() + cpuNext_.size() + cpuAccumulated_.size() + cpuGv_.size() +
-            cpuGvAlbedo_.size() + cpuOcclusion_.transmittance.size() +
-            cpuOcclusion_.bounceLobes.size()) * sizeof(float) +
-           cpuOcclusion_.bounces.size() * sizeof(StandardOcclusion<float>::Bounce);
+    std::size_t bytes = scratch_.size() + (cpuCurrent_.size() + cpuNext_.size() +
+                                           cpuAccumulated_.size() + cpuGv_.size() +
+                                           cpuGvAlbedo_.size()) * sizeof(float);
+    for (const auto& [gv, cache] : cpuOcclusion_) bytes += cache.bytes();
+    return bytes;
   }
 
 private:
-  // With a GV, what it does to every face (and its bounces) is found once for the frame
-  // (standard_cpu.h), and used from its first occluded iteration on.
+  // With a GV, what it does to every face (and its bounces) is found once per GV (standard_cpu.h),
+  // and used from its first occluded iteration on.
   void propagateOnCpu(Frame& frame) {
     LightGrid& grid = frame.lightGrid;
     downloadFloats(grid.current, grid.floatsPerGrid(), cpuCurrent_);
     cpuAccumulated_ = cpuCurrent_;  // the pipeline starts the accumulated grid as the injected one
     const GeometryVolume* gv = frame.find(kGeometryVolume);
+    const StandardOcclusion<float>* occlusion = nullptr;
     if (gv) {
       const std::size_t gvCells = std::size_t(gv->geometry.cellCount());
       downloadFloats(gv->blocking, gvCells * GeometryVolume::kCoefficients, cpuGv_);
       if (bounces_) downloadFloats(frame.get(kSurfaceAlbedo).albedo, gvCells * 4, cpuGvAlbedo_);
-      cpuOcclusion_ = makeStandardOcclusion(cpuTable_, grid.geometry.resolution, cpuGv_.data(),
+      // Found again only when the level's GV (or its albedo) differs from the last frame's, bit
+      // for bit: in a static scene, the first frame (the warm-up) pays for it.
+      OcclusionCache& cache = cpuOcclusion_[gv];
+      if (cache.faces.resolution != grid.geometry.resolution || cpuGv_ != cache.gv ||
+          cpuGvAlbedo_ != cache.albedo) {
+        cache.faces = makeStandardOcclusion(cpuTable_, grid.geometry.resolution, cpuGv_.data(),
                                             bounces_ ? cpuGvAlbedo_.data() : nullptr);
+        cache.gv = cpuGv_;
+        cache.albedo = cpuGvAlbedo_;
+      }
+      occlusion = &cache.faces;
     }
     for (int i = 0; i < iterations_; ++i) {
       const bool occluded = gv && i >= gv->firstOccludedIteration;
       const auto iteration = scatter_ ? standardScatterCpu<float> : standardGatherCpu<float>;
       iteration(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
-                cpuAccumulated_.data(), "auto", 0, occluded ? &cpuOcclusion_ : nullptr);
+                cpuAccumulated_.data(), "auto", 0, occluded ? occlusion : nullptr);
       std::swap(cpuCurrent_, cpuNext_);
     }
     uploadFloats(cpuCurrent_, grid.current);
@@ -197,7 +208,17 @@ private:
   StandardFaceTable<float> cpuTable_;
   std::vector<float> cpuCurrent_, cpuNext_, cpuAccumulated_;  // host copies, on the CPU backend
   std::vector<float> cpuGv_, cpuGvAlbedo_;
-  StandardOcclusion<float> cpuOcclusion_;
+  // Per level (its GV): what the GV does to the faces, found from this GV and albedo.
+  struct OcclusionCache {
+    StandardOcclusion<float> faces;
+    std::vector<float> gv, albedo;
+    std::size_t bytes() const {
+      return (faces.transmittance.size() + faces.bounceLobes.size() + gv.size() + albedo.size()) *
+                 sizeof(float) +
+             faces.bounces.size() * sizeof(StandardOcclusion<float>::Bounce);
+    }
+  };
+  std::map<const GeometryVolume*, OcclusionCache> cpuOcclusion_;
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "standard",
