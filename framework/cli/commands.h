@@ -25,7 +25,7 @@ struct Options {
   std::string metric;                     // report: the error metric of the speed/accuracy plot
 };
 
-// "compute: BACKEND; on the CPU: TABLES" from a Pipeline::computeReport().
+// "compute: BACKEND; on the CPU: [direct, ]TABLES" from a Pipeline::computeReport().
 std::string computeLine(const nlohmann::json& compute);
 
 int runCommand(const Options& options);

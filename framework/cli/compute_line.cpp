@@ -6,7 +6,7 @@ namespace lpvlab::cli {
 
 std::string computeLine(const nlohmann::json& compute) {
   const nlohmann::json strategies = compute.value("strategies", nlohmann::json::object());
-  std::string onCpu;
+  std::string onCpu = compute.value("direct", std::string()) == "cpu" ? "direct" : "";
   for (const auto& [table, where] : strategies.items())
     if (where == "cpu") onCpu += (onCpu.empty() ? "" : ", ") + table;
   return "compute: " + compute.value("backend", std::string("?")) +

@@ -1,6 +1,7 @@
 #include "framework/pipeline/direct_lighting.h"
 
 #include "framework/gl/dispatch.h"
+#include "framework/pipeline/direct_lighting_cpu.h"
 
 namespace lpvlab {
 
@@ -9,10 +10,14 @@ namespace direct_kernel {
 #include "shaders/lighting/direct_interface.glsl"
 }
 
-DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings)
-    : program_(shaders.compute("lighting/direct.comp")), settings_(settings) {}
+DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings, bool onCpu)
+    : settings_(settings), onCpu_(onCpu) {
+  if (!onCpu_) program_ = shaders.compute("lighting/direct.comp");
+}
 
-void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct) {
+void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct,
+                            HostReadback& host) {
+  if (onCpu_) return renderOnCpu(gbuffer, maps, direct, host);
   using namespace direct_kernel;
   program_.use();
   glBindTextureUnit(UNIT_G_POSITION, gbuffer.position.id());
@@ -29,6 +34,26 @@ void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::T
   glUniform1f(LOCATION_DEPTH_BIAS, settings_.depthBias);
   dispatchCovering({gbuffer.width, gbuffer.height, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                    GL_ALL_BARRIER_BITS);
+}
+
+// The G-buffer and the shadow maps come from the frame's host copies (read back once per frame,
+// shared with the CPU strategies); the image goes back to GL.
+void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps,
+                                 gl::Texture& direct, HostReadback& host) {
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the raster passes, before reading them back
+  hostDirect_.width = gbuffer.width;
+  hostDirect_.height = gbuffer.height;
+  hostDirect_.texels.resize(std::size_t(gbuffer.width) * gbuffer.height);
+  directLightingCpu({.position = &host.image(gbuffer.position),
+                     .normal = &host.image(gbuffer.normal),
+                     .albedo = &host.image(gbuffer.albedo),
+                     .emission = &host.image(gbuffer.emission),
+                     .shadowDepth = &host.depth(maps.shadowDepth),
+                     .records = &maps.records,
+                     .normalOffsetTexels = settings_.normalOffsetTexels,
+                     .depthBias = settings_.depthBias},
+                    hostDirect_);
+  uploadImage(hostDirect_, direct);
 }
 
 }  // namespace lpvlab

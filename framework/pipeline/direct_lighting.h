@@ -1,5 +1,7 @@
 #pragma once
-// Direct light: Lambertian, shadow-mapped, plus emission (shaders/lighting/direct.comp).
+// Direct light: Lambertian, shadow-mapped, plus emission (shaders/lighting/direct_light.glsl), on
+// GL (direct.comp) or, on the CPU backend, on the CPU (direct_lighting_cpu.h) from the frame's
+// read-back images.
 
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
@@ -14,13 +16,21 @@ struct ShadowSettings {
 
 class DirectLighting {
 public:
-  DirectLighting(ShaderCompiler& shaders, ShadowSettings settings);
-  void render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct);
+  // onCpu: run on the CPU (the backend is "cpu", or "auto" on a software GL renderer).
+  DirectLighting(ShaderCompiler& shaders, ShadowSettings settings, bool onCpu);
+  // `host`: the frame's read-back images (used on the CPU).
+  void render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct, HostReadback& host);
+  bool onCpu() const { return onCpu_; }
+  std::size_t memoryBytes() const { return hostDirect_.texels.size() * sizeof(glm::vec4); }
 
 private:
+  void renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct,
+                   HostReadback& host);
+
   Program program_;
   ShadowSettings settings_;
+  bool onCpu_;
+  HostImage hostDirect_;  // on the CPU
 };
-
 
 }  // namespace lpvlab

@@ -26,6 +26,16 @@ void downloadImage(const gl::Texture& texture, HostImage& image) {
   checkGl("reading an image back for the CPU backend");
 }
 
+void downloadDepth(const gl::Texture& texture, HostDepthImage& image) {
+  image.width = texture.width();
+  image.height = texture.height();
+  image.layers = std::max(1, texture.depth());
+  image.depths.resize(std::size_t(image.width) * image.height * image.layers);
+  glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    GLsizei(image.depths.size() * sizeof(float)), image.depths.data());
+  checkGl("reading a depth image back for the CPU backend");
+}
+
 HostImage downloadImage(const gl::Texture& texture) {
   HostImage image;
   downloadImage(texture, image);
@@ -44,12 +54,22 @@ void uploadImage(const HostImage& image, gl::Texture& texture) {
 
 void HostReadback::newFrame() {
   for (auto& [id, copy] : images_) copy.current = false;
+  for (auto& [id, copy] : depths_) copy.current = false;
 }
 
 const HostImage& HostReadback::image(const gl::Texture& texture) {
-  Copy& copy = images_[texture.id()];
+  Copy<HostImage>& copy = images_[texture.id()];
   if (!copy.current) {
     downloadImage(texture, copy.image);  // into last frame's storage: no allocation
+    copy.current = true;
+  }
+  return copy.image;
+}
+
+const HostDepthImage& HostReadback::depth(const gl::Texture& texture) {
+  Copy<HostDepthImage>& copy = depths_[texture.id()];
+  if (!copy.current) {
+    downloadDepth(texture, copy.image);
     copy.current = true;
   }
   return copy.image;

@@ -18,6 +18,12 @@ struct HostImage {
   std::vector<glm::vec4> texels;  // texels[x + width * (y + height * layer)], y = 0 the bottom row
 };
 
+// A depth texture's level 0 (every layer), one float per texel, bottom row first.
+struct HostDepthImage {
+  int width = 0, height = 0, layers = 1;
+  std::vector<float> depths;  // depths[x + width * (y + height * layer)]
+};
+
 // A frame's reflective shadow maps on the host (LightMaps' RSM textures), one layer per view.
 struct RsmImages {
   const HostImage* position = nullptr;  // RGBA: world position, w = 1 where covered
@@ -34,6 +40,8 @@ void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer);
 // Level 0 of an RGBA32F texture (every layer of an array texture), and back (2D only).
 HostImage downloadImage(const gl::Texture& texture);
 void downloadImage(const gl::Texture& texture, HostImage& image);  // reusing image's storage
+// Level 0 of a depth texture, reusing image's storage.
+void downloadDepth(const gl::Texture& texture, HostDepthImage& image);
 void uploadImage(const HostImage& image, gl::Texture& texture);
 
 class HostReadback {
@@ -43,13 +51,17 @@ public:
   void newFrame();
   // The texture's texels this frame: read back on the first call of the frame.
   const HostImage& image(const gl::Texture& texture);
+  // The same for a depth texture.
+  const HostDepthImage& depth(const gl::Texture& texture);
 
 private:
+  template <class Image>
   struct Copy {
-    HostImage image;
+    Image image;
     bool current = false;  // read back this frame
   };
-  std::map<unsigned, Copy> images_;  // by GL texture name
+  std::map<unsigned, Copy<HostImage>> images_;  // by GL texture name
+  std::map<unsigned, Copy<HostDepthImage>> depths_;
 };
 
 }  // namespace lpvlab

@@ -31,6 +31,19 @@ struct GpuView {
 };
 static_assert(sizeof(GpuView) == 80);
 
+// A record in double precision, as the shared GLSL's GpuLight and GpuView compile as C++
+// (framework/math/shared.h; each translation unit has its own such types, so the caller names
+// them): for CPU kernels that call the GL kernels' shared functions.
+template <class SharedLight>
+SharedLight sharedLightRecord(const GpuLight& light) {
+  return {glm::dvec4(light.positionType), glm::dvec4(light.directionCosOuter),
+          glm::dvec4(light.intensityCosInner), light.viewOfFace0123, light.viewOfFace45};
+}
+template <class SharedView>
+SharedView sharedViewRecord(const GpuView& view) {
+  return {glm::dmat4(view.clipFromWorld), glm::dvec4(view.params)};
+}
+
 struct LightViews {
   std::vector<GpuLight> lights;
   std::vector<GpuView> views;

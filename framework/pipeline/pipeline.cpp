@@ -80,7 +80,10 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   lightMapsPass_ = std::make_unique<LightMapsPass>(
       shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,
       settings.shadowResolution);
-  direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow);
+  // Direct light has a CPU kernel for every composition: it follows the backend.
+  direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow,
+                                             requirements_.backend != ComputeBackend::Gl);
+  if (direct_->onCpu()) cpuStages_.insert("direct");
   // Every level has the grid's cell counts, so strategies size their scratch once, from `grid`.
   for (int level = 0; level < requirements_.cascadeLevels; ++level) {
     levels_.emplace_back(settings.grid, requirements_.shOrder);
@@ -172,7 +175,8 @@ FrameTimes Pipeline::renderFrame() {
   stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
   stage("direct", times, [&] {
-    direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_);
+    direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,
+                    hostReadback_);
   });
   stage("clear", times, [&] {
     if (levels > 1 && settings_.cascades.placement == CascadePlacement::Depth)
@@ -265,6 +269,7 @@ nlohmann::json Pipeline::computeReport() const {
     stages[table] = strategy->runsOnCpu(requirements_) ? "cpu" : "gl";
   return {{"backend", backendName(requirements_.backend)},
           {"raster_passes", "gl"},
+          {"direct", direct_->onCpu() ? "cpu" : "gl"},
           {"strategies", stages}};
 }
 
@@ -313,7 +318,8 @@ nlohmann::json Pipeline::memoryReport() const {
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
       {"light_grid", sum(levels_, [](const LightGrid& g) { return g.memoryBytes(); })},
-      {"output_images", directImage_.bytes() + indirectImage_.bytes()}};
+      {"output_images", directImage_.bytes() + indirectImage_.bytes()},
+      {"direct", direct_->memoryBytes()}};
   for (const ResourceTable& resources : resources_)
     for (const auto& [name, size] : resources.memoryBytes())
       bytes[name] = bytes.value(name, std::size_t(0)) + size;

@@ -177,15 +177,18 @@ TEST_F(Cli, RunAndBenchSayWhereTheKernelsRan) {
                                  " -s timing.repeats=1 -s grid.resolution=8",
                              work(), logs());
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  // On llvmpipe "auto" runs every strategy of the default composition on the CPU.
-  EXPECT_NE(r.err.find("compute: cpu where possible; on the CPU: injection, occlusion, propagation, "
-                       "rendering"),
+  // On llvmpipe "auto" runs direct light and every strategy of the default composition on the CPU.
+  EXPECT_NE(r.err.find("compute: cpu where possible; on the CPU: direct, injection, occlusion, "
+                       "propagation, rendering"),
             std::string::npos)
       << r.err;
   const nlohmann::json manifest = nlohmann::json::parse(readFile(out / "manifest.json"));
   const nlohmann::json* propagation = find(manifest, {"compute", "strategies", "propagation"});
   ASSERT_TRUE(propagation);
   EXPECT_EQ(*propagation, "cpu");
+  const nlohmann::json* direct = find(manifest, {"compute", "direct"});
+  ASSERT_TRUE(direct);
+  EXPECT_EQ(*direct, "cpu");
   ASSERT_TRUE(find(manifest, {"work", "propagation"}));
 }
 

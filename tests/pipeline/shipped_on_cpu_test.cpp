@@ -1,7 +1,9 @@
 // The shipped experiments on the CPU backend (issue 13's "done when"): the first configuration of
 // every file in experiments/, made small, either is refused by `[compute] backend = "cpu"` with a
 // strategy named (one without a CPU kernel yet), or renders the same images as on GL, within
-// float rounding (or is a file for the path tracer alone, whose scene has no LPV light). Prints which run and which are refused, and why: the CPU backend's coverage.
+// float rounding (direct light: but for rare shadow comparisons, backend_comparison.h), or is a
+// file for the path tracer alone, whose scene has no LPV light. Prints which run and which are
+// refused, and why: the CPU backend's coverage.
 // The default experiment must run.
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/sweep.h"
 #include "framework/pipeline/pipeline.h"
+#include "backend_comparison.h"
 #include "io/temp_dir.h"
 #include "pipeline_test_support.h"
 
@@ -30,14 +33,19 @@ const std::vector<std::string> kSmall = {
     "output.width=48", "output.height=48", "light_maps.rsm_resolution=32",
     "light_maps.shadow_resolution=128", "timing.warmup=0", "timing.repeats=1"};
 
-Image combined(const std::string& file, const std::string& backend) {
+struct Rendered {
+  Image direct, indirect;
+};
+
+Rendered render(const std::string& file, const std::string& backend) {
   std::vector<std::string> overrides = kSmall;
   overrides.push_back("compute.backend=\"" + backend + "\"");
   Experiment e = loadExperiment(file, overrides);
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   pipeline.renderFrame();
-  return findAov(pipeline.readOutputs(), "combined");
+  const std::vector<NamedImage> aovs = pipeline.readOutputs();
+  return {findAov(aovs, "direct"), findAov(aovs, "indirect")};
 }
 
 TEST(ShippedOnCpu, EachShippedExperimentRunsOnTheCpuAsOnGlOrIsRefusedByName) {
@@ -65,24 +73,18 @@ TEST(ShippedOnCpu, EachShippedExperimentRunsOnTheCpuAsOnGlOrIsRefusedByName) {
                         why.substr(strategy == std::string::npos ? 0 : strategy, end - strategy));
       continue;
     }
-    Image cpu, gl;
+    Rendered cpu, gl;
     try {
-      cpu = combined(first.string(), "cpu");
-      gl = combined(first.string(), "gl");
+      cpu = render(first.string(), "cpu");
+      gl = render(first.string(), "gl");
     } catch (const Error& error) {  // a file for the path tracer alone: no LPV light
       const std::string why = error.what();
       EXPECT_NE(why.find("no light the LPV pipeline can use"), std::string::npos) << why;
       refused.push_back(file.filename().string() + ": not an LPV experiment (no LPV light)");
       continue;
     }
-    ASSERT_EQ(cpu.pixels.size(), gl.pixels.size());
-    double largest = 0.0, scale = 0.0;
-    for (std::size_t i = 0; i < cpu.pixels.size(); ++i) {
-      largest = std::max(largest, double(std::abs(cpu.pixels[i] - gl.pixels[i])));
-      scale = std::max(scale, double(std::abs(gl.pixels[i])));
-    }
-    EXPECT_GT(scale, 0.0);
-    EXPECT_LT(largest, 1e-4 * scale);
+    test::expectSameImage(cpu.indirect, gl.indirect, "indirect");
+    test::expectSameDirectLight(cpu.direct, gl.direct, "direct");
     ran.push_back(file.filename().string());
   }
   std::cout << "[ cpu backend ] " << ran.size() << " of " << files.size()

@@ -63,15 +63,6 @@ void addSurfels(std::size_t count, PositionOf positionOf, SurfelAt surfelAt, con
   });
 }
 
-shared::GpuLight sharedRecord(const GpuLight& light) {
-  return {glm::dvec4(light.positionType), glm::dvec4(light.directionCosOuter),
-          glm::dvec4(light.intensityCosInner), light.viewOfFace0123, light.viewOfFace45};
-}
-
-shared::GpuView sharedRecord(const GpuView& view) {
-  return {glm::dmat4(view.clipFromWorld), glm::dvec4(view.params)};
-}
-
 }  // namespace
 
 void addCameraSurfelsCpu(const GBufferImages& g, const glm::vec3& cameraPosition, float texelEdge,
@@ -103,9 +94,10 @@ void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvT
   if (rsm.position->height != resolution || std::size_t(rsm.position->layers) > records.views.size())
     throw Error("geometry volume (CPU): the RSM is not square or has a layer without its view");
   std::vector<shared::GpuView> views;
-  for (const GpuView& view : records.views) views.push_back(sharedRecord(view));
+  for (const GpuView& view : records.views) views.push_back(sharedViewRecord<shared::GpuView>(view));
   std::vector<shared::GpuLight> lights;
-  for (const GpuLight& light : records.lights) lights.push_back(sharedRecord(light));
+  for (const GpuLight& light : records.lights)
+    lights.push_back(sharedLightRecord<shared::GpuLight>(light));
   const std::size_t perLayer = std::size_t(resolution) * resolution;
   addSurfels(
       texels, [&](std::size_t i) { return rsm.position->texels[i]; },

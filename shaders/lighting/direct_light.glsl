@@ -1,0 +1,83 @@
+// Direct light at a surface point: Lambertian reflection of each light, shadow-mapped, plus the
+// surface's own emission. Out: radiance, W/(m^2 sr).
+//   L = emission + albedo / pi * sum over lights of E_light * visibility
+//   point/spot: E = I * falloff * cos(theta) / r^2;  directional: E = E_perp * cos(theta)
+// Written in the shared subset (common/prelude.glsl): the GL kernel (direct.comp) and the CPU
+// kernel (framework/pipeline/direct_lighting_cpu.cpp) call these same functions. The includer
+// defines, before including this file, how the records and the shadow maps are read:
+//   GpuLight directLight(int i)              light record i (lights_gpu.glsl)
+//   GpuView directView(int v)                view record v
+//   real shadowTap(int view, vec2 uv, real reference)
+//                                            one 2x2 depth-compare tap of view's shadow map at
+//                                            window position uv: GL's LINEAR, LEQUAL filtering
+//                                            (GL: the texture unit; CPU: shadow_tap.glsl)
+#ifndef LPVLAB_DIRECT_LIGHT_GLSL
+#define LPVLAB_DIRECT_LIGHT_GLSL
+#include "../common/lights_gpu.glsl"
+#include "../common/lights.glsl"
+
+int cubeFace(vec3 d) {
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x > 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y > 0.0 ? 2 : 3;
+  return d.z > 0.0 ? 4 : 5;
+}
+
+int viewOfFace(GpuLight light, int face) {
+  return face < 4 ? light.viewOfFace0123[face] : light.viewOfFace45[face - 4];
+}
+
+// Fraction of a 3x3 tap of the shadow map of `view` that sees p.
+real shadowVisibility(int view, vec3 p, int resolution, real depthBias) {
+  vec4 clip = directView(view).clipFromWorld * vec4(p, 1.0);
+  vec3 window = vec3(clip) / clip.w * real(0.5) + real(0.5);
+  real texel = real(1.0) / real(resolution);
+  real lit = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x)
+      lit += shadowTap(view, vec2(window.x + real(x) * texel, window.y + real(y) * texel),
+                       window.z - depthBias);
+  return lit / real(9.0);
+}
+
+// The direct radiance of a surface point p (unit normal n, Lambertian albedo, emission), from
+// `lightCount` lights whose shadow maps have shadowResolution^2 texels; the shadow lookup moves
+// normalOffsetTexels shadow texels along n and compares depthBias (window units) nearer.
+vec3 directRadiance(vec3 p, vec3 n, vec3 albedo, vec3 emission, int lightCount,
+                    int shadowResolution, real normalOffsetTexels, real depthBias) {
+  vec3 irradiance = vec3(0.0);
+  for (int i = 0; i < lightCount; ++i) {
+    GpuLight light = directLight(i);
+    int type = int(light.positionType.w);
+    vec3 toLight;
+    vec3 e;
+    int view;
+    real texelWorld;
+    if (type == LIGHT_DIRECTIONAL) {
+      toLight = -vec3(light.directionCosOuter);
+      e = vec3(light.intensityCosInner);
+      view = light.viewOfFace0123.x;
+      texelWorld = view >= 0 ? real(directView(view).params.y) / real(shadowResolution) : real(0.0);
+    } else {
+      vec3 d = vec3(light.positionType) - p;
+      real r2 = max(dot(d, d), real(1e-12));
+      real r = sqrt(r2);
+      toLight = d / r;
+      real falloff = type == LIGHT_SPOT
+          ? spotFalloff(dot(-toLight, vec3(light.directionCosOuter)), light.intensityCosInner.w,
+                        light.directionCosOuter.w)
+          : real(1.0);
+      e = vec3(light.intensityCosInner) * (falloff / r2);
+      view = viewOfFace(light, cubeFace(-d));
+      // A texel of a 90-degree face spans about 2 r / N metres at distance r.
+      texelWorld = real(2.0) * r / real(shadowResolution);
+    }
+    real cosTheta = dot(n, toLight);
+    if (cosTheta <= 0.0 || view < 0 || e == vec3(0.0)) continue;
+    irradiance += e * (cosTheta * shadowVisibility(view, p + n * (normalOffsetTexels * texelWorld),
+                                                   shadowResolution, depthBias));
+  }
+  return emission + albedo / PI * irradiance;
+}
+
+#endif
