@@ -8,6 +8,16 @@
 #include "framework/math/cascade_placement.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
+#include "framework/pipeline/host_readback.h"
+
+// restrict.glsl over a host copy of the child grid (the CPU carry).
+LPVLAB_SHARED_GLSL_BEGIN
+struct RestrictKernel {
+  const float* child;
+  real childCoefficient(int index) { return real(child[index]); }
+#include "shaders/cascade/restrict.glsl"
+};
+LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 
@@ -33,12 +43,15 @@ void setCascadeBlendUniforms(const Frame& frame, int level) {
   glUniform3iv(LOCATION_CASCADE_RESOLUTION, 1, &levels[std::size_t(level)].geometry.resolution[0]);
 }
 
-CascadeCarry::CascadeCarry(ShaderCompiler& shaders, int shOrder)
-    : program_(shaders.compute("cascade/restrict.comp",
-                               {SpecConstant::i(0, shared::shCoefficientCount(shOrder))})) {}
+CascadeCarry::CascadeCarry(ShaderCompiler& shaders, int shOrder, bool onCpu)
+    : coefficients_(shared::shCoefficientCount(shOrder)), onCpu_(onCpu) {
+  if (!onCpu_)
+    program_ = shaders.compute("cascade/restrict.comp", {SpecConstant::i(0, coefficients_)});
+}
 
-void CascadeCarry::carry(const LightGrid& child, LightGrid& parent) const {
+void CascadeCarry::carry(const LightGrid& child, LightGrid& parent) {
   const glm::ivec3 offset = childOffsetInParentCells(child.geometry, parent.geometry);
+  if (onCpu_) return carryOnCpu(child, parent, offset);
   using namespace restrict_kernel;
   program_.use();
   glUniform3iv(LOCATION_RESOLUTION, 1, &parent.geometry.resolution[0]);
@@ -47,6 +60,25 @@ void CascadeCarry::carry(const LightGrid& child, LightGrid& parent) const {
   parent.current.bindStorage(BUFFER_PARENT);
   dispatchCovering(parent.geometry.resolution / 2, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                    GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void CascadeCarry::carryOnCpu(const LightGrid& child, LightGrid& parent, const glm::ivec3& offset) {
+  downloadFloats(child.current, child.floatsPerGrid(), hostChild_);
+  downloadFloats(parent.current, parent.floatsPerGrid(), hostParent_);
+  const glm::ivec3 resolution = parent.geometry.resolution, half = resolution / 2;
+  const int cells = shared::cellCount(resolution);
+  shared::RestrictKernel kernel{hostChild_.data()};
+  for (int z = 0; z < half.z; ++z)
+    for (int y = 0; y < half.y; ++y)
+      for (int x = 0; x < half.x; ++x) {
+        const glm::ivec3 c(x, y, z);
+        const int parentIndex = shared::cellIndex(offset + c, resolution);
+        for (int channel = 0; channel < 3; ++channel)
+          for (int k = 0; k < coefficients_; ++k)
+            hostParent_[std::size_t(shared::coefficientIndex(channel, k, coefficients_, parentIndex, cells))] =
+                float(kernel.restrictedCoefficient(channel, k, coefficients_, c, resolution));
+      }
+  uploadFloats(hostParent_, parent.current);
 }
 
 }  // namespace lpvlab

@@ -7,6 +7,8 @@
 // strategies once: they read every level (Frame::renderedLevels) and weight each by
 // shaders/common/cascade_blend.glsl, whose uniforms setCascadeBlendUniforms binds.
 
+#include <vector>
+
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/light_grid.h"
 
@@ -34,14 +36,20 @@ struct CascadeSettings {
 void setCascadeBlendUniforms(const Frame& frame, int level);
 
 // Replaces the injected light (`current`) of `parent` inside `child` by the child's, summed over
-// each parent cell's 2x2x2 children (shaders/cascade/restrict.comp).
+// each parent cell's 2x2x2 children (shaders/cascade/restrict.glsl), on GL (restrict.comp) or, on
+// the CPU backend, on host copies of both grids.
 class CascadeCarry {
 public:
-  CascadeCarry(ShaderCompiler& shaders, int shOrder);
-  void carry(const LightGrid& child, LightGrid& parent) const;
+  CascadeCarry(ShaderCompiler& shaders, int shOrder, bool onCpu);
+  void carry(const LightGrid& child, LightGrid& parent);
 
 private:
+  void carryOnCpu(const LightGrid& child, LightGrid& parent, const glm::ivec3& offset);
+
   Program program_;
+  int coefficients_;
+  bool onCpu_;
+  std::vector<float> hostChild_, hostParent_;
 };
 
 }  // namespace lpvlab

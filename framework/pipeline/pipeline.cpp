@@ -92,8 +92,12 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     for (const auto& [name, allocate] : requirements_.resources) table.adopt(name, allocate(setup));
   }
   placeLevels();
-  if (levels_.size() > 1 && settings.cascades.carry)
-    carry_ = std::make_unique<CascadeCarry>(shaders, requirements_.shOrder);
+  if (levels_.size() > 1 && settings.cascades.carry) {
+    // The carry has a CPU kernel: it follows the backend (and runs in the injection stage).
+    const bool carryOnCpu = requirements_.backend != ComputeBackend::Gl;
+    carry_ = std::make_unique<CascadeCarry>(shaders, requirements_.shOrder, carryOnCpu);
+    if (carryOnCpu) cpuStages_.insert("injection");
+  }
   directImage_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "direct");
   indirectImage_ =
       gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "indirect");
