@@ -23,6 +23,18 @@ ivec3 cellContaining(vec3 g) {
   return ivec3(floor(g));
 }
 
+// Binning a point on a surface into cells (VPLs, GV surfels, sky layers): a point this close to a
+// cell boundary (in cells) goes to the cell the surface's normal points into. Surfaces often lie
+// exactly on a boundary (a grid fitted to the scene puts its walls on one; a VPL shifted by a
+// whole number of cells lands on one), where float (GL) and double (CPU) arithmetic would
+// otherwise round to different cells; the normal's side is also where the surface's light is.
+const real CELL_BOUNDARY_TOLERANCE = 1e-4;
+
+// The cell a surface point at grid coordinates g, with unit normal n, is binned into.
+ivec3 surfaceCell(vec3 g, vec3 n) {
+  return cellContaining(g + n * CELL_BOUNDARY_TOLERANCE);
+}
+
 bool cellInside(ivec3 c, ivec3 res) {
   return c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < res.x && c.y < res.y && c.z < res.z;
 }

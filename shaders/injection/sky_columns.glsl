@@ -25,15 +25,11 @@ real skySurfaceHeight(real depth, real gridTop, real gridHeight) {
   return gridTop - depth * gridHeight;
 }
 
-// A surface this close below a layer boundary (in cells) counts as on it. Surfaces often lie
-// exactly on a boundary (a grid fitted to the scene with a whole number of margin cells puts the
-// floor on one), where float (GL) and double (CPU, tests) arithmetic would otherwise round to
-// different layers.
-const real SKY_LAYER_TOLERANCE = 1e-4;
-
-// The layer (grid y index) that receives the light falling on a surface at height `surfaceY`.
+// The layer (grid y index) that receives the light falling on a surface at height `surfaceY`
+// (binned as grid.glsl's surfaceCell bins a surface facing up: one on a layer boundary goes to
+// the layer above).
 int skyInjectionLayer(real surfaceY, real shiftCells, real gridOriginY, real cellSize, int layers) {
-  int layer = int(floor((surfaceY - gridOriginY) / cellSize + shiftCells + SKY_LAYER_TOLERANCE));
+  int layer = int(floor((surfaceY - gridOriginY) / cellSize + shiftCells + CELL_BOUNDARY_TOLERANCE));
   return clamp(layer, 0, layers - 1);
 }
 

@@ -12,7 +12,7 @@
 
 ivec3 vplCell(vec3 position, vec3 n, vec3 gridOrigin, real cellSize, real shiftCells) {
   vec3 p = position + n * (shiftCells * cellSize);
-  return cellContaining(gridFromWorld(p, gridOrigin, cellSize));
+  return surfaceCell(gridFromWorld(p, gridOrigin, cellSize), n);
 }
 
 // Coefficient k of the intensity of a VPL of unit flux with normal n: cosLobe(n) / pi.

@@ -25,7 +25,7 @@ layout(std430, binding = BUFFER_ALBEDO) buffer Albedo { float gvAlbedo[]; };  //
 
 // `albedoKnown`: rho is the surfel's albedo; otherwise only its blocking is added.
 void gvAddSurfel(vec3 p, vec3 n, float area, vec3 rho, bool albedoKnown) {
-  ivec3 cell = cellContaining(gridFromWorld(p, gvOrigin, cellSize));
+  ivec3 cell = surfaceCell(gridFromWorld(p, gvOrigin, cellSize), n);
   if (!cellInside(cell, gvResolution)) return;
   int cells = cellCount(gvResolution);
   int index = cellIndex(cell, gvResolution);

@@ -39,10 +39,14 @@ LobeSample sampleLobe(vec3 g, real lobe[SH_MAX_COEFFICIENTS], int coefficients, 
   for (int corner = 0; corner < 8; ++corner) {
     ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
     int index = cellIndex(clamp(ivec3(base) + o, ivec3(0), resolution - 1), resolution);
+    // The channels by name, not v[channel]: GLM's run-time component index is a branch, which
+    // cost the CPU kernel a third of its time.
     vec3 v = vec3(0.0);
-    for (int channel = 0; channel < 3; ++channel)
-      for (int k = 0; k < coefficients; ++k)
-        v[channel] += gridCoefficient(channel, k, coefficients, index, cells) * lobe[k];
+    for (int k = 0; k < coefficients; ++k) {
+      v.x += gridCoefficient(0, k, coefficients, index, cells) * lobe[k];
+      v.y += gridCoefficient(1, k, coefficients, index, cells) * lobe[k];
+      v.z += gridCoefficient(2, k, coefficients, index, cells) * lobe[k];
+    }
     s.value += trilinearWeight(o, f) * v;
     if (withSlope) s.slope += trilinearWeightSlope(o, f, d) * v;
   }

@@ -61,8 +61,12 @@ TEST(Extremes, OutputsScaleLinearlyFromVeryDimToVeryBrightLights) {
 }
 
 TEST(Extremes, AOneCellGridGivesFiniteIndirectLight) {
+  // Half a cell of shift: a whole cell would move every VPL of the box's walls (which lie on the
+  // one cell's faces) onto the opposite face, where it goes to the cell outside (grid.glsl's
+  // surfaceCell bins a point on a boundary along its normal).
   Experiment e = loadExperiment("", {"output.width=32", "output.height=32", "grid.resolution=1",
-                                     "grid.margin=0", "propagation.iterations=3"});
+                                     "grid.margin=0", "propagation.iterations=3",
+                                     "injection.shift=0.5"});
   EXPECT_EQ(e.settings.grid.cellCount(), 1);
   const auto out = render(e);
   expectFinite(out.at("indirect"), "indirect");

@@ -40,9 +40,11 @@ template <int N>
       const std::size_t t = s.byCell.order[i];
       const glm::dvec3 n(s.rsm.normal->texels[t]);
       const glm::dvec3 phi(s.rsm.flux->texels[t]);
-      for (int k = 0; k < N; ++k) {
+      for (int k = 0; k < N; ++k) {  // channels by name: GLM's phi[channel] is a branch
         const double lobe = shared::vplLobeAt(k, n);
-        for (int channel = 0; channel < 3; ++channel) sum[channel][k] += phi[channel] * lobe;
+        sum[0][k] += phi.x * lobe;
+        sum[1][k] += phi.y * lobe;
+        sum[2][k] += phi.z * lobe;
       }
       const double weight = phi.x + phi.y + phi.z;
       normal += glm::dvec4(weight * n, weight);

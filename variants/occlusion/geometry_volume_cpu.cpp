@@ -27,9 +27,10 @@ struct Surfel {
 };
 
 // Adds `count` surfels to the target: positionOf(i) is surfel i's position (w = 0: not covered),
-// surfelAt(i) the rest of it, computed again as each cell sums its own.
-template <class PositionOf, class SurfelAt>
-void addSurfels(std::size_t count, PositionOf positionOf, SurfelAt surfelAt, const GvTarget& target) {
+// normalOf(i) its normal, surfelAt(i) the rest of it, computed again as each cell sums its own.
+template <class PositionOf, class NormalOf, class SurfelAt>
+void addSurfels(std::size_t count, PositionOf positionOf, NormalOf normalOf, SurfelAt surfelAt,
+                const GvTarget& target) {
   const int cells = target.gv.cellCount();
   const glm::dvec3 origin(target.gv.origin);
   const double cellSize = target.gv.cellSize;
@@ -38,8 +39,8 @@ void addSurfels(std::size_t count, PositionOf positionOf, SurfelAt surfelAt, con
     for (std::size_t i = r.begin(); i < r.end(); ++i) {
       const glm::vec4 p = positionOf(i);
       if (p.w == 0.0f) continue;
-      const glm::ivec3 cell =
-          shared::cellContaining(shared::gridFromWorld(glm::dvec3(p), origin, cellSize));
+      const glm::ivec3 cell = shared::surfaceCell(shared::gridFromWorld(glm::dvec3(p), origin, cellSize),
+                                                  normalOf(i));
       if (shared::cellInside(cell, target.gv.resolution))
         cellOf[i] = shared::cellIndex(cell, target.gv.resolution);
     }
@@ -72,6 +73,7 @@ void addCameraSurfelsCpu(const GBufferImages& g, const glm::vec3& cameraPosition
     throw Error("geometry volume (CPU): the G-buffer's images differ in size");
   addSurfels(
       pixels, [&](std::size_t i) { return g.position->texels[i]; },
+      [&](std::size_t i) { return glm::dvec3(g.normal->texels[i]); },
       [&](std::size_t i) {
         const glm::vec4 normalDepth = g.normal->texels[i];
         Surfel s;
@@ -101,6 +103,7 @@ void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvT
   const std::size_t perLayer = std::size_t(resolution) * resolution;
   addSurfels(
       texels, [&](std::size_t i) { return rsm.position->texels[i]; },
+      [&](std::size_t i) { return glm::dvec3(rsm.normal->texels[i]); },
       [&](std::size_t i) {
         const shared::GpuView& view = views[i / perLayer];
         const shared::GpuLight& light = lights[std::size_t(view.params.z)];
