@@ -24,8 +24,8 @@ struct DirectLightKernel {
     return real(depths[(std::size_t(view) * resolution + std::size_t(texel.y)) * resolution +
                        std::size_t(texel.x)]);
   }
-  real shadowTap(int view, vec2 uv, real reference) {
-    return shadowTapBilinear(view, uv, reference, resolution);
+  real shadowTaps3x3(int view, vec2 uv, real reference) {
+    return shadowTaps3x3Bilinear(view, uv, reference, resolution);
   }
 #include "shaders/lighting/shadow_tap.glsl"
 #include "shaders/lighting/direct_light.glsl"

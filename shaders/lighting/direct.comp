@@ -22,8 +22,14 @@ layout(location = LOCATION_DEPTH_BIAS) uniform float depthBias;           // in 
 
 GpuLight directLight(int i) { return lights[i]; }
 GpuView directView(int v) { return views[v]; }
-float shadowTap(int view, vec2 uv, float reference) {
-  return texture(shadowMaps, vec4(uv, float(view), reference));  // the texture unit's 2x2 PCF
+// Nine taps of the texture unit's 2x2 PCF.
+float shadowTaps3x3(int view, vec2 uv, float reference) {
+  float texel = 1.0 / float(shadowResolution);
+  float lit = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x)
+      lit += texture(shadowMaps, vec4(uv + vec2(x, y) * texel, float(view), reference));
+  return lit / 9.0;
 }
 #include "direct_light.glsl"
 

@@ -7,10 +7,11 @@
 // defines, before including this file, how the records and the shadow maps are read:
 //   GpuLight directLight(int i)              light record i (lights_gpu.glsl)
 //   GpuView directView(int v)                view record v
-//   real shadowTap(int view, vec2 uv, real reference)
-//                                            one 2x2 depth-compare tap of view's shadow map at
-//                                            window position uv: GL's LINEAR, LEQUAL filtering
-//                                            (GL: the texture unit; CPU: shadow_tap.glsl)
+//   real shadowTaps3x3(int view, vec2 uv, real reference)
+//                                            the mean of nine 2x2 depth-compare taps of view's
+//                                            shadow map, one texel apart around window position
+//                                            uv: GL's LINEAR, LEQUAL filtering (GL: the texture
+//                                            unit, tap by tap; CPU: shadow_tap.glsl)
 #ifndef LPVLAB_DIRECT_LIGHT_GLSL
 #define LPVLAB_DIRECT_LIGHT_GLSL
 #include "../common/lights_gpu.glsl"
@@ -27,17 +28,12 @@ int viewOfFace(GpuLight light, int face) {
   return face < 4 ? light.viewOfFace0123[face] : light.viewOfFace45[face - 4];
 }
 
-// Fraction of a 3x3 tap of the shadow map of `view` that sees p.
+// Fraction of a 3x3 tap of the shadow map of `view` that sees p: the taps one shadow texel apart
+// around p's window position, each a 2x2 depth comparison (shadowTaps3x3).
 real shadowVisibility(int view, vec3 p, int resolution, real depthBias) {
   vec4 clip = directView(view).clipFromWorld * vec4(p, 1.0);
   vec3 window = vec3(clip) / clip.w * real(0.5) + real(0.5);
-  real texel = real(1.0) / real(resolution);
-  real lit = 0.0;
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x)
-      lit += shadowTap(view, vec2(window.x + real(x) * texel, window.y + real(y) * texel),
-                       window.z - depthBias);
-  return lit / real(9.0);
+  return shadowTaps3x3(view, vec2(window.x, window.y), window.z - depthBias);
 }
 
 // The direct radiance of a surface point p (unit normal n, Lambertian albedo, emission), from
