@@ -8,7 +8,7 @@
 //      the step sends without any GV (equal for rho = 1), whatever the (random) albedo <= 1;
 //      a fully blocking closed shell around one cell keeps every watt in that cell, and the flux
 //      there decays exactly as rho^k (channel by channel) while the accumulated flux is the
-//      geometric sum (1 - rho^(k+1)) / (1 - rho) Phi;
+//      geometric sum (1 - rho^(k+1)) / (1 - rho) Phi, on the GL and the CPU backend;
 //   c. one GPU step (gather and scatter) equals the double-precision C++ of the same shared GLSL,
 //      on a random grid, random GV and random albedo, and gather equals scatter at SH orders 1-3;
 //   d. on the Cornell box the indirect light with bounces exceeds that without, and stays below
@@ -57,8 +57,9 @@ toml::table bounceTable(int iterations, const std::string& method, bool bounces)
 struct BounceRig {
   test::PropagationRig rig;
   BounceRig(const glm::ivec3& res, int iterations, const std::string& method, bool bounces,
-            const Grid& gv, const Grid* albedo, int order = 1)
-      : rig("standard", res, bounceTable(iterations, method, bounces), order, true) {
+            const Grid& gv, const Grid* albedo, int order = 1,
+            ComputeBackend backend = ComputeBackend::Gl)
+      : rig("standard", res, bounceTable(iterations, method, bounces), order, true, backend) {
     rig.loadGv(gv, 0);
     if (bounces) rig.loadAlbedo(*albedo);
   }
@@ -186,8 +187,10 @@ TEST(Bounces, AClosedOpaqueShellKeepsTheLightAndItDecaysAsRhoToTheK) {
   // Isotropic light in the cell: its 30 faces' blocked fluxes are Omega_f / (4 pi) of its flux,
   // re-emitted about -w_f (no direction in isotropic blocking), whose band 1 cancels over the
   // cube's symmetric faces: the cell stays isotropic, each step multiplies its flux by rho.
-  for (const std::string method : {"gather", "scatter"}) {
-    BounceRig shell(res, 1, method, true, gv, &albedo);
+  for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu})
+  for (const std::string method0 : {"gather", "scatter"}) {
+    const std::string method = method0 + (backend == ComputeBackend::Cpu ? " (CPU)" : " (GL)");
+    BounceRig shell(res, 1, method0, true, gv, &albedo, 1, backend);
     Grid state = test::pointSource(res, centre, true);
     shell.rig.load(state);
     double accumulatedExpected[3] = {0, 0, 0};

@@ -32,18 +32,20 @@ namespace lpvlab::test {
 class PropagationRig {
 public:
   // type: the registered strategy name; table: its [propagation] table; withGv: the composition
-  // has a geometry volume (the strategy's kernels read it).
+  // has a geometry volume (the strategy's kernels read it); backend: where its kernels run (the
+  // CPU backend reads the rig's GL buffers back and writes them, as in a pipeline).
   PropagationRig(const std::string& type, const glm::ivec3& resolution, toml::table table,
-                 int shOrder = 1, bool withGv = false)
+                 int shOrder = 1, bool withGv = false, ComputeBackend backend = ComputeBackend::Gl)
       : table_(std::move(table)) {
     glTestContext();
     Params params(table_, "propagation test", "propagation");
     strategy_ = Registry<PropagationStrategy>::instance().create(params, type);
     params.finish();
     geometry_ = GridGeometry{glm::vec3(0.0f), 1.0f, resolution};
-    const Requirements requirements = standInRequirements(
+    Requirements requirements = standInRequirements(
         *strategy_, shOrder, withGv ? std::vector<std::string>{std::string(kGeometryVolume.name)}
                                     : std::vector<std::string>{});
+    requirements.backend = backend;
     strategy_->prepare({.shaders = shaders_, .grid = geometry_, .requirements = requirements});
     grid_ = LightGrid(geometry_, requirements.shOrder);
     if (requirements.has(kNormalGrid)) {

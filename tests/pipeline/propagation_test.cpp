@@ -4,7 +4,8 @@
 //     without the clamp max(0, I) it sends exactly its flux (sum of Omega_f I(w_f) over the faces
 //     of a linear I is 4 pi times its mean: the faces come in opposite pairs); the clamp can only
 //     add, and for cells holding sums of clamped-cosine lobes (all that injection and
-//     propagation ever store) by at most a factor computed below;
+//     propagation ever store) by at most a factor computed below; and across a closed shell the
+//     flux inside changes by what crosses it (on the GL and the CPU backend);
 //   - the grid's symmetries are kept;
 //   - the GPU kernel is the double-precision C++ of the same shared GLSL, gathered the same way.
 
@@ -26,8 +27,9 @@ namespace {
 using namespace test;
 
 // The standard strategy, created as an experiment creates it, on its own light grid.
-PropagationRig standardRig(const glm::ivec3& resolution, int iterations) {
-  return PropagationRig("standard", resolution, iterationsTable(iterations));
+PropagationRig standardRig(const glm::ivec3& resolution, int iterations,
+                           ComputeBackend backend = ComputeBackend::Gl) {
+  return PropagationRig("standard", resolution, iterationsTable(iterations), 1, false, backend);
 }
 
 // What cell coefficients `c` send into the neighbour one step along `d`: the shared GLSL.
@@ -127,14 +129,14 @@ ShellFlow shellFlow(const Grid& g, int radius) {
   return flow;
 }
 
-void energyAndShell(bool isotropic) {
+void energyAndShell(bool isotropic, ComputeBackend backend) {
   const int iterations = 6;  // from the centre of 15^3, light reaches the grid's edge at step 7
   const int radius = 3;
   const double phi = injectedFlux();
   const double gMax = maxStepGain();
   auto inside = [&](const glm::ivec3& c) { return chebyshev(c) <= radius; };
 
-  PropagationRig rig = standardRig(kRes15, 1);  // one step per call
+  PropagationRig rig = standardRig(kRes15, 1, backend);  // one step per call
   std::vector<Grid> steps{pointSource(kRes15, kCentre15, isotropic)};
   rig.load(steps[0]);
   for (int k = 1; k <= iterations; ++k) {
@@ -142,7 +144,7 @@ void energyAndShell(bool isotropic) {
     steps.push_back(rig.current());
   }
   // The same as one call of `iterations` steps.
-  PropagationRig whole = standardRig(kRes15, iterations);
+  PropagationRig whole = standardRig(kRes15, iterations, backend);
   whole.load(steps[0]);
   whole.propagate();
   const Grid wholeCurrent = whole.current();
@@ -150,7 +152,8 @@ void energyAndShell(bool isotropic) {
   for (std::size_t i = 0; i < wholeCurrent.size(); ++i)
     ASSERT_NEAR(wholeCurrent[i], steps.back()[i], tol) << "float " << i;
 
-  std::cout << "[ propagation ] " << (isotropic ? "isotropic" : "+z cosine-lobe")
+  std::cout << "[ propagation ] " << (backend == ComputeBackend::Cpu ? "CPU, " : "GL, ")
+            << (isotropic ? "isotropic" : "+z cosine-lobe")
             << " source, injected " << phi << " W; largest clamp gain per step " << std::setprecision(6)
             << gMax << "\n"
             << "[ propagation ] " << std::setw(3) << "it" << std::setw(11) << "grid flux"
@@ -206,9 +209,18 @@ void energyAndShell(bool isotropic) {
   }
 }
 
-TEST(Propagation, EnergyPerIterationAndFluxThroughAShellFromALobe) { energyAndShell(false); }
+TEST(Propagation, EnergyPerIterationAndFluxThroughAShellFromALobe) {
+  energyAndShell(false, ComputeBackend::Gl);
+}
 TEST(Propagation, EnergyPerIterationAndFluxThroughAShellFromAnIsotropicSource) {
-  energyAndShell(true);
+  energyAndShell(true, ComputeBackend::Gl);
+}
+// The same on the CPU backend (standard_cpu.h).
+TEST(Propagation, EnergyAndFluxThroughAShellFromALobeOnTheCpu) {
+  energyAndShell(false, ComputeBackend::Cpu);
+}
+TEST(Propagation, EnergyAndFluxThroughAShellFromAnIsotropicSourceOnTheCpu) {
+  energyAndShell(true, ComputeBackend::Cpu);
 }
 
 // ---- c. zero and very many iterations ---------------------------------------------------------

@@ -168,7 +168,9 @@ private:
   void propagateOnCpu(Frame& frame) {
     LightGrid& grid = frame.lightGrid;
     downloadFloats(grid.current, grid.floatsPerGrid(), cpuCurrent_);
-    cpuAccumulated_ = cpuCurrent_;  // the pipeline starts the accumulated grid as the injected one
+    // Added to as it is (the pipeline starts it as the injected grid; a caller stepping
+    // propagation by hand keeps summing), as the GL kernels add to it.
+    downloadFloats(grid.accumulated, grid.floatsPerGrid(), cpuAccumulated_);
     const GeometryVolume* gv = frame.find(kGeometryVolume);
     const StandardOcclusion<float>* occlusion = nullptr;
     if (gv) {
