@@ -63,11 +63,11 @@ void CascadeCarry::carry(const LightGrid& child, LightGrid& parent) {
 }
 
 void CascadeCarry::carryOnCpu(const LightGrid& child, LightGrid& parent, const glm::ivec3& offset) {
-  downloadFloats(child.current, child.floatsPerGrid(), hostChild_);
-  downloadFloats(parent.current, parent.floatsPerGrid(), hostParent_);
+  const std::vector<float>& childLight = child.current.hostRead();
+  std::vector<float>& parentLight = parent.current.host();
   const glm::ivec3 resolution = parent.geometry.resolution, half = resolution / 2;
   const int cells = shared::cellCount(resolution);
-  shared::RestrictKernel kernel{hostChild_.data()};
+  shared::RestrictKernel kernel{childLight.data()};
   for (int z = 0; z < half.z; ++z)
     for (int y = 0; y < half.y; ++y)
       for (int x = 0; x < half.x; ++x) {
@@ -75,10 +75,9 @@ void CascadeCarry::carryOnCpu(const LightGrid& child, LightGrid& parent, const g
         const int parentIndex = shared::cellIndex(offset + c, resolution);
         for (int channel = 0; channel < 3; ++channel)
           for (int k = 0; k < coefficients_; ++k)
-            hostParent_[std::size_t(shared::coefficientIndex(channel, k, coefficients_, parentIndex, cells))] =
+            parentLight[std::size_t(shared::coefficientIndex(channel, k, coefficients_, parentIndex, cells))] =
                 float(kernel.restrictedCoefficient(channel, k, coefficients_, c, resolution));
       }
-  uploadFloats(hostParent_, parent.current);
 }
 
 }  // namespace lpvlab

@@ -37,7 +37,7 @@ void setCascadeBlendUniforms(const Frame& frame, int level);
 
 // Replaces the injected light (`current`) of `parent` inside `child` by the child's, summed over
 // each parent cell's 2x2x2 children (shaders/cascade/restrict.glsl), on GL (restrict.comp) or, on
-// the CPU backend, on host copies of both grids.
+// the CPU backend, on both grids' host sides.
 class CascadeCarry {
 public:
   CascadeCarry(ShaderCompiler& shaders, int shOrder, bool onCpu);
@@ -49,7 +49,6 @@ private:
   Program program_;
   int coefficients_;
   bool onCpu_;
-  std::vector<float> hostChild_, hostParent_;
 };
 
 }  // namespace lpvlab

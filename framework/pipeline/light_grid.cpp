@@ -11,8 +11,8 @@ LightGrid::LightGrid(const GridGeometry& geometry_, int shOrder)
   if (floats >= 2147483647.0)
     throw Error("grid: " + std::to_string(geometry.cellCount()) + " cells with " +
                 std::to_string(coefficients) + " coefficients exceed 2^31 floats per buffer");
-  current = gl::Buffer(bytesPerGrid(), "light grid (current)");
-  accumulated = gl::Buffer(bytesPerGrid(), "light grid (accumulated)");
+  current = DualBuffer(bytesPerGrid(), "light grid (current)");
+  accumulated = DualBuffer(bytesPerGrid(), "light grid (accumulated)");
 }
 
 }  // namespace lpvlab

@@ -1,14 +1,15 @@
 #pragma once
-// The light grid: RGB SH coefficients of radiant intensity (W/sr) per cell, in GPU buffers laid
-// out as shaders/common/grid.glsl describes (structure of arrays, coefficient-major).
+// The light grid: RGB SH coefficients of radiant intensity (W/sr) per cell, in buffers laid out as
+// shaders/common/grid.glsl describes (structure of arrays, coefficient-major), on GL and, when a
+// CPU kernel uses them, on the host (dual_buffer.h: each side brought up to date on demand).
 //   current:     the light of the latest propagation step (after injection: the injected VPLs)
 //   accumulated: the sum over injection and every propagation step, which rendering reads
 // Propagation strategies allocate their own scratch (e.g. a ping-pong partner for `current`).
 
 #include <cstddef>
 
-#include "framework/gl/resources.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/pipeline/dual_buffer.h"
 
 namespace lpvlab {
 
@@ -17,8 +18,8 @@ struct LightGrid {
 
   GridGeometry geometry;
   int coefficients = 4;  // per channel: (order + 1)^2
-  gl::Buffer current;
-  gl::Buffer accumulated;
+  DualBuffer current;
+  DualBuffer accumulated;
 
   LightGrid() = default;
   LightGrid(const GridGeometry& geometry, int shOrder);
@@ -31,7 +32,7 @@ struct LightGrid {
     return std::size_t(kChannels) * coefficients * geometry.cellCount();
   }
   std::size_t bytesPerGrid() const { return floatsPerGrid() * sizeof(float); }
-  std::size_t memoryBytes() const { return current.size() + accumulated.size(); }
+  std::size_t memoryBytes() const { return current.memoryBytes() + accumulated.memoryBytes(); }
 };
 
 }  // namespace lpvlab

@@ -199,9 +199,7 @@ FrameTimes Pipeline::renderFrame() {
       for (int level = 0; level + 1 < levels; ++level)
         carry_->carry(levels_[std::size_t(level)], levels_[std::size_t(level) + 1]);
     // The accumulated light starts as the injected light (thesis 6.9.1).
-    for (LightGrid& grid : levels_)
-      glCopyNamedBufferSubData(grid.current.id(), grid.accumulated.id(), 0, 0,
-                               GLsizeiptr(grid.bytesPerGrid()));
+    for (LightGrid& grid : levels_) grid.accumulated.copyFrom(grid.current);
   });
   stage("propagation", times, [&] {
     for (int level = 0; level < levels; ++level) {

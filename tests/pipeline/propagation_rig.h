@@ -99,7 +99,8 @@ public:
   PropagationStrategy& strategy() { return *strategy_; }
 
 private:
-  static Grid download(const gl::Buffer& buffer, std::size_t floats) {
+  template <class Buffer>  // gl::Buffer or DualBuffer
+  static Grid download(const Buffer& buffer, std::size_t floats) {
     Grid data(floats);
     buffer.download(data.data(), data.size() * sizeof(float));
     return data;

@@ -98,7 +98,8 @@ std::vector<float> readRgba(const gl::Texture& texture) {
   return data;
 }
 
-Grid download(const gl::Buffer& buffer, std::size_t floats) {
+template <class Buffer>  // gl::Buffer or DualBuffer
+Grid download(const Buffer& buffer, std::size_t floats) {
   Grid data(floats);
   buffer.download(data.data(), data.size() * sizeof(float));
   return data;

@@ -82,7 +82,7 @@ public:
   }
 
   std::size_t memoryBytes() const override {
-    return (hostGrid_.size() + hostNormals_.size()) * sizeof(float);
+    return hostNormals_.size() * sizeof(float);
   }
 
 private:
@@ -91,15 +91,14 @@ private:
     const LightMaps& maps = frame.lightMaps;
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the RSMs, before reading them back
     LightGrid& grid = frame.lightGrid;
-    downloadFloats(grid.current, grid.floatsPerGrid(), hostGrid_);
+    std::vector<float>& light = grid.current.host();  // added to on the host
     NormalGrid* normals = frame.find(kNormalGrid);
     if (normals) downloadFloats(normals->normals, std::size_t(grid.geometry.cellCount()) * 4, hostNormals_);
     injectRsmVplsCpu({.position = &frame.host->image(maps.rsmPosition),
                       .normal = &frame.host->image(maps.rsmNormal),
                       .flux = &frame.host->image(maps.rsmFlux)},
-                     grid.geometry, coefficients_, shiftCells_, hostGrid_.data(),
+                     grid.geometry, coefficients_, shiftCells_, light.data(),
                      normals ? hostNormals_.data() : nullptr);
-    uploadFloats(hostGrid_, grid.current);
     if (normals) uploadFloats(hostNormals_, normals->normals);
   }
 
@@ -107,7 +106,7 @@ private:
   Program program_;
   bool onCpu_ = false;
   int coefficients_ = 4;
-  std::vector<float> hostGrid_, hostNormals_;  // on the CPU backend
+  std::vector<float> hostNormals_;  // on the CPU backend
 };
 
 LPVLAB_REGISTER(InjectionStrategy, "rsm_vpl",

@@ -92,7 +92,7 @@ public:
   }
 
   std::size_t memoryBytes() const override {
-    return depth_.bytes() + (hostDepth_.size() + hostGrid_.size()) * sizeof(float);
+    return depth_.bytes() + hostDepth_.size() * sizeof(float);
   }
 
   void inject(Frame& frame) override {
@@ -117,15 +117,13 @@ public:
   }
 
 private:
-  // The depth map read back, the grid read from GL, added to and written back.
+  // The depth map read back, the grid added to on the host.
   void injectOnCpu(LightGrid& grid, const glm::vec3& perTexel) {
     hostDepth_.resize(std::size_t(width_) * height_);
     glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       GLsizei(hostDepth_.size() * sizeof(float)), hostDepth_.data());
-    downloadFloats(grid.current, grid.floatsPerGrid(), hostGrid_);
     injectSkyColumnsCpu(hostDepth_, width_, height_, grid.geometry, coefficients_, shiftCells_,
-                        perTexel, hostGrid_.data());
-    uploadFloats(hostGrid_, grid.current);
+                        perTexel, grid.current.host().data());
   }
 
   void renderDepth(const SceneGpu& scene) {
@@ -142,7 +140,7 @@ private:
   glm::vec3 skyRadiance_{0.0f};  // the run's [sky] radiance, W/(m^2 sr)
   int coefficients_ = 4;
   bool onCpu_ = false;
-  std::vector<float> hostDepth_, hostGrid_;  // on the CPU backend
+  std::vector<float> hostDepth_;  // on the CPU backend
   int width_ = 0, height_ = 0;
   glm::mat4 clipFromWorld_{1.0f};
   Program depthProgram_, injectProgram_;

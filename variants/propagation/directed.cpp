@@ -60,7 +60,7 @@ public:
                                SpecConstant::b(2, requirements.has(kGeometryVolume)),
                                SpecConstant::i(3, shared::shCoefficientCount(requirements.shOrder))});
     dilate_ = shaders.compute("propagation/directed_dilate.comp");
-    scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
+    scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
     if (dilation_) {
       const std::size_t normalBytes = std::size_t(4) * grid.cellCount() * sizeof(float);
@@ -109,7 +109,7 @@ private:
   int iterations_;
   bool dilation_;
   Program gather_, dilate_;
-  gl::Buffer scratch_;
+  DualBuffer scratch_;  // swapped with the grid's current buffer
   gl::Buffer normals_[2];  // dilation ping-pong
 };
 

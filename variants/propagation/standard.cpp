@@ -82,9 +82,8 @@ public:
     if (runsOnCpu(requirements)) {
       cpuTable_ = makeStandardFaceTable<float>(requirements.shOrder, damping_ * farFace_,
                                                damping_ * sideFace_);
-      const std::size_t floats = LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float);
-      for (std::vector<float>* buffer : {&cpuCurrent_, &cpuNext_, &cpuAccumulated_})
-        buffer->assign(floats, 0.0f);
+      // The ping-pong partner of the grid's host side (the grid's own two live in LightGrid).
+      cpuNext_.assign(LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float), 0.0f);
       onCpu_ = true;
       return;
     }
@@ -94,7 +93,7 @@ public:
         {SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
          SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
          SpecConstant::b(4, bounces_)});
-    scratch_ = gl::Buffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
+    scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
   }
 
@@ -155,9 +154,8 @@ public:
   }
 
   std::size_t memoryBytes() const override {
-    std::size_t bytes = scratch_.size() + (cpuCurrent_.size() + cpuNext_.size() +
-                                           cpuAccumulated_.size() + cpuGv_.size() +
-                                           cpuGvAlbedo_.size()) * sizeof(float);
+    std::size_t bytes =
+        scratch_.size() + (cpuNext_.size() + cpuGv_.size() + cpuGvAlbedo_.size()) * sizeof(float);
     for (const auto& [gv, cache] : cpuOcclusion_) bytes += cache.bytes();
     return bytes;
   }
@@ -167,10 +165,12 @@ private:
   // and used from its first occluded iteration on.
   void propagateOnCpu(Frame& frame) {
     LightGrid& grid = frame.lightGrid;
-    downloadFloats(grid.current, grid.floatsPerGrid(), cpuCurrent_);
-    // Added to as it is (the pipeline starts it as the injected grid; a caller stepping
-    // propagation by hand keeps summing), as the GL kernels add to it.
-    downloadFloats(grid.accumulated, grid.floatsPerGrid(), cpuAccumulated_);
+    // On the grid's host side (read back only if GL wrote it last); the accumulated grid is added
+    // to as it is (the pipeline starts it as the injected grid; a caller stepping propagation by
+    // hand keeps summing), as the GL kernels add to it.
+    std::vector<float>& current = grid.current.host();
+    std::vector<float>& accumulated = grid.accumulated.host();
+    cpuNext_.resize(current.size());
     const GeometryVolume* gv = frame.find(kGeometryVolume);
     const StandardOcclusion<float>* occlusion = nullptr;
     if (gv) {
@@ -192,12 +192,10 @@ private:
     for (int i = 0; i < iterations_; ++i) {
       const bool occluded = gv && i >= gv->firstOccludedIteration;
       const auto iteration = scatter_ ? standardScatterCpu<float> : standardGatherCpu<float>;
-      iteration(cpuTable_, grid.geometry.resolution, cpuCurrent_.data(), cpuNext_.data(),
-                cpuAccumulated_.data(), "auto", 0, occluded ? occlusion : nullptr);
-      std::swap(cpuCurrent_, cpuNext_);
+      iteration(cpuTable_, grid.geometry.resolution, current.data(), cpuNext_.data(),
+                accumulated.data(), "auto", 0, occluded ? occlusion : nullptr);
+      current.swap(cpuNext_);  // the grid's host side now holds the new light
     }
-    uploadFloats(cpuCurrent_, grid.current);
-    uploadFloats(cpuAccumulated_, grid.accumulated);
   }
 
   int iterations_;
@@ -205,10 +203,10 @@ private:
   bool bounces_;
   double farFace_, sideFace_, damping_;
   Program program_;
-  gl::Buffer scratch_;
+  DualBuffer scratch_;  // swapped with the grid's current buffer
   bool onCpu_ = false;
   StandardFaceTable<float> cpuTable_;
-  std::vector<float> cpuCurrent_, cpuNext_, cpuAccumulated_;  // host copies, on the CPU backend
+  std::vector<float> cpuNext_;  // on the CPU backend: the host side's ping-pong partner
   std::vector<float> cpuGv_, cpuGvAlbedo_;
   // Per level (its GV): what the GV does to the faces, found from this GV and albedo.
   struct OcclusionCache {

@@ -96,7 +96,7 @@ void SubsurfaceRendering::prepare(const StrategySetup& setup) {
 
 void SubsurfaceRendering::allocateGrid(const GridGeometry& geometry, float extinction) {
   grid_ = LightGrid(geometry, shOrder_);
-  scratch_ = gl::Buffer(grid_.bytesPerGrid(), "subsurface LPV (propagation scratch)");
+  scratch_ = DualBuffer(grid_.bytesPerGrid(), "subsurface LPV (propagation scratch)");
   attenuation_ = stepAttenuation(extinction, geometry.cellSize);
 }
 
@@ -175,8 +175,7 @@ void SubsurfaceRendering::inject(const Frame& frame) {
   injection_->inject(own);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   // The accumulated light starts as the injected light, as in the main LPV.
-  glCopyNamedBufferSubData(grid_.current.id(), grid_.accumulated.id(), 0, 0,
-                           GLsizeiptr(grid_.bytesPerGrid()));
+  grid_.accumulated.copyFrom(grid_.current);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

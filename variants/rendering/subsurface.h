@@ -82,7 +82,7 @@ private:
   std::unique_ptr<InjectionStrategy> injection_;  // "rsm_vpl", shift 0, on rsm_ and grid_
   bool active_ = false;              // the scene has translucent surfaces
   LightGrid grid_;
-  gl::Buffer scratch_;               // the propagation's ping-pong partner of grid_.current
+  DualBuffer scratch_;               // the propagation's ping-pong partner of grid_.current
   float attenuation_ = 1.0f;
   gl::Buffer translucency_;          // per material: rgb transmittance, a extinction
   LightMaps rsm_;

@@ -61,17 +61,15 @@ namespace kernel {
 }  // namespace
 
 // The G-buffer comes from the frame's host copies (read back once per frame), each level's
-// accumulated grid from GL, and the indirect image is read, added to and written back, so that
-// strategies before and after this one (on either backend) keep their shares.
+// accumulated grid from its host side (read back only if GL wrote it last), and the indirect
+// image is read, added to and written back, so that strategies before and after this one (on
+// either backend) keep their shares.
 void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
   if (!frame.host) throw Error("rendering \"trilinear\" (CPU): the frame has no host images");
   const std::span<const LightGrid> levels = frame.renderedLevels();
-  hostGrids_.resize(levels.size());
   std::vector<TrilinearCpuLevel> cpuLevels;
-  for (std::size_t level = 0; level < levels.size(); ++level) {
-    downloadFloats(levels[level].accumulated, levels[level].floatsPerGrid(), hostGrids_[level]);
-    cpuLevels.push_back({hostGrids_[level].data(), levels[level].geometry});
-  }
+  for (const LightGrid& level : levels)
+    cpuLevels.push_back({level.accumulated.hostRead().data(), level.geometry});
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
   HostImage indirect = downloadImage(frame.indirect);
   trilinearDiffuseCpu(frame.host->image(frame.gbuffer.position), frame.host->image(frame.gbuffer.normal),

@@ -52,7 +52,6 @@ private:
   Program program_;
   bool onCpu_ = false;
   int coefficients_ = 4;
-  std::vector<std::vector<float>> hostGrids_;  // on the CPU backend: each level's accumulated grid
 };
 
 }  // namespace lpvlab
