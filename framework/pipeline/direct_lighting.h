@@ -6,6 +6,7 @@
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/frame.h"
+#include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
 
@@ -21,6 +22,8 @@ public:
   // `host`: the frame's read-back images (used on the CPU).
   void render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct, HostReadback& host);
   bool onCpu() const { return onCpu_; }
+  // What it does per frame (strategy.h's WorkCount), for `pixels` and `lights`.
+  WorkCount work(double pixels, int lights) const;
   std::size_t memoryBytes() const { return hostDirect_.texels.size() * sizeof(glm::vec4); }
 
 private:

@@ -297,7 +297,7 @@ nlohmann::json Pipeline::workReport() const {
   report["shadow_maps"] = {entry({"texel", shadowTexels})};
   report["rsm"] = {entry({"texel", shape.rsmTexels})};
   report["gbuffer"] = {entry({"pixel", pixels})};
-  report["direct"] = {entry({"pixel", pixels})};
+  report["direct"] = {entry(direct_->work(pixels, maps.lightCount))};
   for (const auto& [table, strategy] : strategies_.all()) {
     const std::string stage = stageOfTable(table);
     if (!report.contains(stage)) report[stage] = nlohmann::json::array();

@@ -85,6 +85,11 @@ TEST(WorkReport, UnitsFollowTheFramesShape) {
     const nlohmann::json& indirect = only(r.work.at("indirect"));
     EXPECT_DOUBLE_EQ(indirect.at("units").get<double>(), double(r.width) * r.height * r.levels);
     EXPECT_DOUBLE_EQ(only(r.work.at("gbuffer")).at("units").get<double>(), double(r.width) * r.height);
+    // Direct light: per pixel and light (the built-in Cornell box has one).
+    const nlohmann::json& direct = only(r.work.at("direct"));
+    EXPECT_EQ(direct.at("unit"), "pixel-light");
+    EXPECT_DOUBLE_EQ(direct.at("units").get<double>(), double(r.width) * r.height);
+    expectTotals(direct);
   }
 }
 
@@ -102,6 +107,11 @@ TEST(WorkReport, PerUnitFiguresFollowTheKernelsRun) {
   // The GV adds its transmittances (on the CPU, found once per frame: one product per face).
   EXPECT_DOUBLE_EQ(perCell({"occlusion.type=\"geometry_volume\""}), cpu + 3 * 30);
   EXPECT_GT(perCell({"occlusion.type=\"geometry_volume\"", "compute.backend=gl"}), gl);
+  // Direct light's taps: 16 comparisons on the CPU, the texture unit's 36 on GL.
+  const auto directPerPixel = [](const std::vector<std::string>& o) {
+    return only(workOf(o).work.at("direct")).at("multiply_adds_per_unit").get<double>();
+  };
+  EXPECT_LT(directPerPixel({}), directPerPixel({"compute.backend=gl"}));
 }
 
 TEST(WorkReport, StrategiesWithoutAModelAreListedAsNotCounted) {
