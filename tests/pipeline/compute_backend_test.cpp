@@ -5,7 +5,8 @@
 //      backend_comparison.h);
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
 //      a strategy without a CPU kernel for its composition (here: directed propagation) on GL;
-//   c. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
+//   c. a CPU frame is the same bit for bit on one thread and on all;
+//   d. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
 //      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
 //      the key.
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "error_support.h"
 #include "framework/experiment/experiment.h"
@@ -71,6 +73,22 @@ TEST(ComputeBackend, CpuAndGlPropagationGiveTheSameImages) {
     EXPECT_GT(relativeDifference(cpu, gl, "indirect"), 0.0)
         << "bit-identical: did both runs take the same backend?";
   }
+}
+
+// A whole frame on the CPU backend, with the GV, bounces and cascades, is the same bit for bit on
+// one thread and on all: no kernel's sums depend on how the work was shared out.
+TEST(ComputeBackend, CpuFramesDoNotDependOnTheThreadCount) {
+  const std::vector<std::string> composition = {
+      "compute.backend=cpu", "occlusion.type=\"geometry_volume\"", "propagation.bounces=true",
+      "cascades.levels=2"};
+  const Rendered all = render(composition);
+  Rendered one;
+  {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = render(composition);
+  }
+  for (const char* aov : {"direct", "indirect"})
+    EXPECT_EQ(findAov(one.aovs, aov).pixels, findAov(all.aovs, aov).pixels) << aov;
 }
 
 TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelExists) {
