@@ -1,7 +1,8 @@
 // Throughput of the CPU kernels (Google Benchmark; prints figures, asserts nothing):
 //   build/tests/bench_cpu_kernels [--benchmark_filter=...]
 // Standard gathering at SH orders 1-3, grids 32^3 and 64^3, on every CPU instruction set this
-// machine has, all cores. Reported per configuration: the median of 5 repetitions (after one
+// machine has, all cores, iterations paired as the strategy runs them (the accumulated grid
+// updated every other iteration, StandardAccumulation). Reported per configuration: the median of 5 repetitions (after one
 // untimed warm-up iteration) of cell-iterations/s and of multiply-adds/s, counting the kernel's
 // own arithmetic (standardGatherMultiplyAdds per channel: the skipped zeros not counted).
 // Standard propagation at order 1 by gathering and scattering, without a GV, with a GV and with
@@ -37,8 +38,12 @@ void standardGather(benchmark::State& state, const std::string& isa) {
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
   for (float& v : current) v = value(random);
   standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa);  // warm-up
+  // Iterations paired as the strategy runs them (StandardAccumulation).
+  int iteration = 0;
   for (auto _ : state) {
-    standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa);
+    standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa, 0,
+                      static_cast<const StandardOcclusion<float>*>(nullptr),
+                      pairedAccumulation(iteration++, 1 << 30));
     std::swap(current, next);
     benchmark::ClobberMemory();
   }
@@ -88,9 +93,12 @@ void standardVariants(benchmark::State& state) {
   for (float& v : current) v = value(random);
   const auto step = scatter ? standardScatterCpu<float> : standardGatherCpu<float>;
   const StandardOcclusion<float>* used = occlusion > 0 ? &faces : nullptr;
-  step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used);  // warm-up
+  step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,
+       StandardAccumulation::Target);  // warm-up
+  int iteration = 0;
   for (auto _ : state) {
-    step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used);
+    step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,
+         pairedAccumulation(iteration++, 1 << 30));
     std::swap(current, next);
     benchmark::ClobberMemory();
   }

@@ -32,7 +32,7 @@ struct Propagated {
 };
 
 // `iterations` CPU steps from `injected` with the GV (and, with `albedo`, its bounces) from
-// iteration `firstOccluded` on, by `method`.
+// iteration `firstOccluded` on, by `method`, iterations paired as the strategy runs them.
 template <class Real>
 Propagated cpuPropagate(const Grid& injected, const glm::ivec3& res, int order, int iterations,
                         const Grid& gv, const Grid* albedo, int firstOccluded,
@@ -46,7 +46,7 @@ Propagated cpuPropagate(const Grid& injected, const glm::ivec3& res, int order, 
       accumulated = current;
   for (int i = 0; i < iterations; ++i) {
     step(table, res, current.data(), next.data(), accumulated.data(), isa, threads,
-         i >= firstOccluded ? &occlusion : nullptr);
+         i >= firstOccluded ? &occlusion : nullptr, pairedAccumulation(i, iterations));
     std::swap(current, next);
   }
   return {std::vector<double>(current.begin(), current.end()),

@@ -111,6 +111,37 @@ TEST(StandardCpu, ScatterMatchesTheGlslScatterKernelAndTheGather) {
   }
 }
 
+// Pairing iterations (the accumulated grid updated every other one, StandardAccumulation) gives
+// the sum of adding every iteration, for an even and an odd count, gathering and scattering.
+TEST(StandardCpu, PairedIterationsAccumulateTheSameSum) {
+  const glm::ivec3 res(11, 7, 9);
+  std::mt19937 random(23);
+  const StandardFaceTable<double> table = makeStandardFaceTable<double>(2, kFar, kSide);
+  const Grid injected = test::randomFloats(std::size_t(res.x * res.y * res.z) * 27, random);
+  for (const bool scatter : {false, true})
+    for (const int iterations : {4, 5}) {
+      const auto step = scatter ? standardScatterCpu<double> : standardGatherCpu<double>;
+      std::vector<double> sums[2];
+      for (const bool paired : {false, true}) {
+        std::vector<double> current(injected.begin(), injected.end()), next(current.size()),
+            accumulated = current;
+        for (int i = 0; i < iterations; ++i) {
+          step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, nullptr,
+               paired ? pairedAccumulation(i, iterations) : StandardAccumulation::Target);
+          std::swap(current, next);
+        }
+        sums[paired] = accumulated;
+      }
+      double largest = 0.0, scale = 0.0;
+      for (std::size_t i = 0; i < sums[0].size(); ++i) {
+        largest = std::max(largest, std::abs(sums[0][i] - sums[1][i]));
+        scale = std::max(scale, std::abs(sums[0][i]));
+      }
+      EXPECT_LT(largest, 1e-12 * scale) << (scatter ? "scatter, " : "gather, ") << iterations;
+      EXPECT_GT(scale, 0.0);
+    }
+}
+
 TEST(StandardCpu, DoubleKernelIsTheSharedTransferCellByCell) {
   const glm::ivec3 res(5, 4, 3);
   std::mt19937 random(8);

@@ -193,7 +193,8 @@ private:
       const bool occluded = gv && i >= gv->firstOccludedIteration;
       const auto iteration = scatter_ ? standardScatterCpu<float> : standardGatherCpu<float>;
       iteration(cpuTable_, grid.geometry.resolution, current.data(), cpuNext_.data(),
-                accumulated.data(), "auto", 0, occluded ? occlusion : nullptr);
+                accumulated.data(), "auto", 0, occluded ? occlusion : nullptr,
+                pairedAccumulation(i, iterations_));
       current.swap(cpuNext_);  // the grid's host side now holds the new light
     }
   }

@@ -320,14 +320,17 @@ inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclu
 }
 
 // How a row pass writes what it computed: gathering stores it and adds it to the accumulated
-// grid; scattering's first pass stores it, the others add it (the accumulated grid once after).
-enum class RowOutput { StoreAndAccumulate, Store, Add };
+// grid (with the cell's source value too when the previous iteration deferred its addition, or
+// not at all when this one defers), scattering's first pass stores it, the others add it (the
+// accumulated grid once after).
+enum class RowOutput { StoreAndAccumulate, StoreAndAccumulateWithSource, Store, Add };
 
-// The row's `cells` computed values written as `output` says into `to` (and `sum`), a register at
-// a time (the compiler cannot prove the three rows apart to vectorise the plain loop).
+// The row's `cells` computed values written as `output` says into `to` (and `sum`, with the
+// row's source values `own`), a register at a time (the compiler cannot prove the rows apart to
+// vectorise the plain loop).
 template <int Bytes, class Real>
-[[gnu::always_inline]] inline void storeRow(const Real* computed, Real* to, Real* sum, int cells,
-                                            RowOutput output) {
+[[gnu::always_inline]] inline void storeRow(const Real* computed, Real* to, Real* sum,
+                                            const Real* own, int cells, RowOutput output) {
   using V = typename RegisterOf<Real, Bytes>::type;
   constexpr int kLanes = RegisterOf<Real, Bytes>::kLanes;
   int x = 0;
@@ -342,6 +345,11 @@ template <int Bytes, class Real>
     }
     std::memcpy(to + x, &value, sizeof(V));
     if (output == RowOutput::Store) continue;
+    if (output == RowOutput::StoreAndAccumulateWithSource) {
+      V previous;
+      std::memcpy(&previous, own + x, sizeof(V));
+      value += previous;
+    }
     std::memcpy(&total, sum + x, sizeof(V));
     total += value;
     std::memcpy(sum + x, &total, sizeof(V));
@@ -353,6 +361,7 @@ template <int Bytes, class Real>
     }
     to[x] = computed[x];
     if (output == RowOutput::StoreAndAccumulate) sum[x] += computed[x];
+    if (output == RowOutput::StoreAndAccumulateWithSource) sum[x] += computed[x] + own[x];
   }
 }
 
@@ -428,7 +437,8 @@ template <int N, int Bytes, class Real>
       for (int k = 0; k < N; ++k)
         storeRow<Bytes>(out.data() + std::size_t(k) * width,
                         target + channelBase + k * plane + base,
-                        accumulated + channelBase + k * plane + base, res.x, output);
+                        accumulated + channelBase + k * plane + base,
+                        source + channelBase + k * plane + base, res.x, output);
     }
   }
 }
@@ -527,7 +537,8 @@ namespace {
 template <class Real>
 void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                   const Real* source, Real* target, Real* accumulated, const std::string& isa,
-                  int threads, const StandardOcclusion<Real>* occlusion, bool scatter) {
+                  int threads, const StandardOcclusion<Real>* occlusion,
+                  StandardAccumulation accumulation, bool scatter) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
   if (occlusion && (occlusion->resolution != resolution || occlusion->coefficients != table.coefficients))
@@ -544,15 +555,25 @@ void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolu
     });
   };
   auto work = [&] {
-    if (!scatter) return pass(-1, RowOutput::StoreAndAccumulate);
+    if (!scatter)
+      return pass(-1, accumulation == StandardAccumulation::Target ? RowOutput::StoreAndAccumulate
+                      : accumulation == StandardAccumulation::Deferred
+                          ? RowOutput::Store
+                          : RowOutput::StoreAndAccumulateWithSource);
     for (int direction = 0; direction < 6; ++direction)
       pass(direction, direction == 0 ? RowOutput::Store : RowOutput::Add);
+    if (accumulation == StandardAccumulation::Deferred) return;
+    const bool withSource = accumulation == StandardAccumulation::SourceAndTarget;
     const std::size_t floats = std::size_t(3) * table.coefficients * rowCount * resolution.x;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, floats),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         Real* __restrict sum = accumulated;
                         const Real* __restrict add = target;
-                        for (std::size_t i = r.begin(); i < r.end(); ++i) sum[i] += add[i];
+                        const Real* __restrict previous = source;
+                        if (withSource)
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) sum[i] += add[i] + previous[i];
+                        else
+                          for (std::size_t i = r.begin(); i < r.end(); ++i) sum[i] += add[i];
                       });
   };
   if (threads > 0) {
@@ -568,29 +589,33 @@ void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolu
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated, const std::string& isa,
-                       int threads, const StandardOcclusion<Real>* occlusion) {
-  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion, false);
+                       int threads, const StandardOcclusion<Real>* occlusion,
+                       StandardAccumulation accumulation) {
+  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
+               accumulation, false);
 }
 
 template <class Real>
 void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                         const Real* source, Real* target, Real* accumulated,
                         const std::string& isa, int threads,
-                        const StandardOcclusion<Real>* occlusion) {
-  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion, true);
+                        const StandardOcclusion<Real>* occlusion,
+                        StandardAccumulation accumulation) {
+  propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
+               accumulation, true);
 }
 
 template void standardScatterCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                         const float*, float*, float*, const std::string&, int,
-                                        const StandardOcclusion<float>*);
+                                        const StandardOcclusion<float>*, StandardAccumulation);
 template void standardScatterCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
                                          const double*, double*, double*, const std::string&, int,
-                                         const StandardOcclusion<double>*);
+                                         const StandardOcclusion<double>*, StandardAccumulation);
 template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                        const float*, float*, float*, const std::string&, int,
-                                       const StandardOcclusion<float>*);
+                                       const StandardOcclusion<float>*, StandardAccumulation);
 template void standardGatherCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
                                         const double*, double*, double*, const std::string&, int,
-                                        const StandardOcclusion<double>*);
+                                        const StandardOcclusion<double>*, StandardAccumulation);
 
 }  // namespace lpvlab

@@ -120,23 +120,38 @@ const std::vector<std::string>& cpuKernelInstructionSets();
 // Those this CPU can run.
 std::vector<std::string> supportedCpuKernelInstructionSets();
 
+// What an iteration adds to the accumulated grid: its result (Target); nothing, leaving it to the
+// next iteration (Deferred); or the previous iteration's deferred result, which is this one's
+// source, and its own (SourceAndTarget). Pairing iterations (Deferred, SourceAndTarget, ...,
+// Target for an odd last one) reads and writes the accumulated grid every other iteration, the
+// largest stream of the kernel's memory traffic, with the same sum up to float rounding.
+enum class StandardAccumulation { Target, Deferred, SourceAndTarget };
+
+// How iteration `iteration` of `iterations` accumulates when iterations are paired.
+inline StandardAccumulation pairedAccumulation(int iteration, int iterations) {
+  if (iteration % 2 == 1) return StandardAccumulation::SourceAndTarget;
+  return iteration + 1 == iterations ? StandardAccumulation::Target : StandardAccumulation::Deferred;
+}
+
 // One gathering iteration: target = what every cell receives from its six neighbours' `source`,
 // accumulated += target. Grids in grid.glsl's layout (3 channels x coefficients x cells).
 // `occlusion`: the GV's faces, made for this table and resolution, or null (no GV, or an
-// iteration before the GV's first occluded one).
+// iteration before the GV's first occluded one). `accumulation`: see StandardAccumulation.
 // `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for an unknown one or one
 // this CPU lacks. `threads`: 0 for oneTBB's default (all cores).
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated,
                        const std::string& isa = "auto", int threads = 0,
-                       const StandardOcclusion<Real>* occlusion = nullptr);
+                       const StandardOcclusion<Real>* occlusion = nullptr,
+                       StandardAccumulation accumulation = StandardAccumulation::Target);
 
 // The same iteration by scattering (see above): the same result, scattering's work.
 template <class Real>
 void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                         const Real* source, Real* target, Real* accumulated,
                         const std::string& isa = "auto", int threads = 0,
-                        const StandardOcclusion<Real>* occlusion = nullptr);
+                        const StandardOcclusion<Real>* occlusion = nullptr,
+                        StandardAccumulation accumulation = StandardAccumulation::Target);
 
 }  // namespace lpvlab
