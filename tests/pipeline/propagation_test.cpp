@@ -225,32 +225,37 @@ TEST(Propagation, EnergyAndFluxThroughAShellFromAnIsotropicSourceOnTheCpu) {
 
 // ---- c. zero and very many iterations ---------------------------------------------------------
 
+// Zero and a thousand iterations, on both backends.
 TEST(Propagation, ZeroIterationsLeaveTheGridAsInjected) {
-  PropagationRig rig = standardRig(kRes15, 0);
-  EXPECT_EQ(rig.strategy().iterations(), 0);
-  const Grid injected = pointSource(kRes15, kCentre15, false, glm::normalize(glm::dvec3(1, -2, 3)));
-  rig.load(injected);
-  rig.propagate();
-  EXPECT_EQ(rig.current(), injected);
-  EXPECT_EQ(rig.accumulated(), injected);
+  for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu}) {
+    PropagationRig rig = standardRig(kRes15, 0, backend);
+    EXPECT_EQ(rig.strategy().iterations(), 0);
+    const Grid injected = pointSource(kRes15, kCentre15, false, glm::normalize(glm::dvec3(1, -2, 3)));
+    rig.load(injected);
+    rig.propagate();
+    EXPECT_EQ(rig.current(), injected);
+    EXPECT_EQ(rig.accumulated(), injected);
+  }
 }
-
 TEST(Propagation, AThousandIterationsStayFiniteAndLoseLightAtTheEdge) {
   const glm::ivec3 res{7, 7, 7};
-  PropagationRig rig = standardRig(res, 1000);
-  rig.load(pointSource(res, {3, 3, 3}, false, glm::normalize(glm::dvec3(1, 2, 3))));
-  rig.propagate();
-  const Grid current = rig.current(), accumulated = rig.accumulated();
-  ASSERT_TRUE(allFinite(current));
-  ASSERT_TRUE(allFinite(accumulated));
-  const double now = flux(current, res), sum = flux(accumulated, res);
-  std::cout << "[ propagation ] 7^3 grid after 1000 iterations: current flux " << now
-            << " W, accumulated " << sum << " W (injected " << injectedFlux() << " W)\n";
-  EXPECT_GE(now, 0.0);
-  EXPECT_LE(now, injectedFlux());
-  EXPECT_LT(now, 1e-6 * injectedFlux()) << "light leaves a 7^3 grid within a few steps";
-  // Accumulated: the light that passed through the cells on its way out; finite and positive.
-  EXPECT_GT(sum, injectedFlux());
+  for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu}) {
+    const char* where = backend == ComputeBackend::Cpu ? "CPU" : "GL";
+    PropagationRig rig = standardRig(res, 1000, backend);
+    rig.load(pointSource(res, {3, 3, 3}, false, glm::normalize(glm::dvec3(1, 2, 3))));
+    rig.propagate();
+    const Grid current = rig.current(), accumulated = rig.accumulated();
+    ASSERT_TRUE(allFinite(current)) << where;
+    ASSERT_TRUE(allFinite(accumulated)) << where;
+    const double now = flux(current, res), sum = flux(accumulated, res);
+    std::cout << "[ propagation ] " << where << ", 7^3 grid after 1000 iterations: current flux "
+              << now << " W, accumulated " << sum << " W (injected " << injectedFlux() << " W)\n";
+    EXPECT_GE(now, 0.0) << where;
+    EXPECT_LE(now, injectedFlux()) << where;
+    EXPECT_LT(now, 1e-6 * injectedFlux()) << where << ": light leaves a 7^3 grid within a few steps";
+    // Accumulated: the light that passed through the cells on its way out; finite and positive.
+    EXPECT_GT(sum, injectedFlux()) << where;
+  }
 }
 
 // ---- d. the kernel against the double-precision C++ ------------------------------------------
