@@ -3,7 +3,8 @@
 // It produces the normal grid: when a strategy consumes it (directed propagation), the VPLs'
 // normals go there too. On the CPU backend it runs rsm_vpl_cpu.h (the same shared VPL
 // functions, shaders/injection/vpl.glsl, without atomics): the RSM is read back once per frame,
-// and the grid it adds to is read from GL and written back.
+// and the VPLs are added to the light grid's host side (dual_buffer.h); the normal grid is read
+// from GL and written back.
 //
 // | parameter | type  | default | meaning                                                       |
 // |-----------|-------|---------|---------------------------------------------------------------|

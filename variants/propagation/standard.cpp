@@ -14,16 +14,17 @@
 // from, every occluded iteration, so light bounces as often as iterations allow
 // (standard_faces.glsl has the mathematics).
 // On the CPU backend ([compute] backend, strategy.h) gathering and scattering run the CPU kernels
-// of standard_cpu.h, with the GV and its bounces: the injected grid (and the GV) are read back
-// from GL once, every iteration runs on the CPU, and the light and the accumulated grid go back to
-// GL for rendering (all inside the propagation stage's time).
+// of standard_cpu.h, with the GV and its bounces, on the light grid's host side
+// (dual_buffer.h: read back only if a GL kernel wrote it last; the GV is read back from GL), with
+// iterations paired so the accumulated grid is updated every other one.
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
 // | iterations | int    | 32       | propagation steps; light travels one cell per step (0..4096): |
 // |            |        |          | a 32-cell grid needs about 32 for light to cross it           |
 // | method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
-// |            |        |          | different memory traffic (scatter uses atomics)               |
+// |            |        |          | different memory traffic (scatter: atomics on GL, six passes  |
+// |            |        |          | on the CPU)                                                   |
 // | bounces    | bool   | false    | re-emit the light the GV blocks with its surfaces' albedo     |
 // |            |        |          | (multiple bounces); needs [occlusion] "geometry_volume"       |
 // | far_face_solid_angle  | real | 0.40066968 | Omega of the far face (solid_angle.h); a     |
