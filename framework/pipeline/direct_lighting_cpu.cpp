@@ -42,11 +42,7 @@ void directLightingCpu(const DirectCpuInputs& in, HostImage& out) {
   const HostDepthImage& shadow = *in.shadowDepth;
   if (shadow.width != shadow.height || std::size_t(shadow.layers) < in.records->views.size())
     throw Error("direct light (CPU): the shadow maps are not square or lack a layer per view");
-  std::vector<shared::GpuLight> lights;
-  for (const GpuLight& light : in.records->lights)
-    lights.push_back(sharedLightRecord<shared::GpuLight>(light));
-  std::vector<shared::GpuView> views;
-  for (const GpuView& view : in.records->views) views.push_back(sharedViewRecord<shared::GpuView>(view));
+  const auto [lights, views] = sharedLightViews<shared::GpuLight, shared::GpuView>(*in.records);
   const int width = in.position->width;
   tbb::parallel_for(tbb::blocked_range<int>(0, in.position->height), [&](const tbb::blocked_range<int>& rows) {
     shared::DirectLightKernel kernel{lights.data(), views.data(), shadow.depths.data(), shadow.width};

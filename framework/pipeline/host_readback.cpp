@@ -16,24 +16,31 @@ void uploadFloats(const std::vector<float>& host, gl::Buffer& buffer) {
   buffer.upload(host.data(), host.size() * sizeof(float));
 }
 
-void downloadImage(const gl::Texture& texture, HostImage& image) {
+namespace {
+
+// Level 0 of `texture`, every layer, as `format` (one T per texel: a vec4 or a float) into
+// `values` (resized), and the image's size.
+template <class Image, class T>
+void downloadLevel0(const gl::Texture& texture, GLenum format, Image& image, std::vector<T>& values,
+                    const char* what) {
   image.width = texture.width();
   image.height = texture.height();
   image.layers = std::max(1, texture.depth());
-  image.texels.resize(std::size_t(image.width) * image.height * image.layers);
-  glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
-                    GLsizei(image.texels.size() * sizeof(glm::vec4)), image.texels.data());
-  checkGl("reading an image back for the CPU backend");
+  values.resize(std::size_t(image.width) * image.height * image.layers);
+  glGetTextureImage(texture.id(), 0, format, GL_FLOAT, GLsizei(values.size() * sizeof(T)),
+                    values.data());
+  checkGl(what);
+}
+
+}  // namespace
+
+void downloadImage(const gl::Texture& texture, HostImage& image) {
+  downloadLevel0(texture, GL_RGBA, image, image.texels, "reading an image back for the CPU backend");
 }
 
 void downloadDepth(const gl::Texture& texture, HostDepthImage& image) {
-  image.width = texture.width();
-  image.height = texture.height();
-  image.layers = std::max(1, texture.depth());
-  image.depths.resize(std::size_t(image.width) * image.height * image.layers);
-  glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    GLsizei(image.depths.size() * sizeof(float)), image.depths.data());
-  checkGl("reading a depth image back for the CPU backend");
+  downloadLevel0(texture, GL_DEPTH_COMPONENT, image, image.depths,
+                 "reading a depth image back for the CPU backend");
 }
 
 HostImage downloadImage(const gl::Texture& texture) {

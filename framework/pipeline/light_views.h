@@ -49,6 +49,22 @@ struct LightViews {
   std::vector<GpuView> views;
 };
 
+template <class SharedLight, class SharedView>
+struct SharedLightViews {
+  std::vector<SharedLight> lights;
+  std::vector<SharedView> views;
+};
+
+// Every record of `records` in double precision (see sharedLightRecord).
+template <class SharedLight, class SharedView>
+SharedLightViews<SharedLight, SharedView> sharedLightViews(const LightViews& records) {
+  SharedLightViews<SharedLight, SharedView> shared;
+  for (const GpuLight& light : records.lights)
+    shared.lights.push_back(sharedLightRecord<SharedLight>(light));
+  for (const GpuView& view : records.views) shared.views.push_back(sharedViewRecord<SharedView>(view));
+  return shared;
+}
+
 // Throws an Error when a light can't be used (zero or negative intensity is allowed: it gives
 // black; non-finite values and degenerate directions are errors).
 LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& sceneBounds);

@@ -242,13 +242,9 @@ TEST(Occlusion, SkipFirstIterationSetsTheFirstOccludedIteration) {
   EXPECT_EQ(first, 0);
 }
 
+// Largest |a - b| over b's largest value.
 double maxRelativeDifference(const Grid& a, const Grid& b) {
-  double largest = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    largest = std::max(largest, double(std::abs(a[i] - b[i])));
-    scale = std::max(scale, double(std::abs(b[i])));
-  }
-  return scale > 0.0 ? largest / scale : largest;
+  return test::maxDifference(a, b) / test::maxAbs(b);
 }
 
 // The CPU backend's surfels (geometry_volume_cpu.h) are the GL kernels' shared functions summed

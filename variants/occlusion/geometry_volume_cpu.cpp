@@ -95,11 +95,7 @@ void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvT
   const int resolution = rsm.position->width;
   if (rsm.position->height != resolution || std::size_t(rsm.position->layers) > records.views.size())
     throw Error("geometry volume (CPU): the RSM is not square or has a layer without its view");
-  std::vector<shared::GpuView> views;
-  for (const GpuView& view : records.views) views.push_back(sharedViewRecord<shared::GpuView>(view));
-  std::vector<shared::GpuLight> lights;
-  for (const GpuLight& light : records.lights)
-    lights.push_back(sharedLightRecord<shared::GpuLight>(light));
+  const auto [lights, views] = sharedLightViews<shared::GpuLight, shared::GpuView>(records);
   const std::size_t perLayer = std::size_t(resolution) * resolution;
   addSurfels(
       texels, [&](std::size_t i) { return rsm.position->texels[i]; },
