@@ -1,5 +1,7 @@
 #include "framework/core/cpu_features.h"
 
+#include "framework/core/cpu_dispatch.h"
+
 namespace lpvlab {
 
 // Each function calls __builtin_cpu_init first: it may run before static constructors (from
@@ -24,6 +26,34 @@ bool cpuHasX86_64_v3() {
 bool cpuHasX86_64_v4() {
   __builtin_cpu_init();
   return __builtin_cpu_supports("x86-64-v4");
+}
+
+CpuKernelLevel widestCpuKernelLevel() {
+  static const CpuKernelLevel widest = cpuHasX86_64_v4()   ? CpuKernelLevel::X86_64_V4
+                                       : cpuHasX86_64_v3() ? CpuKernelLevel::X86_64_V3
+                                                           : CpuKernelLevel::X86_64;
+  return widest;
+}
+
+CpuKernelLevel pixelKernelLevel() {
+  return widestCpuKernelLevel() == CpuKernelLevel::X86_64 ? CpuKernelLevel::X86_64
+                                                          : CpuKernelLevel::X86_64_V3;
+}
+
+std::vector<CpuKernelLevel> cpuKernelLevelsThisCpuRuns() {
+  std::vector<CpuKernelLevel> levels = {CpuKernelLevel::X86_64};
+  if (cpuHasX86_64_v3()) levels.push_back(CpuKernelLevel::X86_64_V3);
+  if (cpuHasX86_64_v4()) levels.push_back(CpuKernelLevel::X86_64_V4);
+  return levels;
+}
+
+const char* cpuKernelLevelName(CpuKernelLevel level) {
+  switch (level) {
+    case CpuKernelLevel::X86_64_V4: return "x86-64-v4";
+    case CpuKernelLevel::X86_64_V3: return "x86-64-v3";
+    case CpuKernelLevel::X86_64: break;
+  }
+  return "x86-64";
 }
 
 }  // namespace lpvlab

@@ -2,6 +2,12 @@
 // The GLSL files under shaders/common/ compiled as C++ in double precision. Tests and CPU
 // reference implementations call these, so they check the exact functions the kernels run.
 //
+// A CPU kernel's translation unit that defines LPVLAB_SHARED_SINGLE_PRECISION before including
+// this header gets the same functions in single precision (`real` = float), as the GL kernels
+// run them: the speed of float arithmetic and half the memory traffic, and its tests compare it
+// with the double-precision functions of another translation unit (internal linkage keeps the
+// two apart).
+//
 // A variant's own shared GLSL (e.g. shaders/propagation/standard_faces.glsl) is compiled the
 // same way, after this header, between the same two macros:
 //   LPVLAB_SHARED_GLSL_BEGIN
@@ -28,14 +34,18 @@
 #define LPVLAB_SHARED_CPP 1
 
 LPVLAB_SHARED_GLSL_BEGIN
+#ifdef LPVLAB_SHARED_SINGLE_PRECISION
+using real = float;
+#else
 using real = double;
-using vec2 = glm::dvec2;
-using vec3 = glm::dvec3;
-using vec4 = glm::dvec4;
+#endif
+using vec2 = glm::vec<2, real>;
+using vec3 = glm::vec<3, real>;
+using vec4 = glm::vec<4, real>;
 using ivec2 = glm::ivec2;
 using ivec3 = glm::ivec3;
 using ivec4 = glm::ivec4;
-using mat4 = glm::dmat4;
+using mat4 = glm::mat<4, 4, real>;
 using glm::abs;
 using glm::clamp;
 using glm::cross;
@@ -47,6 +57,7 @@ using glm::min;
 using glm::normalize;
 using glm::pow;
 using glm::sqrt;
+using glm::step;
 
 #include "shaders/common/sh.glsl"
 #include "shaders/common/grid.glsl"

@@ -17,7 +17,7 @@ DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings,
   if (!onCpu_) program_ = shaders.compute("lighting/direct.comp");
 }
 
-void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct,
+void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                             HostReadback& host) {
   if (onCpu_) return renderOnCpu(gbuffer, maps, direct, host);
   using namespace direct_kernel;
@@ -27,7 +27,7 @@ void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, gl::T
   glBindTextureUnit(UNIT_G_ALBEDO, gbuffer.albedo.id());
   glBindTextureUnit(UNIT_G_EMISSION, gbuffer.emission.id());
   glBindTextureUnit(UNIT_SHADOW_MAPS, maps.shadowDepth.id());
-  glBindImageTexture(IMAGE_OUT_DIRECT, direct.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindImageTexture(IMAGE_OUT_DIRECT, direct.texture().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   maps.lightRecords.bindStorage(BUFFER_LIGHTS);
   maps.viewRecords.bindStorage(BUFFER_VIEWS);
   glUniform1i(LOCATION_LIGHT_COUNT, maps.lightCount);
@@ -51,13 +51,11 @@ WorkCount DirectLighting::work(double pixels, int lights) const {
 }
 
 // The G-buffer and the shadow maps come from the frame's host copies (read back once per frame,
-// shared with the CPU strategies); the image goes back to GL.
-void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps,
-                                 gl::Texture& direct, HostReadback& host) {
+// shared with the CPU strategies); the image is written on its host side, which stays there
+// until something on GL asks for it (dual_image.h).
+void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
+                                 HostReadback& host) {
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the raster passes, before reading them back
-  hostDirect_.width = gbuffer.width;
-  hostDirect_.height = gbuffer.height;
-  hostDirect_.texels.resize(std::size_t(gbuffer.width) * gbuffer.height);
   directLightingCpu({.position = &host.image(gbuffer.position),
                      .normal = &host.image(gbuffer.normal),
                      .albedo = &host.image(gbuffer.albedo),
@@ -66,8 +64,7 @@ void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps,
                      .records = &maps.records,
                      .normalOffsetTexels = settings_.normalOffsetTexels,
                      .depthBias = settings_.depthBias},
-                    hostDirect_);
-  uploadImage(hostDirect_, direct);
+                    direct.host());
 }
 
 }  // namespace lpvlab

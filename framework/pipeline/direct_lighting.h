@@ -5,6 +5,7 @@
 
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/dual_image.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 
@@ -20,20 +21,18 @@ public:
   // onCpu: run on the CPU (the backend is "cpu", or "auto" on a software GL renderer).
   DirectLighting(ShaderCompiler& shaders, ShadowSettings settings, bool onCpu);
   // `host`: the frame's read-back images (used on the CPU).
-  void render(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct, HostReadback& host);
+  void render(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct, HostReadback& host);
   bool onCpu() const { return onCpu_; }
   // What it does per frame (strategy.h's WorkCount), for `pixels` and `lights`.
   WorkCount work(double pixels, int lights) const;
-  std::size_t memoryBytes() const { return hostDirect_.texels.size() * sizeof(glm::vec4); }
 
 private:
-  void renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, gl::Texture& direct,
+  void renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                    HostReadback& host);
 
   Program program_;
   ShadowSettings settings_;
   bool onCpu_;
-  HostImage hostDirect_;  // on the CPU
 };
 
 }  // namespace lpvlab

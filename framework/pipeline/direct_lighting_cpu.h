@@ -1,11 +1,12 @@
 #pragma once
 // Direct light on the CPU (the CPU backend, strategy.h): every G-buffer pixel through the GL
-// kernel's own per-pixel function (shaders/lighting/direct_light.glsl, compiled as C++ in double
-// precision); the shadow taps are GL's LINEAR depth-compare filtering written out
+// kernel's own per-pixel function (shaders/lighting/direct_light.glsl, compiled as C++ in single
+// precision, as GL runs it); the shadow taps are GL's LINEAR depth-compare filtering written out
 // (shaders/lighting/shadow_tap.glsl) on the shadow maps read back once per frame. Rows of pixels
 // are shared out by oneTBB; each pixel is written by one task, so the image does not depend on the
 // thread count.
 
+#include "framework/core/cpu_dispatch.h"
 #include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/light_views.h"
 
@@ -20,6 +21,7 @@ struct DirectCpuInputs {
   const LightViews* records = nullptr;
   float normalOffsetTexels = 0.0f;  // ShadowSettings
   float depthBias = 0.0f;
+  CpuKernelLevel instructions = pixelKernelLevel();  // cpu_dispatch.h
 };
 
 // `out` (the G-buffer's size) gets the direct radiance, W/(m^2 sr), alpha 1 where there is a

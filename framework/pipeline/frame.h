@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "framework/gl/resources.h"
+#include "framework/pipeline/dual_image.h"
 #include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/light_grid.h"
@@ -58,7 +59,7 @@ struct Frame {
   const GBuffer& gbuffer;
   const LightMaps& lightMaps;
   LightGrid& lightGrid;                 // the level being filled
-  gl::Texture& indirect;                // RGBA32F output of rendering: indirect radiance, W/(m^2 sr)
+  DualImage& indirect;  // output of rendering, zeros when it starts: indirect radiance, W/(m^2 sr)
   const ResourceTable* resources = nullptr;  // the level's resources (named_resources.h)
   HostReadback* host = nullptr;  // the raster passes' images on the CPU, read once per frame
   std::span<LightGrid> levels;               // every level, finest first; empty: lightGrid alone

@@ -31,17 +31,20 @@ struct GpuView {
 };
 static_assert(sizeof(GpuView) == 80);
 
-// A record in double precision, as the shared GLSL's GpuLight and GpuView compile as C++
-// (framework/math/shared.h; each translation unit has its own such types, so the caller names
-// them): for CPU kernels that call the GL kernels' shared functions.
+// A record as the shared GLSL's GpuLight and GpuView compile as C++ (framework/math/shared.h,
+// in the translation unit's precision; each translation unit has its own such types, so the
+// caller names them): for CPU kernels that call the GL kernels' shared functions.
 template <class SharedLight>
 SharedLight sharedLightRecord(const GpuLight& light) {
-  return {glm::dvec4(light.positionType), glm::dvec4(light.directionCosOuter),
-          glm::dvec4(light.intensityCosInner), light.viewOfFace0123, light.viewOfFace45};
+  using Vec4 = decltype(SharedLight::positionType);
+  return {Vec4(light.positionType), Vec4(light.directionCosOuter), Vec4(light.intensityCosInner),
+          light.viewOfFace0123, light.viewOfFace45};
 }
 template <class SharedView>
 SharedView sharedViewRecord(const GpuView& view) {
-  return {glm::dmat4(view.clipFromWorld), glm::dvec4(view.params)};
+  using Vec4 = decltype(SharedView::params);
+  using Mat4 = decltype(SharedView::clipFromWorld);
+  return {Mat4(view.clipFromWorld), Vec4(view.params)};
 }
 
 struct LightViews {
@@ -55,7 +58,7 @@ struct SharedLightViews {
   std::vector<SharedView> views;
 };
 
-// Every record of `records` in double precision (see sharedLightRecord).
+// Every record of `records` as the shared types (see sharedLightRecord).
 template <class SharedLight, class SharedView>
 SharedLightViews<SharedLight, SharedView> sharedLightViews(const LightViews& records) {
   SharedLightViews<SharedLight, SharedView> shared;

@@ -10,18 +10,21 @@ namespace lpvlab {
 
 namespace {
 
-// A float texture's level 0, flipped to top row first, keeping `channels` of its RGBA.
-Image readTexture(const gl::Texture& texture, int channels, int firstChannel = 0) {
-  const int w = texture.width(), h = texture.height();
-  std::vector<float> rgba(std::size_t(w) * h * 4);
-  glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)),
-                    rgba.data());
+// An RGBA image (bottom row first, as GL stores it) flipped to top row first, keeping `channels`
+// of its RGBA from `firstChannel` on.
+Image toImage(const HostImage& rgba, int channels, int firstChannel = 0) {
+  const int w = rgba.width, h = rgba.height;
   Image image(w, h, channels);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < channels; ++c)
-        image.at(x, h - 1 - y, c) = rgba[(std::size_t(y) * w + x) * 4 + firstChannel + c];
+        image.at(x, h - 1 - y, c) = rgba.texels[std::size_t(y) * w + x][firstChannel + c];
   return image;
+}
+
+// A float texture's level 0, the same way.
+Image readTexture(const gl::Texture& texture, int channels, int firstChannel = 0) {
+  return toImage(downloadImage(texture), channels, firstChannel);
 }
 
 // The world positions of the surfaces the G-buffer's pixels see (where cascades follow them).
@@ -98,9 +101,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     carry_ = std::make_unique<CascadeCarry>(shaders, requirements_.shOrder, carryOnCpu);
     if (carryOnCpu) cpuStages_.insert("injection");
   }
-  directImage_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "direct");
-  indirectImage_ =
-      gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, "indirect");
+  directImage_ = DualImage(settings.width, settings.height, "direct");
+  indirectImage_ = DualImage(settings.width, settings.height, "indirect");
   const StrategySetup setup{.shaders = shaders,
                             .grid = settings.grid,
                             .requirements = requirements_,
@@ -208,8 +210,7 @@ FrameTimes Pipeline::renderFrame() {
     }
   });
   stage("indirect", times, [&] {
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearTexImage(indirectImage_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    indirectImage_.zero();  // on the side the first rendering strategy asks for
     Frame frame = this->frame(0);
     for (const auto& rendering : strategies_.rendering) rendering->render(frame);
   });
@@ -223,8 +224,9 @@ FrameTimes Pipeline::renderFrame() {
 
 std::vector<NamedImage> Pipeline::readOutputs() const {
   const GBuffer& g = gbufferPass_->gbuffer();
-  Image direct = readTexture(directImage_, 3);
-  Image indirect = readTexture(indirectImage_, 3);
+  // From the side that wrote them last (read back only if that was GL).
+  Image direct = toImage(directImage_.hostRead(), 3);
+  Image indirect = toImage(indirectImage_.hostRead(), 3);
   Image combined = direct;
   for (std::size_t i = 0; i < combined.pixels.size(); ++i) combined.pixels[i] += indirect.pixels[i];
   return {{"direct", std::move(direct)},
@@ -320,8 +322,7 @@ nlohmann::json Pipeline::memoryReport() const {
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
       {"light_grid", sum(levels_, [](const LightGrid& g) { return g.memoryBytes(); })},
-      {"output_images", directImage_.bytes() + indirectImage_.bytes()},
-      {"direct", direct_->memoryBytes()}};
+      {"output_images", directImage_.memoryBytes() + indirectImage_.memoryBytes()}};
   for (const ResourceTable& resources : resources_)
     for (const auto& [name, size] : resources.memoryBytes())
       bytes[name] = bytes.value(name, std::size_t(0)) + size;

@@ -116,7 +116,7 @@ private:
   std::vector<LightGrid> levels_;  // finest first
   std::vector<ResourceTable> resources_;  // per level: the resources the composition uses
   std::unique_ptr<CascadeCarry> carry_;                            // with carrying cascades only
-  gl::Texture directImage_, indirectImage_;
+  DualImage directImage_, indirectImage_;  // the frame's outputs, on the side that wrote them
   GpuTimer gpuTimer_;
   std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
   HostReadback hostReadback_;        // this frame's images read back for them

@@ -18,13 +18,13 @@
 #include "sh.glsl"
 
 vec3 gvFromLightGrid(vec3 g) {
-  return g + 0.5;
+  return g + real(0.5);
 }
 
 // Where the ray from the light-grid point `from` in direction `w` crosses the plane `from + 0.5 d`
 // (d: the unit axis towards the neighbour; the shared face when `from` is a cell centre).
 vec3 sharedFaceCrossing(vec3 from, vec3 d, vec3 w) {
-  return from + w * (0.5 / dot(w, d));
+  return from + w * (real(0.5) / dot(w, d));
 }
 
 // A surfel's blocking weight A_s / s^2 (area over the cell's face): what its lobe is scaled by, and

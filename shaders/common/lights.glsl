@@ -9,8 +9,8 @@
 // outer one, attenuation = clamp((cos(angle) - cos(outer)) / (cos(inner) - cos(outer)), 0, 1)^2.
 // `cosAngle` is dot(spot direction, direction from the light to the point).
 real spotFalloff(real cosAngle, real cosInner, real cosOuter) {
-  real scale = 1.0 / max(0.001, cosInner - cosOuter);
-  real t = clamp((cosAngle - cosOuter) * scale, 0.0, 1.0);
+  real scale = real(1.0) / max(real(0.001), cosInner - cosOuter);
+  real t = clamp((cosAngle - cosOuter) * scale, real(0.0), real(1.0));
   return t * t;
 }
 

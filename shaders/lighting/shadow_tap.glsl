@@ -16,31 +16,30 @@
 #define LPVLAB_SHADOW_TAP_GLSL
 #include "../common/prelude.glsl"
 
-real shadowTexelLit(int view, ivec2 texel, real reference, int resolution) {
-  ivec2 c = clamp(texel, ivec2(0), ivec2(resolution - 1));
-  return reference <= shadowDepth(view, c) ? real(1.0) : real(0.0);
-}
-
-// The weight of texel a (0..3, i.e. i-1 .. i+2) in the nine taps along one axis, fraction f.
-real shadowTapsWeight(int a, real f) {
-  if (a == 0) return real(1.0) - f;
-  if (a == 3) return f;
-  return real(1.0);
+// One row of the 4x4 texels: columns (clamped to the map), their weights wx; 1 where
+// reference <= the stored depth.
+real shadowRowLit(int view, ivec4 columns, int row, real reference, vec4 wx) {
+  vec4 depth = vec4(shadowDepth(view, ivec2(columns.x, row)), shadowDepth(view, ivec2(columns.y, row)),
+                    shadowDepth(view, ivec2(columns.z, row)), shadowDepth(view, ivec2(columns.w, row)));
+  return dot(wx, step(vec4(reference), depth));
 }
 
 real shadowTaps3x3Bilinear(int view, vec2 uv, real reference, int resolution) {
   vec2 t = uv * real(resolution) - real(0.5);
   vec2 b = floor(t);
   vec2 f = t - b;
-  ivec2 i = ivec2(b) - ivec2(1);
-  real lit = 0.0;
-  for (int y = 0; y < 4; ++y) {
-    real row = 0.0;
-    for (int x = 0; x < 4; ++x)
-      row += shadowTapsWeight(x, f.x) * shadowTexelLit(view, i + ivec2(x, y), reference, resolution);
-    lit += shadowTapsWeight(y, f.y) * row;
-  }
-  return lit / real(9.0);
+  // The texels i-1 .. i+2 along each axis, clamped to the map's edge once per axis, and their
+  // weights (1 - f, 1, 1, f).
+  ivec4 last = ivec4(resolution - 1);
+  ivec4 columns = clamp(ivec4(int(b.x)) + ivec4(-1, 0, 1, 2), ivec4(0), last);
+  ivec4 rows = clamp(ivec4(int(b.y)) + ivec4(-1, 0, 1, 2), ivec4(0), last);
+  vec4 wx = vec4(real(1.0) - f.x, real(1.0), real(1.0), f.x);
+  vec4 wy = vec4(real(1.0) - f.y, real(1.0), real(1.0), f.y);
+  vec4 lit = vec4(shadowRowLit(view, columns, rows.x, reference, wx),
+                  shadowRowLit(view, columns, rows.y, reference, wx),
+                  shadowRowLit(view, columns, rows.z, reference, wx),
+                  shadowRowLit(view, columns, rows.w, reference, wx));
+  return dot(wy, lit) / real(9.0);
 }
 
 #endif

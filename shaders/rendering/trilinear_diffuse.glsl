@@ -35,20 +35,46 @@ LobeSample sampleLobe(vec3 g, real lobe[SH_MAX_COEFFICIENTS], int coefficients, 
   vec3 base = floor(centred);
   vec3 f = centred - base;
   int cells = cellCount(resolution);
-  LobeSample s = LobeSample(vec3(0.0), vec3(0.0));
+  // The projection on the lobe is linear, so the 8 cells' coefficients are interpolated first and
+  // projected once: per corner one multiply-add per coefficient and channel (runs of N floats a
+  // CPU does as short vectors), no sum over the coefficients until the end. The channels by name,
+  // not v[channel]: GLM's run-time component index is a branch.
+  real red[SH_MAX_COEFFICIENTS];
+  real green[SH_MAX_COEFFICIENTS];
+  real blue[SH_MAX_COEFFICIENTS];
+  real redSlope[SH_MAX_COEFFICIENTS];
+  real greenSlope[SH_MAX_COEFFICIENTS];
+  real blueSlope[SH_MAX_COEFFICIENTS];
+  for (int k = 0; k < coefficients; ++k) {
+    red[k] = real(0.0);
+    green[k] = real(0.0);
+    blue[k] = real(0.0);
+    redSlope[k] = real(0.0);
+    greenSlope[k] = real(0.0);
+    blueSlope[k] = real(0.0);
+  }
   for (int corner = 0; corner < 8; ++corner) {
     ivec3 o = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
     int index = cellIndex(clamp(ivec3(base) + o, ivec3(0), resolution - 1), resolution);
-    // The channels by name, not v[channel]: GLM's run-time component index is a branch, which
-    // cost the CPU kernel a third of its time.
-    vec3 v = vec3(0.0);
+    real w = trilinearWeight(o, f);
     for (int k = 0; k < coefficients; ++k) {
-      v.x += gridCoefficient(0, k, coefficients, index, cells) * lobe[k];
-      v.y += gridCoefficient(1, k, coefficients, index, cells) * lobe[k];
-      v.z += gridCoefficient(2, k, coefficients, index, cells) * lobe[k];
+      red[k] += w * gridCoefficient(0, k, coefficients, index, cells);
+      green[k] += w * gridCoefficient(1, k, coefficients, index, cells);
+      blue[k] += w * gridCoefficient(2, k, coefficients, index, cells);
     }
-    s.value += trilinearWeight(o, f) * v;
-    if (withSlope) s.slope += trilinearWeightSlope(o, f, d) * v;
+    if (withSlope) {
+      real ws = trilinearWeightSlope(o, f, d);
+      for (int k = 0; k < coefficients; ++k) {
+        redSlope[k] += ws * gridCoefficient(0, k, coefficients, index, cells);
+        greenSlope[k] += ws * gridCoefficient(1, k, coefficients, index, cells);
+        blueSlope[k] += ws * gridCoefficient(2, k, coefficients, index, cells);
+      }
+    }
+  }
+  LobeSample s = LobeSample(vec3(0.0), vec3(0.0));
+  for (int k = 0; k < coefficients; ++k) {
+    s.value += lobe[k] * vec3(red[k], green[k], blue[k]);
+    s.slope += lobe[k] * vec3(redSlope[k], greenSlope[k], blueSlope[k]);
   }
   return s;
 }

@@ -18,6 +18,8 @@
 #include <thread>
 
 #include <benchmark/benchmark.h>
+
+#include "benchmark_support.h"
 #include <tbb/parallel_for.h>
 
 #include "framework/math/solid_angle.h"
@@ -161,33 +163,17 @@ void multiplyAddPeak(benchmark::State& state, const std::string& isa) {
 
 const bool registered = [] {
   for (const std::string& isa : supportedCpuKernelInstructionSets())
-    benchmark::RegisterBenchmark(("standard_gather/" + isa).c_str(), standardGather, isa)
+    medianOf5(benchmark::RegisterBenchmark(("standard_gather/" + isa).c_str(), standardGather, isa)
         ->ArgsProduct({{32, 64}, {1, 2, 3}})
-        ->ArgNames({"res", "order"})
-        ->UseRealTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Repetitions(5)
-        ->ReportAggregatesOnly(true);
-  benchmark::RegisterBenchmark("standard_variants/auto", standardVariants)
+        ->ArgNames({"res", "order"}));
+  medianOf5(benchmark::RegisterBenchmark("standard_variants/auto", standardVariants)
       ->ArgsProduct({{32, 64}, {0, 1}, {0, 1, 2}})
-      ->ArgNames({"res", "scatter", "gv"})
-      ->UseRealTime()
-      ->Unit(benchmark::kMillisecond)
-      ->Repetitions(5)
-      ->ReportAggregatesOnly(true);
-  benchmark::RegisterBenchmark("standard_occlusion_setup", standardOcclusionSetup)
+      ->ArgNames({"res", "scatter", "gv"}));
+  medianOf5(benchmark::RegisterBenchmark("standard_occlusion_setup", standardOcclusionSetup)
       ->ArgsProduct({{32, 64}, {0, 1}})
-      ->ArgNames({"res", "bounces"})
-      ->UseRealTime()
-      ->Unit(benchmark::kMillisecond)
-      ->Repetitions(5)
-      ->ReportAggregatesOnly(true);
+      ->ArgNames({"res", "bounces"}));
   for (const std::string& isa : supportedCpuKernelInstructionSets())
-    benchmark::RegisterBenchmark(("fma_peak/" + isa).c_str(), multiplyAddPeak, isa)
-        ->UseRealTime()
-        ->Unit(benchmark::kMillisecond)
-        ->Repetitions(5)
-        ->ReportAggregatesOnly(true);
+    medianOf5(benchmark::RegisterBenchmark(("fma_peak/" + isa).c_str(), multiplyAddPeak, isa));
   return true;
 }();
 

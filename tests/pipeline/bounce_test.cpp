@@ -404,7 +404,7 @@ Grid gvAlbedoFrom(const std::string& source) {
   ResourceTable resources;
   resources.put(kGeometryVolume, gv);
   resources.put(kSurfaceAlbedo, surfaceAlbedo);
-  gl::Texture indirect;
+  DualImage indirect;
   Frame frame{.scene = &scene, .camera = &e.camera, .gbuffer = gbuffer.gbuffer(),
               .lightMaps = lightMaps.lightMaps(), .lightGrid = grid, .indirect = indirect,
               .resources = &resources};

@@ -239,7 +239,7 @@ TEST(CornellImage, TrilinearRenderingReproducesAnAnalyticField) {
       }
   grid.accumulated.upload(coefficients.data(), coefficients.size() * sizeof(float));
 
-  gl::Texture indirect(GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, "indirect (test)");
+  DualImage indirect(w, h, "indirect (test)");
   const LightMaps noLightMaps;
   Frame frame{.gbuffer = gbufferPass.gbuffer(), .lightMaps = noLightMaps, .lightGrid = grid, .indirect = indirect};
   rendering->render(frame);
@@ -250,7 +250,7 @@ TEST(CornellImage, TrilinearRenderingReproducesAnAnalyticField) {
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(into.size() * sizeof(float)),
                       into.data());
   };
-  read(indirect, out);
+  read(indirect.texture(), out);
   read(g.position, position);
   read(g.normal, normal);
   read(g.albedo, albedo);

@@ -137,7 +137,7 @@ private:
   std::unique_ptr<GBufferPass> gbufferPass_;
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   LightGrid grid_;
-  gl::Texture indirect_;
+  DualImage indirect_;
   HostReadback host_;
 };
 

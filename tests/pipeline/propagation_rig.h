@@ -116,7 +116,7 @@ private:
   ResourceTable resources_;  // borrows the three above
   GBuffer gbuffer_;  // propagation reads none of these
   LightMaps lightMaps_;
-  gl::Texture indirect_;
+  DualImage indirect_;
 };
 
 // A [propagation] table: `iterations`, and `method` unless empty.

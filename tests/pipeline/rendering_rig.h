@@ -109,9 +109,7 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
   gbuffer.position = texture(position, "position (test)");
   gbuffer.normal = texture(normal, "normal (test)");
   gbuffer.albedo = texture(albedo, "albedo (test)");
-  gl::Texture indirect(GL_TEXTURE_2D, GL_RGBA32F, w, 1, 1, "indirect (test)");
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearTexImage(indirect.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  DualImage indirect(w, 1, "indirect (test)");  // zeros
   const LightMaps noLightMaps;
   Camera camera;
   camera.position = cameraPosition;
@@ -120,12 +118,10 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
               .lightGrid = lightGrids.front(), .indirect = indirect, .host = &host,
               .levels = lightGrids, .cascadeBlendCells = blendCells};
   rendering->render(frame);
-  std::vector<float> out(std::size_t(w) * 4);
-  glGetTextureImage(indirect.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)),
-                    out.data());
+  const HostImage& out = indirect.hostRead();
   checkGl("rendering variants test");
   std::vector<dvec3> result;
-  for (int i = 0; i < w; ++i) result.emplace_back(out[4 * i], out[4 * i + 1], out[4 * i + 2]);
+  for (int i = 0; i < w; ++i) result.emplace_back(out.texels[std::size_t(i)]);
   return result;
 }
 

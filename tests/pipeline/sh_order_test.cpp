@@ -9,6 +9,7 @@
 //   - every shipped propagation runs at orders 1-3; a composition asking more of a strategy than
 //     its maxShOrder() is refused, naming the key and the strategy (a test-only order-1 rendering).
 
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -217,13 +218,13 @@ Image renderTrilinear(const Grid& grid, int order, const glm::ivec3& res, int wi
   gbuffer.normal = texture(normals, width, height, "normal");
   gbuffer.albedo = texture(albedo, width, height, "albedo");
   LightMaps maps;
-  gl::Texture indirect(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "indirect");
+  DualImage indirect(width, height, "indirect");
   Frame frame{.gbuffer = gbuffer, .lightMaps = maps, .lightGrid = light, .indirect = indirect};
   strategy->render(frame);
   checkGl("sh order rendering test");
   Image image(width, height, 4);
-  glGetTextureImage(indirect.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.pixels.size() * sizeof(float)),
-                    image.pixels.data());
+  const HostImage& texels = indirect.hostRead();
+  std::memcpy(image.pixels.data(), texels.texels.data(), image.pixels.size() * sizeof(float));
   return image;
 }
 

@@ -116,7 +116,7 @@ private:
   LightGrid grid_;
   GBuffer gbuffer_;  // sky injection reads none of these
   LightMaps lightMaps_;
-  gl::Texture indirect_;
+  DualImage indirect_;
 };
 
 std::size_t at(int coefficients, const glm::ivec3& cell, int channel, int k) {

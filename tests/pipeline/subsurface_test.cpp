@@ -113,7 +113,7 @@ public:
         camera_(scene.cameras.front()),
         gbuffer_(shaders_, kWidth, kHeight),
         maps_(shaders_, buildLightViews(scene.lights, scene.bounds()), 8, 8),
-        indirect_(GL_TEXTURE_2D, GL_RGBA32F, kWidth, kHeight, 1, "test indirect") {
+        indirect_(kWidth, kHeight, "test indirect") {
     table_.insert("type", "subsurface");
     table_.insert("resolution", 12);
     table_.insert("iterations", iterations);
@@ -132,8 +132,7 @@ public:
                         .lightMaps = &maps_.lightMaps(),
                         .imageSize = {kWidth, kHeight}});
     gbuffer_.render(scene_.gpu, camera_);
-    const float prefill[4] = {kPrefill, kPrefill, kPrefill, kPrefill};
-    glClearTexImage(indirect_.id(), 0, GL_RGBA, GL_FLOAT, prefill);
+    for (glm::vec4& texel : indirect_.host().texels) texel = glm::vec4(kPrefill);
   }
 
   Frame frame() {
@@ -147,7 +146,10 @@ public:
   }
   SubsurfaceRendering& sub() { return *sub_; }
   const GBuffer& gbuffer() const { return gbuffer_.gbuffer(); }
-  std::vector<float> indirect() const { return readRgba(indirect_); }
+  std::vector<float> indirect() const {
+    const HostImage& image = indirect_.hostRead();
+    return {&image.texels.front().x, &image.texels.front().x + 4 * image.texels.size()};
+  }
 
 private:
   struct SceneWithContext {  // the context first: the scene's GL buffers need it
@@ -160,7 +162,7 @@ private:
   GBufferPass gbuffer_;
   LightMapsPass maps_;
   LightGrid mainGrid_;
-  gl::Texture indirect_;
+  DualImage indirect_;
   toml::table table_;
   std::unique_ptr<RenderingStrategy> strategy_;
   SubsurfaceRendering* sub_ = nullptr;

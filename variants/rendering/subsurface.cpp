@@ -212,7 +212,7 @@ void SubsurfaceRendering::shade(Frame& frame) {
   glBindTextureUnit(UNIT_G_NORMAL, frame.gbuffer.normal.id());
   glBindTextureUnit(UNIT_TRANSLUCENT_MASK, mask_.id());
   grid_.accumulated.bindStorage(BUFFER_ACCUMULATED);
-  glBindImageTexture(IMAGE_INDIRECT, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(IMAGE_INDIRECT, frame.indirect.texture().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUniform3fv(LOCATION_GRID_ORIGIN, 1, &g.origin[0]);
   glUniform1f(LOCATION_CELL_SIZE, g.cellSize);
   glUniform3iv(LOCATION_RESOLUTION, 1, &g.resolution[0]);

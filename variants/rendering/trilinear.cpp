@@ -62,16 +62,14 @@ namespace kernel {
 
 // The G-buffer comes from the frame's host copies (read back once per frame), each level's
 // accumulated grid from its host side (read back only if GL wrote it last), and the indirect
-// image is read, added to and written back, so that strategies before and after this one (on
-// either backend) keep their shares.
+// image from its host side, added to, so that strategies before and after this one (on either
+// backend) keep their shares; it goes to GL only if a GL strategy after this one asks for it.
 void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
   if (!frame.host) throw Error("rendering \"trilinear\" (CPU): the frame has no host images");
   const std::span<const LightGrid> levels = frame.renderedLevels();
   std::vector<TrilinearCpuLevel> cpuLevels;
   for (const LightGrid& level : levels)
     cpuLevels.push_back({level.accumulated.hostRead().data(), level.geometry});
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  HostImage indirect = downloadImage(frame.indirect);
   trilinearDiffuseCpu(frame.host->image(frame.gbuffer.position), frame.host->image(frame.gbuffer.normal),
                       frame.host->image(frame.gbuffer.albedo), cpuLevels,
                       {.coefficients = coefficients_,
@@ -79,8 +77,7 @@ void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
                        .leakDamping = options_.leakDamping,
                        .scale = options_.scale,
                        .blendCells = frame.cascadeBlendCells},
-                      indirect);
-  uploadImage(indirect, frame.indirect);
+                      frame.indirect.host());
 }
 
 void TrilinearKernelRendering::render(Frame& frame) {
@@ -92,7 +89,7 @@ void TrilinearKernelRendering::render(Frame& frame) {
   glBindTextureUnit(UNIT_G_POSITION, frame.gbuffer.position.id());
   glBindTextureUnit(UNIT_G_NORMAL, frame.gbuffer.normal.id());
   glBindTextureUnit(UNIT_G_ALBEDO, frame.gbuffer.albedo.id());
-  glBindImageTexture(IMAGE_OUT_INDIRECT, frame.indirect.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+  glBindImageTexture(IMAGE_OUT_INDIRECT, frame.indirect.texture().id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                      GL_RGBA32F);
   glUniform1f(LOCATION_NORMAL_OFFSET_CELLS, options_.normalOffsetCells);
   glUniform1f(LOCATION_INDIRECT_SCALE, options_.scale);
@@ -124,7 +121,9 @@ std::vector<WorkCount> TrilinearKernelRendering::work(const FrameShape& shape,
   if (options_.specularAlbedo > 0.0f) return {};
   const double n = shape.coefficients;
   const double reads = options_.leakDamping > 0.0f ? 2.0 : 1.0;
-  return {{"pixel", shape.pixels * shape.levels, reads * (24 * n + 8) + n,
+  // Per read (two with leak damping: the value and its slope): 8 corner weights, 24 n
+  // multiply-adds interpolating the coefficients, 3 n projecting them; n lobe coefficients.
+  return {{"pixel", shape.pixels * shape.levels, reads * (24 * n + 8 + 3 * n) + n,
            3 * 16 + 2 * 16 + reads * 96 * n}};
 }
 

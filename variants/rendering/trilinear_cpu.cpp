@@ -6,7 +6,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "framework/core/cpu_dispatch.h"
 #include "framework/core/error.h"
+#define LPVLAB_SHARED_SINGLE_PRECISION 1
 #include "framework/math/shared.h"
 
 // trilinear_diffuse.glsl reads the accumulated grid through gridCoefficient: here from the level
@@ -32,40 +34,39 @@ namespace {
 
 // cascade_blend.glsl's cascadeWeight: the level's fade (1 for the coarsest) times one minus the
 // fade of every finer level, at world position p.
-double cascadeWeight(const glm::dvec3& p, std::span<const TrilinearCpuLevel> levels, int current,
-                     double blendCells) {
+float cascadeWeight(const glm::vec3& p, std::span<const TrilinearCpuLevel> levels, int current,
+                    float blendCells) {
   const auto fade = [&](int level) {
     const GridGeometry& g = levels[std::size_t(level)].geometry;
-    return shared::cascadeFade(shared::gridFromWorld(p, glm::dvec3(g.origin), double(g.cellSize)),
-                               g.resolution, blendCells);
+    return shared::cascadeFade(shared::gridFromWorld(p, g.origin, g.cellSize), g.resolution,
+                               blendCells);
   };
-  double weight = current == int(levels.size()) - 1 ? 1.0 : fade(current);
-  for (int j = 0; j < current; ++j) weight *= 1.0 - fade(j);
+  float weight = current == int(levels.size()) - 1 ? 1.0f : fade(current);
+  for (int j = 0; j < current; ++j) weight *= 1.0f - fade(j);
   return weight;
 }
 
-// Row y of one level's pass. Everything it calls is inlined into it (flatten), so the shared
-// functions' loops over the N coefficients per channel, known when compiling, unroll.
+// Row y of one level's pass, run at the instruction-set level asked for (cpu_dispatch.h). All it
+// calls is inlined into it, so the shared functions' loops over the N coefficients per channel,
+// known when compiling, unroll.
 template <int N>
-[[gnu::flatten]] void shadeRow(const HostImage& position, const HostImage& normal,
+void shadeRow(const HostImage& position, const HostImage& normal,
                                const HostImage& albedo, std::span<const TrilinearCpuLevel> levels,
                                int current, const TrilinearCpuSettings& settings,
                                HostImage& indirect, int y) {
   const TrilinearCpuLevel& level = levels[std::size_t(current)];
-  const glm::dvec3 origin(level.geometry.origin);
   for (int x = 0; x < position.width; ++x) {
     const std::size_t i = std::size_t(y) * position.width + x;
     const glm::vec4 p = position.texels[i];
     if (p.w == 0.0f) continue;
-    const double weight = cascadeWeight(glm::dvec3(p), levels, current, settings.blendCells);
-    if (weight == 0.0) continue;
-    const glm::dvec3 radiance =
-        weight * shared::trilinearDiffuse(glm::dvec3(p), glm::dvec3(normal.texels[i]),
-                                          glm::dvec3(albedo.texels[i]), origin,
-                                          double(level.geometry.cellSize), level.geometry.resolution,
-                                          N, double(settings.normalOffsetCells),
-                                          double(settings.leakDamping));
-    indirect.texels[i] += glm::vec4(glm::vec3(double(settings.scale) * radiance), float(weight));
+    const float weight = cascadeWeight(glm::vec3(p), levels, current, settings.blendCells);
+    if (weight == 0.0f) continue;
+    const glm::vec3 radiance =
+        weight * shared::trilinearDiffuse(glm::vec3(p), glm::vec3(normal.texels[i]),
+                                          glm::vec3(albedo.texels[i]), level.geometry.origin,
+                                          level.geometry.cellSize, level.geometry.resolution, N,
+                                          settings.normalOffsetCells, settings.leakDamping);
+    indirect.texels[i] += glm::vec4(settings.scale * radiance, weight);
   }
 }
 
@@ -85,7 +86,7 @@ void addLevel(const HostImage& position, const HostImage& normal, const HostImag
   shared::gridCells = byCell.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, position.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
-      shadeRow<N>(position, normal, albedo, levels, current, settings, indirect, y);
+      runAtLevel(settings.instructions, [&] { shadeRow<N>(position, normal, albedo, levels, current, settings, indirect, y); });
   });
   shared::gridCells = nullptr;
 }

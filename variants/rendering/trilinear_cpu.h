@@ -1,7 +1,7 @@
 #pragma once
 // "trilinear" rendering's diffuse light on the CPU (the CPU backend, strategy.h): per G-buffer
-// pixel the functions of shaders/rendering/trilinear_diffuse.glsl compiled as C++ in double
-// precision (framework/math/shared.h), the very text the GL kernel runs, times the pixel's
+// pixel the functions of shaders/rendering/trilinear_diffuse.glsl compiled as C++ in single
+// precision (framework/math/shared.h), as GL runs them, the very text the GL kernel runs, times the pixel's
 // cascade weight (cascade_fade.glsl, combined as cascade_blend.glsl does), added to the indirect
 // image as the GL kernel adds: rgb += scale * radiance, a += weight. Rows of pixels are shared out
 // by oneTBB and each pixel is written by one task, so the image does not depend on the thread
@@ -9,6 +9,7 @@
 
 #include <span>
 
+#include "framework/core/cpu_dispatch.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/pipeline/host_readback.h"
 
@@ -27,6 +28,7 @@ struct TrilinearCpuSettings {
   float leakDamping = 0.0f;      // 0: off
   float scale = 1.0f;            // [rendering] scale
   float blendCells = 0.0f;       // [cascades] blend_cells
+  CpuKernelLevel instructions = pixelKernelLevel();  // cpu_dispatch.h
 };
 
 // Adds every level's light to `indirect` at the pixels whose G-buffer `position` has w = 1.
