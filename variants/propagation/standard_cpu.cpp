@@ -319,6 +319,21 @@ inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclu
   }
 }
 
+// Copies `count` values (a row of the grid, short) without a call: runs of 8 values as fixed-size
+// copies the compiler inlines, the last run ending at `count` (overlapping the one before, which
+// writes the same values again). A row of 32 cells per coefficient and neighbour direction made
+// std::copy's memmove calls a tenth of the propagation's time.
+template <class Real>
+[[gnu::always_inline]] inline void copyShortRun(const Real* from, Real* to, int count) {
+  constexpr int kRun = 8;
+  if (count < kRun) {
+    for (int i = 0; i < count; ++i) to[i] = from[i];
+    return;
+  }
+  for (int i = 0; i + kRun <= count; i += kRun) std::memcpy(to + i, from + i, kRun * sizeof(Real));
+  std::memcpy(to + count - kRun, from + count - kRun, kRun * sizeof(Real));
+}
+
 // How a row pass writes what it computed: gathering stores it and adds it to the accumulated
 // grid (with the cell's source value too when the previous iteration deferred its addition, or
 // not at all when this one defers), scattering's first pass stores it, the others add it (the
@@ -418,8 +433,8 @@ template <int N, int Bytes, class Real>
         // Cell x of the staged row is the neighbour's cell x + o.x, where that lies in the row.
         const int first = std::max(0, -o.x), last = std::min(res.x, res.x - o.x);  // [first, last)
         for (int k = 0; k < N; ++k)
-          std::copy(neighbourRow + k * plane + first + o.x, neighbourRow + k * plane + last + o.x,
-                    copy + std::size_t(k) * width + first);
+          copyShortRun(neighbourRow + k * plane + first + o.x, copy + std::size_t(k) * width + first,
+                       last - first);
       }
       if (occlusion) {
         const std::size_t tStride = std::size_t(res.y) * res.z * width;
