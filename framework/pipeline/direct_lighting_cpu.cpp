@@ -19,7 +19,7 @@ namespace lpvlab {
 void directLightingCpu(const DirectCpuInputs& in, HostImage& out) {
   const std::size_t pixels = in.position->texels.size();
   for (const HostImage* image : {in.normal, in.albedo, in.emission, static_cast<const HostImage*>(&out)})
-    if (image->texels.size() != pixels)
+    if (image && image->texels.size() != pixels)
       throw Error("direct light (CPU): the G-buffer's images and the output differ in size");
   const HostDepthImage& shadow = *in.shadowDepth;
   if (shadow.width != shadow.height || std::size_t(shadow.layers) < in.records->views.size())
@@ -39,7 +39,7 @@ void directLightingCpu(const DirectCpuInputs& in, HostImage& out) {
           }
           const glm::vec3 radiance = kernel.directRadiance(
               glm::vec3(p), glm::vec3(in.normal->texels[i]), glm::vec3(in.albedo->texels[i]),
-              glm::vec3(in.emission->texels[i]), int(lights.size()), shadow.width,
+              in.emission ? glm::vec3(in.emission->texels[i]) : glm::vec3(0.0f), int(lights.size()), shadow.width,
               in.normalOffsetTexels, in.depthBias);
           out.texels[i] = glm::vec4(radiance, 1.0f);
         }

@@ -16,7 +16,7 @@ struct DirectCpuInputs {
   const HostImage* position = nullptr;  // the G-buffer (RGBA; position.w = 0: no surface)
   const HostImage* normal = nullptr;
   const HostImage* albedo = nullptr;
-  const HostImage* emission = nullptr;
+  const HostImage* emission = nullptr;  // null: no surface emits
   const HostDepthImage* shadowDepth = nullptr;  // one layer per light view
   const LightViews* records = nullptr;
   float normalOffsetTexels = 0.0f;  // ShadowSettings

@@ -22,7 +22,8 @@ struct GBuffer {
   gl::Texture position;   // RGBA32F: world position (m), w = 1 where a surface was hit
   gl::Texture normal;     // RGBA32F: unit world normal facing the camera, w = view depth (m)
   gl::Texture albedo;     // RGBA32F: Lambertian reflectance
-  gl::Texture emission;   // RGBA32F: emitted radiance, W/(m^2 sr)
+  gl::Texture emission;   // RGBA32F: emitted radiance, W/(m^2 sr); zeros unless `emissive`
+  bool emissive = true;   // some material emits: emission is rendered (else never written)
   gl::Texture depth;      // DEPTH32F: the rasteriser's depth buffer
   std::size_t memoryBytes() const;
 };

@@ -1,5 +1,6 @@
 #include "framework/pipeline/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "framework/core/error.h"
@@ -79,7 +80,10 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
 
   scene_ = std::make_unique<SceneGpu>(scene);
-  gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height);
+  const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+    return glm::any(glm::greaterThan(m.emission, glm::vec3(0.0f)));
+  });
+  gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height, emissive);
   lightMapsPass_ = std::make_unique<LightMapsPass>(
       shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,
       settings.shadowResolution);

@@ -29,10 +29,11 @@ void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int 
   glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
 }
 
-GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height)
+GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height, bool emissive)
     : program_(shaders.graphics("raster/scene.vert", "raster/gbuffer.frag")) {
   gbuffer_.width = width;
   gbuffer_.height = height;
+  gbuffer_.emissive = emissive;
   gbuffer_.position = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer position");
   gbuffer_.normal = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer normal");
   gbuffer_.albedo = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer albedo");
@@ -41,7 +42,13 @@ GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height)
   framebuffer_.attach(GL_COLOR_ATTACHMENT0, gbuffer_.position);
   framebuffer_.attach(GL_COLOR_ATTACHMENT1, gbuffer_.normal);
   framebuffer_.attach(GL_COLOR_ATTACHMENT2, gbuffer_.albedo);
-  framebuffer_.attach(GL_COLOR_ATTACHMENT3, gbuffer_.emission);
+  if (emissive) {
+    framebuffer_.attach(GL_COLOR_ATTACHMENT3, gbuffer_.emission);
+  } else {
+    // Not a target: gbuffer.frag's fourth output goes nowhere, and direct light reads zeros.
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearTexImage(gbuffer_.emission.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  }
   framebuffer_.attach(GL_DEPTH_ATTACHMENT, gbuffer_.depth);
   framebuffer_.checkComplete("G-buffer");
 }
@@ -59,7 +66,7 @@ glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
 }
 
 void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
-  beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, 4);
+  beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, gbuffer_.emissive ? 4 : 3);
   program_.use();
   const glm::mat4 clip = clipFromWorld(camera);
   glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clip[0][0]);

@@ -32,7 +32,9 @@ std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int vi
 
 class GBufferPass {
 public:
-  GBufferPass(ShaderCompiler& shaders, int width, int height);
+  // emissive: some material of the scene emits. Without, the emission image stays zeros and is
+  // never rendered (a colour target less for the rasteriser, an image less to read back).
+  GBufferPass(ShaderCompiler& shaders, int width, int height, bool emissive = true);
   // Renders the scene from the camera (vertical FOV, aspect = width / height).
   void render(const SceneGpu& scene, const Camera& camera);
   const GBuffer& gbuffer() const { return gbuffer_; }

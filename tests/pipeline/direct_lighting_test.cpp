@@ -23,12 +23,16 @@
 namespace lpvlab {
 namespace {
 
-Image directLight(const std::string& file, const std::string& backend) {
+// The direct light of an experiment (a small frame) on `backend`; with `emission`, every material
+// of its scene emits that radiance.
+Image directLight(const std::string& file, const std::string& backend,
+                  const glm::vec3& emission = glm::vec3(0.0f)) {
   test::glTestContext();
   Experiment e = loadExperiment(file, {"output.width=160", "output.height=120",
                                        "light_maps.shadow_resolution=256",
                                        "light_maps.rsm_resolution=32", "grid.resolution=8",
                                        "propagation.iterations=1", "compute.backend=" + backend});
+  for (Material& m : e.scene.materials) m.emission = emission;
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   EXPECT_EQ(pipeline.computeReport().at("direct"), backend);
@@ -50,6 +54,30 @@ TEST(DirectLighting, CpuGivesGlsImageForSpotPointAndDirectionalLights) {
     std::cout << "[ direct ] " << what << ": " << 100.0 * d.differing
               << "% of values off by more than 1e-4 of the largest (shadow comparisons), "
               << "largest difference " << d.largest / d.scale << " of the largest value\n";
+  }
+}
+
+// A scene without emitters never renders the G-buffer's emission image (direct light reads zeros);
+// with one, each surface's direct light is its emission more, on both backends.
+TEST(DirectLighting, EmissionAddsExactlyTheEmittedRadianceOnBothBackends) {
+  const glm::vec3 emission(0.25f, 0.5f, 2.0f);
+  for (const std::string backend : {"cpu", "gl"}) {
+    const Image plain = directLight("", backend), emitting = directLight("", backend, emission);
+    ASSERT_EQ(plain.pixels.size(), emitting.pixels.size());
+    int surfaces = 0;
+    for (int y = 0; y < plain.height; ++y)
+      for (int x = 0; x < plain.width; ++x) {
+        // The box fills the frame but for its open front's edges: a pixel without a surface is
+        // black in both.
+        const bool lit = emitting.at(x, y, 0) > 0.0f;
+        surfaces += lit ? 1 : 0;
+        for (int c = 0; c < 3; ++c) {
+          const float expected = lit ? plain.at(x, y, c) + emission[c] : 0.0f;
+          EXPECT_NEAR(emitting.at(x, y, c), expected, 1e-5f * (1.0f + expected))
+              << backend << " pixel " << x << ", " << y;
+        }
+      }
+    EXPECT_GT(surfaces, plain.width * plain.height / 2) << backend;
   }
 }
 
