@@ -406,9 +406,29 @@ template <int N, int Bytes, class Real>
   std::vector<Real> stage(6 * staged, Real(0));
   const std::vector<Real> zeros(staged, Real(0));
   std::vector<Real> out(staged);
+  const int rows = res.y * res.z;
   for (int row = rowBegin; row < rowEnd; ++row) {
     const int y = row % res.y, z = row / res.y;
     const std::size_t base = std::size_t(row) * res.x;
+    // The next row's new data, every channel and coefficient, asked for a row ahead: its +y and
+    // +z neighbour rows (the others were read by earlier rows) and its target and accumulated
+    // rows. A row reads and writes about 7 x 3N streams, more than the hardware prefetchers
+    // follow (64^3 order 1: 3.1 -> 2.7-2.85 ms an iteration).
+    if (row + 1 < rows) {
+      const int nextY = (row + 1) % res.y, nextZ = (row + 1) / res.y;
+      const std::size_t next = std::size_t(row + 1) * res.x;
+      const std::size_t nextY1 = next + std::size_t(res.x), nextZ1 = next + std::size_t(res.y) * res.x;
+      const bool accumulates = output == RowOutput::StoreAndAccumulate ||
+                               output == RowOutput::StoreAndAccumulateWithSource;
+      constexpr int kLine = 64 / int(sizeof(Real));
+      for (std::size_t c = 0; c < std::size_t(3 * N); ++c)
+        for (int x = 0; x < res.x; x += kLine) {
+          if (nextY + 1 < res.y) __builtin_prefetch(source + c * plane + nextY1 + x, 0, 3);
+          if (nextZ + 1 < res.z) __builtin_prefetch(source + c * plane + nextZ1 + x, 0, 3);
+          __builtin_prefetch(target + c * plane + next + x, 1, 3);
+          if (accumulates) __builtin_prefetch(accumulated + c * plane + next + x, 1, 3);
+        }
+    }
     for (int channel = 0; channel < 3; ++channel) {
       const std::size_t channelBase = std::size_t(channel) * N * plane;
       const Real* from[6];
