@@ -10,7 +10,6 @@
 //                 direction r, weighted by a normalised Phong lobe (phong_lobe.glsl) and averaged
 //                 over samples marched along r (docs/variants.md#glossy).
 #include "../common/cascade_blend.glsl"
-#include "phong_lobe.glsl"
 
 #include "trilinear_interface.glsl"
 layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
@@ -25,7 +24,7 @@ layout(std430, binding = BUFFER_ACCUMULATED) readonly buffer Accumulated { float
 float gridCoefficient(int channel, int k, int coefficients, int cell, int cells) {
   return grid[coefficientIndex(channel, k, coefficients, cell, cells)];
 }
-#include "trilinear_diffuse.glsl"
+#include "glossy_march.glsl"
 layout(binding = IMAGE_OUT_INDIRECT, rgba32f) uniform image2D outIndirect;
 
 layout(location = LOCATION_GRID_ORIGIN) uniform vec3 gridOrigin;
@@ -40,32 +39,6 @@ layout(location = LOCATION_MARCH_STEP_CELLS) uniform float marchStepCells;
 layout(location = LOCATION_MARCH_SAMPLES) uniform int marchSamples;
 layout(location = LOCATION_INDIRECT_SCALE) uniform float indirectScale;  // [rendering] scale
 
-// Mean lobe-weighted intensity (W/sr) arriving at p from around the reflected direction r, read
-// at marchSamples points p + (j + 1/2) marchStepCells r, in cells of the coarsest level (the only
-// level without cascades), each weighted by this level's cascade weight there. The march ends
-// where it leaves the coarsest level, but always reads its first sample (clamped to the grid's
-// edge, as the diffuse read is), so a surface next to the edge still gets a glossy term.
-vec3 glossyIntensity(vec3 p, vec3 r) {
-  float lobe[SH_MAX_COEFFICIENTS];
-  // Light arriving from r travels along -r.
-  for (int k = 0; k < SH_COEFFICIENTS; ++k) lobe[k] = shPhongLobeAt(k, -r, phongExponent);
-  int coarsest = cascadeLevels - 1;
-  float step = marchStepCells * cascadeLevel[coarsest].w;
-  vec3 sum = vec3(0.0);
-  int inside = 0;
-  for (int j = 0; j < marchSamples; ++j) {
-    vec3 x = p + r * ((float(j) + 0.5) * step);
-    vec3 g = cascadeGridCoordinates(x, coarsest);
-    if (j > 0 && (any(lessThan(g, vec3(0.0))) || any(greaterThan(g, vec3(resolution))))) break;
-    float weight = cascadeWeight(x);
-    if (weight > 0.0)
-      sum += weight * sampleLobe(gridFromWorld(x, gridOrigin, cellSize), lobe, SH_COEFFICIENTS,
-                                 resolution, false, r).value;
-    ++inside;
-  }
-  return inside > 0 ? max(sum / float(inside), vec3(0.0)) : vec3(0.0);
-}
-
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, imageSize(outIndirect)))) return;
@@ -78,12 +51,11 @@ void main() {
   vec3 radiance = weight * trilinearDiffuse(position.xyz, n, albedo, gridOrigin, cellSize, resolution,
                                             SH_COEFFICIENTS, normalOffsetCells,
                                             LEAK_DAMPING ? leakDampingStrength : 0.0);
-  float cs2 = cellSize * cellSize;
-  if (GLOSSY) {
-    vec3 p = position.xyz + n * (normalOffsetCells * cellSize);
-    vec3 toCamera = cameraPosition - position.xyz;
-    vec3 v = dot(toCamera, toCamera) > 0.0 ? normalize(toCamera) : n;
-    radiance += specularAlbedo * glossyIntensity(p, reflect(-v, n)) / cs2;
-  }
+  if (GLOSSY)
+    radiance += glossyRadiance(position.xyz, n, cameraPosition, specularAlbedo, normalOffsetCells,
+                               GlossyMarch(phongExponent, marchStepCells, marchSamples,
+                                           cascadeCurrent, cascadeLevels, resolution,
+                                           cascadeBlendCells),
+                               gridOrigin, cellSize, SH_COEFFICIENTS);
   imageStore(outIndirect, pixel, imageLoad(outIndirect, pixel) + vec4(indirectScale * radiance, weight));
 }

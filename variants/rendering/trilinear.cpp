@@ -38,10 +38,7 @@ TrilinearKernelOptions TrilinearKernelOptions::readDiffuse(Params& params) {
   return options;
 }
 
-std::string TrilinearKernelRendering::cpuRefusal(const Requirements&) const {
-  if (options_.specularAlbedo > 0.0f) return "the glossy march (specular_albedo > 0) has no CPU kernel yet";
-  return {};
-}
+std::string TrilinearKernelRendering::cpuRefusal(const Requirements&) const { return {}; }
 
 void TrilinearKernelRendering::prepare(const StrategySetup& setup) {
   const Requirements& requirements = setup.requirements;
@@ -76,7 +73,12 @@ void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
                        .normalOffsetCells = options_.normalOffsetCells,
                        .leakDamping = options_.leakDamping,
                        .scale = options_.scale,
-                       .blendCells = frame.cascadeBlendCells},
+                       .blendCells = frame.cascadeBlendCells,
+                       .specularAlbedo = options_.specularAlbedo,
+                       .phongExponent = options_.phongExponent,
+                       .marchStepCells = options_.marchStepCells,
+                       .marchSamples = options_.marchSamples,
+                       .cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f)},
                       frame.indirect.host());
 }
 

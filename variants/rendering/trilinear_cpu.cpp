@@ -13,15 +13,17 @@
 
 // trilinear_diffuse.glsl reads the accumulated grid through gridCoefficient: here from the level
 // being rendered, copied cell by cell (the 3N coefficients of a cell together, so the 8 corners a
-// pixel reads are 8 short runs), set before each level's pass over the pixels and only read
-// during it.
+// pixel reads are 8 short runs); cascade_weight.glsl reads the levels' placement. Both are set
+// before each level's pass over the pixels and only read during it.
 LPVLAB_SHARED_GLSL_BEGIN
 const float* gridCells = nullptr;
 real gridCoefficient(int channel, int k, int coefficients, int cell, int) {
   return real(gridCells[(std::size_t(cell) * 3 + std::size_t(channel)) * std::size_t(coefficients) + std::size_t(k)]);
 }
-#include "shaders/common/cascade_fade.glsl"
-#include "shaders/rendering/trilinear_diffuse.glsl"
+const TrilinearCpuLevel* cascadeLevels = nullptr;
+vec3 cascadeLevelOrigin(int level) { return cascadeLevels[level].geometry.origin; }
+real cascadeLevelCellSize(int level) { return cascadeLevels[level].geometry.cellSize; }
+#include "shaders/rendering/glossy_march.glsl"
 LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
@@ -32,20 +34,6 @@ namespace blend_kernel {
 
 namespace {
 
-// cascade_blend.glsl's cascadeWeight: the level's fade (1 for the coarsest) times one minus the
-// fade of every finer level, at world position p.
-float cascadeWeight(const glm::vec3& p, std::span<const TrilinearCpuLevel> levels, int current,
-                    float blendCells) {
-  const auto fade = [&](int level) {
-    const GridGeometry& g = levels[std::size_t(level)].geometry;
-    return shared::cascadeFade(shared::gridFromWorld(p, g.origin, g.cellSize), g.resolution,
-                               blendCells);
-  };
-  float weight = current == int(levels.size()) - 1 ? 1.0f : fade(current);
-  for (int j = 0; j < current; ++j) weight *= 1.0f - fade(j);
-  return weight;
-}
-
 // Row y of one level's pass, run at the instruction-set level asked for (cpu_dispatch.h). All it
 // calls is inlined into it, so the shared functions' loops over the N coefficients per channel,
 // known when compiling, unroll.
@@ -55,17 +43,28 @@ void shadeRow(const HostImage& position, const HostImage& normal,
                                int current, const TrilinearCpuSettings& settings,
                                HostImage& indirect, int y) {
   const TrilinearCpuLevel& level = levels[std::size_t(current)];
+  const GridGeometry& g = level.geometry;
+  const bool glossy = settings.specularAlbedo > 0.0f;
+  const shared::GlossyMarch march{settings.phongExponent, settings.marchStepCells,
+                                  settings.marchSamples,  current,
+                                  int(levels.size()),     g.resolution,
+                                  settings.blendCells};
   for (int x = 0; x < position.width; ++x) {
     const std::size_t i = std::size_t(y) * position.width + x;
     const glm::vec4 p = position.texels[i];
     if (p.w == 0.0f) continue;
-    const float weight = cascadeWeight(glm::vec3(p), levels, current, settings.blendCells);
-    if (weight == 0.0f) continue;
-    const glm::vec3 radiance =
-        weight * shared::trilinearDiffuse(glm::vec3(p), glm::vec3(normal.texels[i]),
-                                          glm::vec3(albedo.texels[i]), level.geometry.origin,
-                                          level.geometry.cellSize, level.geometry.resolution, N,
-                                          settings.normalOffsetCells, settings.leakDamping);
+    const float weight = shared::cascadeLevelWeight(glm::vec3(p), current, int(levels.size()),
+                                                    g.resolution, settings.blendCells);
+    if (weight == 0.0f && !glossy) continue;
+    const glm::vec3 n(normal.texels[i]);
+    glm::vec3 radiance = weight * shared::trilinearDiffuse(glm::vec3(p), n, glm::vec3(albedo.texels[i]),
+                                                           g.origin, g.cellSize, g.resolution, N,
+                                                           settings.normalOffsetCells,
+                                                           settings.leakDamping);
+    if (glossy)
+      radiance += shared::glossyRadiance(glm::vec3(p), n, settings.cameraPosition,
+                                         settings.specularAlbedo, settings.normalOffsetCells,
+                                         march, g.origin, g.cellSize, N);
     indirect.texels[i] += glm::vec4(settings.scale * radiance, weight);
   }
 }
@@ -84,11 +83,13 @@ void addLevel(const HostImage& position, const HostImage& normal, const HostImag
         byCell[(cell * 3 + std::size_t(channel)) * N + std::size_t(k)] =
             level.accumulated[(std::size_t(channel) * N + std::size_t(k)) * cells + cell];
   shared::gridCells = byCell.data();
+  shared::cascadeLevels = levels.data();
   tbb::parallel_for(tbb::blocked_range<int>(0, position.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       runAtLevel(settings.instructions, [&] { shadeRow<N>(position, normal, albedo, levels, current, settings, indirect, y); });
   });
   shared::gridCells = nullptr;
+  shared::cascadeLevels = nullptr;
 }
 
 }  // namespace

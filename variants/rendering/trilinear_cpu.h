@@ -1,11 +1,11 @@
 #pragma once
-// "trilinear" rendering's diffuse light on the CPU (the CPU backend, strategy.h): per G-buffer
-// pixel the functions of shaders/rendering/trilinear_diffuse.glsl compiled as C++ in single
-// precision (framework/math/shared.h), as GL runs them, the very text the GL kernel runs, times the pixel's
-// cascade weight (cascade_fade.glsl, combined as cascade_blend.glsl does), added to the indirect
-// image as the GL kernel adds: rgb += scale * radiance, a += weight. Rows of pixels are shared out
-// by oneTBB and each pixel is written by one task, so the image does not depend on the thread
-// count. The glossy march has no CPU kernel.
+// "trilinear" and "glossy" rendering on the CPU (the CPU backend, strategy.h): per G-buffer pixel
+// the functions of shaders/rendering/trilinear_diffuse.glsl (and, with specular_albedo > 0,
+// glossy_march.glsl) compiled as C++ in single precision (framework/math/shared.h), as GL runs
+// them, the very text the GL kernel runs, the diffuse part times the pixel's cascade weight
+// (cascade_weight.glsl), added to the indirect image as the GL kernel adds: rgb += scale *
+// radiance, a += weight. Rows of pixels are shared out by oneTBB and each pixel is written by one
+// task, so the image does not depend on the thread count.
 
 #include <span>
 
@@ -28,6 +28,12 @@ struct TrilinearCpuSettings {
   float leakDamping = 0.0f;      // 0: off
   float scale = 1.0f;            // [rendering] scale
   float blendCells = 0.0f;       // [cascades] blend_cells
+  // "glossy" (glossy_march.glsl): off with specularAlbedo = 0.
+  float specularAlbedo = 0.0f;
+  float phongExponent = 32.0f;
+  float marchStepCells = 1.0f;   // in cells of the coarsest level
+  int marchSamples = 16;
+  glm::vec3 cameraPosition{0.0f};
   CpuKernelLevel instructions = pixelKernelLevel();  // cpu_dispatch.h
 };
 
