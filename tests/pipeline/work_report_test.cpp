@@ -115,11 +115,26 @@ TEST(WorkReport, PerUnitFiguresFollowTheKernelsRun) {
 }
 
 TEST(WorkReport, StrategiesWithoutAModelAreListedAsNotCounted) {
-  const Report r = workOf({"rendering.type=\"glossy\"", "rendering.specular_albedo=0.5"});
+  const Report r = workOf({"propagation.type=\"directed\""});
+  const nlohmann::json& propagation = r.work.at("propagation");
+  ASSERT_EQ(propagation.size(), 1u);
+  EXPECT_EQ(propagation.at(0).at("not_counted"), "directed");
+  EXPECT_FALSE(propagation.at(0).contains("multiply_adds"));
+}
+
+// The glossy march counts its samples apart from the pixels' diffuse read: marchSamples per pixel,
+// each a diffuse read without the slope.
+TEST(WorkReport, TheGlossyMarchCountsItsSamples) {
+  const Report r = workOf({"rendering.type=\"glossy\"", "rendering.specular_albedo=0.5",
+                           "rendering.step=0.5", "rendering.max_distance=5"});
   const nlohmann::json& indirect = r.work.at("indirect");
-  ASSERT_EQ(indirect.size(), 1u);
-  EXPECT_EQ(indirect.at(0).at("not_counted"), "glossy");
-  EXPECT_FALSE(indirect.at(0).contains("multiply_adds"));
+  ASSERT_EQ(indirect.size(), 2u);
+  EXPECT_EQ(indirect.at(0).at("unit"), "pixel");
+  EXPECT_EQ(indirect.at(1).at("unit"), "march-sample");
+  EXPECT_DOUBLE_EQ(indirect.at(1).at("units").get<double>(), double(r.width) * r.height * r.levels * 10);
+  const double n = 4;  // order 1
+  EXPECT_DOUBLE_EQ(indirect.at(1).at("multiply_adds_per_unit").get<double>(), 27 * n + 8);
+  for (const nlohmann::json& w : indirect) expectTotals(w);
 }
 
 TEST(WorkReport, TheSweepSummaryHasWorkColumns) {

@@ -120,13 +120,21 @@ void TrilinearKernelRendering::render(Frame& frame) {
 
 std::vector<WorkCount> TrilinearKernelRendering::work(const FrameShape& shape,
                                                      const Requirements& requirements) const {
-  if (options_.specularAlbedo > 0.0f) return {};
   const double n = shape.coefficients;
   const double reads = options_.leakDamping > 0.0f ? 2.0 : 1.0;
   // Per read (two with leak damping: the value and its slope): 8 corner weights, 24 n
   // multiply-adds interpolating the coefficients, 3 n projecting them; n lobe coefficients.
-  return {{"pixel", shape.pixels * shape.levels, reads * (24 * n + 8 + 3 * n) + n,
-           3 * 16 + 2 * 16 + reads * 96 * n}};
+  std::vector<WorkCount> work = {{"pixel", shape.pixels * shape.levels,
+                                  reads * (24 * n + 8 + 3 * n) + n, 3 * 16 + 2 * 16 + reads * 96 * n}};
+  // The glossy march: every sample counted (an upper bound: a march stops where it leaves the
+  // coarsest level), each one read as above without the slope (8 n-float runs of 3 channels);
+  // the Phong lobe's n coefficients once per pixel are counted with the pixel.
+  if (options_.specularAlbedo > 0.0f) {
+    work.front().multiplyAddsPerUnit += n;
+    work.push_back({"march-sample", shape.pixels * shape.levels * options_.marchSamples,
+                    24 * n + 8 + 3 * n, 96 * n});
+  }
+  return work;
 }
 
 namespace {
