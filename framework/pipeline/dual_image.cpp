@@ -1,7 +1,5 @@
 #include "framework/pipeline/dual_image.h"
 
-#include <algorithm>
-
 namespace lpvlab {
 
 DualImage::DualImage(int width, int height, const std::string& label)

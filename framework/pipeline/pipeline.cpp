@@ -80,9 +80,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
 
   scene_ = std::make_unique<SceneGpu>(scene);
-  const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
-    return glm::any(glm::greaterThan(m.emission, glm::vec3(0.0f)));
-  });
+  const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                    [](const Material& m) { return m.emits(); });
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height, emissive);
   lightMapsPass_ = std::make_unique<LightMapsPass>(
       shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,

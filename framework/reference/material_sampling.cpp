@@ -87,7 +87,7 @@ std::vector<SurfaceMaterial> prepareMaterials(const Scene& scene) {
     SurfaceMaterial prepared;
     prepared.baseColor = material.baseColor;
     prepared.emission = material.emission;
-    prepared.emissive = glm::any(glm::greaterThan(material.emission, glm::vec3(0.0f)));
+    prepared.emissive = material.emits();
     if (material.baseColorTexture >= 0) {
       if (std::size_t(material.baseColorTexture) >= scene.textures.size())
         throwAt(where, "base colour texture " + std::to_string(material.baseColorTexture) +

@@ -34,6 +34,7 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;        // Mask: texels with alpha below this are cut out
   glm::vec3 emission{0.0f};        // emitted radiance, W/(m^2 sr) (OBJ Ke, glTF emissiveFactor)
+  bool emits() const { return glm::any(glm::greaterThan(emission, glm::vec3(0.0f))); }
   // Translucency, read only by the subsurface-scattering LPV (thesis 5.4; rendering "subsurface";
   // set per experiment with [[materials]]): the fraction of the flux arriving at the surface that
   // enters the object (0: opaque; baseColor + transmittance <= 1 per channel), and the extinction

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "framework/core/cpu_dispatch.h"
 #include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
@@ -498,10 +499,10 @@ LPVLAB_GATHER_ROWS(gatherRowsV3, 32, __attribute__((target("arch=x86-64-v3"))))
 LPVLAB_GATHER_ROWS(gatherRowsV4, 64, __attribute__((target("arch=x86-64-v4"))))
 #undef LPVLAB_GATHER_ROWS
 
+// The levels and their names are cpu_dispatch.h's, which the per-pixel kernels use too.
 bool cpuRunsKernel(const std::string& isa) {
-  if (isa == "x86-64") return true;
-  if (isa == "x86-64-v3") return cpuHasX86_64_v3();
-  if (isa == "x86-64-v4") return cpuHasX86_64_v4();
+  for (const CpuKernelLevel level : cpuKernelLevelsThisCpuRuns())
+    if (isa == cpuKernelLevelName(level)) return true;
   return false;
 }
 
@@ -557,7 +558,9 @@ int standardScatterMultiplyAdds(int coefficients) {
 }
 
 const std::vector<std::string>& cpuKernelInstructionSets() {
-  static const std::vector<std::string> sets = {"x86-64", "x86-64-v3", "x86-64-v4"};
+  static const std::vector<std::string> sets = {cpuKernelLevelName(CpuKernelLevel::X86_64),
+                                                cpuKernelLevelName(CpuKernelLevel::X86_64_V3),
+                                                cpuKernelLevelName(CpuKernelLevel::X86_64_V4)};
   return sets;
 }
 

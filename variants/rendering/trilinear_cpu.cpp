@@ -38,10 +38,9 @@ namespace {
 // calls is inlined into it, so the shared functions' loops over the N coefficients per channel,
 // known when compiling, unroll.
 template <int N>
-void shadeRow(const HostImage& position, const HostImage& normal,
-                               const HostImage& albedo, std::span<const TrilinearCpuLevel> levels,
-                               int current, const TrilinearCpuSettings& settings,
-                               HostImage& indirect, int y) {
+void shadeRow(const HostImage& position, const HostImage& normal, const HostImage& albedo,
+              std::span<const TrilinearCpuLevel> levels, int current,
+              const TrilinearCpuSettings& settings, HostImage& indirect, int y) {
   const TrilinearCpuLevel& level = levels[std::size_t(current)];
   const GridGeometry& g = level.geometry;
   const bool glossy = settings.specularAlbedo > 0.0f;
