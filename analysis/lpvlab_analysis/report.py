@@ -5,9 +5,12 @@ relative paths (plots and tone-mapped images in <out>/img/, error maps and
 combined.png linked from the run directories). Sections: sweep overview,
 speed/accuracy plot with Pareto front, ablation table, each configuration against the
 baseline series at equal settings and equal time (equal_time.py), time per stage and
-error against each swept numeric parameter, trends against the thesis's
-tables (when the sweep varies their parameter), then per configuration the
-reference, result and error map side by side.
+error against each swept numeric parameter, the estimated time of each
+counted stage on named GPUs beside the time measured here (gpu_estimate.py:
+an estimate from the cost counters, labelled as one), trends against the
+thesis's tables (when the sweep varies their parameter) with the estimate on
+the thesis's GPUs, then per configuration the reference, result and error map
+side by side.
 
 Errors the user can fix (missing directory, missing/empty summary.csv)
 raise summary.SummaryError with a message naming the file.
@@ -22,6 +25,7 @@ import numpy as np
 
 from . import equal_time as ET
 from . import fsutil
+from . import gpu_estimate as G
 from . import images
 from . import plots
 from . import summary as S
@@ -109,6 +113,59 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
         trio.append(("error map (FLIP, indirect)", _rel(err, out_dir) if os.path.isfile(err) else None))
         result[row["config_id"]] = (trio, done, run_dir)
     return result
+
+
+def _gpu_estimate_section(agg, gpus):
+    """Per configuration and counted stage: the time measured here and the estimate per GPU."""
+    stages = G.counted_stages(agg)
+    if not stages:
+        return [], ""
+    est = G.with_estimates(agg, gpus)
+    head = "".join(f"<th>estimate {html.escape(g.name)}</th>" for g in gpus)
+    md_head = "| configuration | stage | measured here (ms) | " + " | ".join(f"est. {g.name} (ms)" for g in gpus) + " |"
+    md = [md_head, "|" + "---|" * (3 + len(gpus))]
+    h = [f"<table><thead><tr><th>configuration</th><th>stage</th><th>measured here (ms)</th>{head}</tr></thead><tbody>"]
+    for _, row in est.iterrows():
+        for stage in stages:
+            measured = row.get(f"gpu_ms.{stage}", float("nan"))
+            values = [row[f"{G.PREFIX}{g.key}.{stage}"] for g in gpus]
+            cells = "".join(f"<td class='num'>{tables.fmt(v)}</td>" for v in values)
+            h.append(f"<tr><td>{html.escape(str(row['config_name']))}</td><td>{html.escape(stage)}</td>"
+                     f"<td class='num'>{tables.fmt(measured)}</td>{cells}</tr>")
+            md.append(f"| {row['config_name']} | {stage} | {tables.fmt(measured)} | "
+                      + " | ".join(tables.fmt(v) for v in values) + " |")
+    h.append("</tbody></table>")
+    return h, "\n".join(md) + "\n"
+
+
+def _thesis_estimate_table(rows):
+    """The estimate on the thesis's GPUs beside its measured tables (G.thesis_comparison)."""
+    if not rows:
+        return []
+    h = ["<h3>The GPU estimate against the thesis's measurements</h3>",
+         "<p class='note'>The GL kernels' counts per unit from this sweep, at the thesis's configuration "
+         "(32<sup>3</sup> cells in 4 cascade levels; one RSM tile of the given side per level), on the GPU "
+         "the thesis measured with (R9 Fury: its &ldquo;Intel&rdquo; setup; GTX 960: &ldquo;AMD&rdquo;), "
+         "against its compute-shader column. Ratio = thesis / estimate: how far the roofline bound is "
+         "below what the card did. The increment (propagation: per step, (t(64) &minus; t(1)) / 63; "
+         "injection: t(1024<sup>2</sup>) &minus; t(512<sup>2</sup>)) leaves fixed costs out.</p>",
+         "<table><thead><tr><th>table</th><th>lpvlab variant</th><th>GPU (thesis column)</th><th>x</th>"
+         "<th>thesis ms</th><th>estimate ms</th><th>ratio</th></tr></thead><tbody>"]
+    for r in rows:
+        for i, x in enumerate(r["x"]):
+            h.append(f"<tr><td>{r['table']}</td><td>{html.escape(r['variant'])} ({html.escape(r['method'])})</td>"
+                     f"<td>{html.escape(r['gpu'])} ({html.escape(r['thesis_column'])})</td><td class='num'>{x:g}</td>"
+                     f"<td class='num'>{tables.fmt(r['thesis_ms'][i])}</td>"
+                     f"<td class='num'>{tables.fmt(r['estimate_ms'][i])}</td>"
+                     f"<td class='num'>{tables.fmt(r['ratio'][i])}</td></tr>")
+        ratio = r["thesis_slope_ms"] / r["estimate_slope_ms"] if r["estimate_slope_ms"] > 0 else float("nan")
+        h.append(f"<tr style='font-weight:bold'><td>{r['table']}</td><td>{html.escape(r['variant'])} "
+                 f"({html.escape(r['method'])})</td><td>{html.escape(r['gpu'])}</td><td>increment</td>"
+                 f"<td class='num'>{tables.fmt(r['thesis_slope_ms'])}</td>"
+                 f"<td class='num'>{tables.fmt(r['estimate_slope_ms'])}</td>"
+                 f"<td class='num'>{tables.fmt(ratio)}</td></tr>")
+    h.append("</tbody></table>")
+    return ["\n".join(h)]
 
 
 def _thesis_section(agg, img_dir, out_dir):
@@ -213,12 +270,27 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True)
             if p:
                 body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
 
+    gpus = G.load_gpus()
+    estimate, estimate_md = _gpu_estimate_section(agg, gpus)
+    if estimate:
+        body.append("<h2>Estimated GPU time (an estimate, not a measurement)</h2>")
+        body.append("<p class='note'>Per stage with counted work: the time measured here (on this machine's "
+                    "backend) and, per GPU of <code>analysis/lpvlab_analysis/gpus.toml</code>, the roofline bound "
+                    "of the GL kernels' counted arithmetic and memory traffic, max(multiply-adds / peak rate, "
+                    "bytes / bandwidth). Not in it: launch costs, caches serving re-read neighbours (the memory "
+                    "term is pessimistic), the peak rate never reached (the arithmetic term is optimistic); "
+                    "see gpu_estimate.py. The raster passes have no counted arithmetic.</p>")
+        body.extend(estimate)
+        fsutil.write_text(os.path.join(out_dir, "gpu_estimate.md"), estimate_md)
+        body.append("<p class='note'>Markdown version: <a href='gpu_estimate.md'>gpu_estimate.md</a></p>")
+
     thesis = _thesis_section(agg, img_dir, out_dir)
     if thesis:
         body.append("<h2>Trends vs the thesis</h2>")
         body.append("<p class='note'>Thesis numbers: ms on the thesis's Intel/AMD machines (tables 8.2-8.7); "
                     "absolute values are not comparable, shapes are.</p>")
         body.extend(thesis)
+        body.extend(_thesis_estimate_table(G.thesis_comparison(agg, gpus)))
 
     body.append("<h2>Images per configuration</h2>")
     imgs = _config_images(agg, sweep_dir, out_dir, use_exr)

@@ -26,7 +26,7 @@ class SummaryError(Exception):
 
 
 def _numeric_prefixes():
-    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.", "work.")
+    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.", "work.", "gpu_work.")
 
 
 def load_summary(path):

@@ -169,17 +169,20 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"created_utc", utcTimestamp()},
       {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
       {"configuration", experiment.configuration},
-      {"scene", {{"source", experiment.scene.source},
-                 {"hash", hash},
-                 {"triangles", experiment.scene.triangleCount()},
-                 {"lights", experiment.scene.lights.size()}}},
+      {"scene",
+       {{"source", experiment.scene.source},
+        {"hash", hash},
+        {"triangles", experiment.scene.triangleCount()},
+        {"lights", experiment.scene.lights.size()}}},
       {"libraries", versions(context)},
       {"host", hostInfo()},
       {"timing", timing.toJson()},
       {"compute", pipeline.computeReport()},
-      {"timing_method", {{"gpu", "GL timestamp queries around each stage; for a stage on the CPU "
-                                 "backend (see compute) its wall time"},
-                         {"wall", "steady clock, each stage ended by glFinish"}}},
+      {"timing_method",
+       {{"gpu",
+         "GL timestamp queries around each stage; for a stage on the CPU "
+         "backend (see compute) its wall time"},
+        {"wall", "steady clock, each stage ended by glFinish"}}},
       {"propagation_cell_iterations_per_second",
        propagationMs > 0.0
            ? double(pipeline.propagatedCells()) * iterations / (propagationMs * 1e-3)
@@ -187,10 +190,13 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
       {"cascade_levels", cascadeLevelsJson(pipeline)},
       {"memory_bytes", pipeline.memoryReport()},
       {"work", pipeline.workReport()},
+      {"gpu_work", pipeline.workReport(true)},
       {"injection_flux_W", injectionFluxJson(balance)},
-      {"outputs", {{"exr", "images.exr"}, {"png", "combined.png"},
-                   {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
-                   {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
+      {"outputs",
+       {{"exr", "images.exr"},
+        {"png", "combined.png"},
+        {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
+        {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"}}}};
 
   std::optional<Image> heatMap;
   std::string heatMapName;

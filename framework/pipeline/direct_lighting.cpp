@@ -43,9 +43,10 @@ void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, DualI
 // as one pass of 16 comparisons with separable weights (about 24) from 16 texels (4 B each);
 // the light's falloff and cosine (about 15). Plus, per pixel, the G-buffer's four texels read and
 // the result written (80 B), counted against each light.
-WorkCount DirectLighting::work(double pixels, int lights) const {
-  const double taps = onCpu_ ? 24.0 : 9.0 * 7.0;
-  const double texels = onCpu_ ? 16.0 : 36.0;
+WorkCount DirectLighting::work(double pixels, int lights, bool glKernel) const {
+  const bool cpu = onCpu_ && !glKernel;
+  const double taps = cpu ? 24.0 : 9.0 * 7.0;
+  const double texels = cpu ? 16.0 : 36.0;
   const double perPixelBytes = 80.0 / std::max(1, lights);
   return {"pixel-light", pixels * lights, 16.0 + taps + 15.0, texels * 4.0 + perPixelBytes};
 }

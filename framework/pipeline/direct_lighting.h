@@ -23,10 +23,11 @@ public:
   // `host`: the frame's read-back images (used on the CPU).
   void render(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct, HostReadback& host);
   bool onCpu() const { return onCpu_; }
-  // What it does per frame (strategy.h's WorkCount), for `pixels` and `lights`.
-  WorkCount work(double pixels, int lights) const;
+  // What it does per frame (strategy.h's WorkCount), for `pixels` and `lights`, by its kernel
+  // (`glKernel` false) or by the GL kernel whatever the backend (true).
+  WorkCount work(double pixels, int lights, bool glKernel = false) const;
 
-private:
+ private:
   void renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                    HostReadback& host);
 

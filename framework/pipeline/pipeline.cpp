@@ -280,7 +280,7 @@ nlohmann::json Pipeline::computeReport() const {
           {"strategies", stages}};
 }
 
-nlohmann::json Pipeline::workReport() const {
+nlohmann::json Pipeline::workReport(bool glKernels) const {
   const LightMaps& maps = lightMapsPass_->lightMaps();
   const double pixels = double(settings_.width) * settings_.height;
   FrameShape shape;
@@ -302,11 +302,13 @@ nlohmann::json Pipeline::workReport() const {
   report["shadow_maps"] = {entry({"texel", shadowTexels})};
   report["rsm"] = {entry({"texel", shape.rsmTexels})};
   report["gbuffer"] = {entry({"pixel", pixels})};
-  report["direct"] = {entry(direct_->work(pixels, maps.lightCount))};
+  report["direct"] = {entry(direct_->work(pixels, maps.lightCount, glKernels))};
+  Requirements requirements = requirements_;
+  if (glKernels) requirements.backend = ComputeBackend::Gl;
   for (const auto& [table, strategy] : strategies_.all()) {
     const std::string stage = stageOfTable(table);
     if (!report.contains(stage)) report[stage] = nlohmann::json::array();
-    const std::vector<WorkCount> counts = strategy->work(shape, requirements_);
+    const std::vector<WorkCount> counts = strategy->work(shape, requirements);
     if (counts.empty() && strategy->name() != "none")
       report[stage].push_back({{"table", table}, {"not_counted", strategy->name()}});
     for (const WorkCount& w : counts) report[stage].push_back(entry(w));

@@ -92,7 +92,9 @@ public:
   // {unit, units, multiply_adds_per_unit, bytes_per_unit, multiply_adds, bytes}; the raster
   // passes count their texels and pixels only (their arithmetic is the rasteriser's), and a
   // strategy that does not model its work yet is listed by table with "not_counted".
-  nlohmann::json workReport() const;
+  // `glKernels`: the work of the GL kernels whatever the backend (what a GPU would run: the
+  // analysis's GPU estimate, analysis/lpvlab_analysis/gpu_estimate.py, is made from it).
+  nlohmann::json workReport(bool glKernels = false) const;
   // Bytes per resource group (GL buffers and textures; host buffers of strategies on the CPU).
   nlohmann::json memoryReport() const;
 

@@ -93,14 +93,14 @@ void standardVariants(benchmark::State& state) {
   std::mt19937 random(1);
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
   for (float& v : current) v = value(random);
-  const auto step = scatter ? standardScatterCpu<float> : standardGatherCpu<float>;
   const StandardOcclusion<float>* used = occlusion > 0 ? &faces : nullptr;
-  step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,
-       StandardAccumulation::Target);  // warm-up
+  standardIterationCpu(scatter, table, res, current.data(), next.data(), accumulated.data(), "auto",
+                       0, used,
+                       StandardAccumulation::Target);  // warm-up
   int iteration = 0;
   for (auto _ : state) {
-    step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,
-         pairedAccumulation(iteration++, 1 << 30));
+    standardIterationCpu(scatter, table, res, current.data(), next.data(), accumulated.data(),
+                         "auto", 0, used, pairedAccumulation(iteration++, 1 << 30));
     std::swap(current, next);
     benchmark::ClobberMemory();
   }

@@ -4,7 +4,7 @@
 //      on GL, within float rounding (direct light: but for rare shadow comparisons,
 //      backend_comparison.h);
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
-//      a strategy without a CPU kernel for its composition (here: directed propagation) on GL;
+//      a strategy without a CPU kernel for its composition (here: subsurface rendering) on GL;
 //   c. a CPU frame is the same bit for bit on one thread and on all;
 //   d. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
 //      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
@@ -29,6 +29,7 @@ namespace {
 struct Rendered {
   std::vector<NamedImage> aovs;
   bool propagationOnCpu = false;
+  bool renderingOnCpu = false;  // every rendering strategy
 };
 
 Rendered render(std::vector<std::string> overrides) {
@@ -39,8 +40,11 @@ Rendered render(std::vector<std::string> overrides) {
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   pipeline.renderFrame();
+  bool renderingOnCpu = true;
+  for (const auto& rendering : pipeline.strategies().rendering)
+    renderingOnCpu = renderingOnCpu && rendering->runsOnCpu(pipeline.requirements());
   return {pipeline.readOutputs(),
-          pipeline.strategies().propagation->runsOnCpu(pipeline.requirements())};
+          pipeline.strategies().propagation->runsOnCpu(pipeline.requirements()), renderingOnCpu};
 }
 
 // Largest |a - b| over an AOV, relative to b's largest value.
@@ -96,23 +100,29 @@ TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelEx
   EXPECT_EQ(resolveBackend("auto", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Gl);
   EXPECT_EQ(resolveBackend("cpu", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Cpu);
   EXPECT_EQ(resolveBackend("gl", "llvmpipe"), ComputeBackend::Gl);
-  // Standard propagation has a CPU kernel with the GV and by scattering; directed propagation has
-  // none yet: "auto" keeps it on GL.
+  // Every propagation has a CPU kernel (standard with the GV and by scattering, directed,
+  // tetrahedral); subsurface rendering has none yet: "auto" keeps it on GL.
   EXPECT_TRUE(render({"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}).propagationOnCpu);
   EXPECT_TRUE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
-  EXPECT_FALSE(render({"propagation.type=\"directed\""}).propagationOnCpu);
+  EXPECT_TRUE(render({"propagation.type=\"directed\""}).propagationOnCpu);
+  EXPECT_TRUE(render({"propagation.type=\"tetrahedral\"", "propagation.iterations=4"}).propagationOnCpu);
+  EXPECT_TRUE(render({}).renderingOnCpu);
+  const Rendered subsurface = render({"rendering.type=\"subsurface\""});
+  EXPECT_FALSE(subsurface.renderingOnCpu);
+  EXPECT_TRUE(subsurface.propagationOnCpu);
 }
 
 TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {
-  // The default composition, and the GV with bounces, have CPU kernels throughout; directed
-  // propagation has none yet.
+  // The default composition, and the GV with bounces, have CPU kernels throughout; subsurface
+  // rendering has none yet.
   EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\""}));
   EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\"", "occlusion.type=\"geometry_volume\"",
                                       "propagation.bounces=true"}));
   const std::string message = test::errorOf([] {
-    loadExperiment("", {"compute.backend=\"cpu\"", "propagation.type=\"directed\""});
+    loadExperiment("", {"compute.backend=\"cpu\"", "rendering.type=\"subsurface\""});
   });
-  EXPECT_TRUE(test::contains(message, "[propagation] type = \"directed\" cannot run on the CPU backend"))
+  EXPECT_TRUE(
+      test::contains(message, "[rendering] type = \"subsurface\" cannot run on the CPU backend"))
       << message;
   EXPECT_TRUE(test::contains(message, "no CPU kernel yet")) << message;
   EXPECT_TRUE(test::contains(

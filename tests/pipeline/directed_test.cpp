@@ -1,5 +1,6 @@
-// Directed propagation ("directed", shaders/propagation/directed_*.comp) on hand-made grids:
-//   - the GPU's dilation and gather are the double-precision C++ of the same shared GLSL
+// Directed propagation ("directed", shaders/propagation/directed_*.comp, and its CPU kernel,
+// directed_cpu.h) on hand-made grids, the kernels' tests on both backends:
+//   - the kernels' dilation and gather are the double-precision C++ of the same shared GLSL
 //     (directed_faces.glsl), over two iterations of random light and a sparse random normal grid,
 //     without and with a random geometry volume (occluding from the second iteration on);
 //   - the normalisation: 1 / G(n) is what one unnormalised step keeps of a lobe about n, which
@@ -11,21 +12,18 @@
 //     where standard propagation does;
 //   all at SH orders 1-3.
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <functional>
 #include <iostream>
 #include <random>
+#include <tuple>
 
-#include <gtest/gtest.h>
-
+#include "directed_model.h"
 #include "framework/math/solid_angle.h"
 #include "order_grid_support.h"
 #include "propagation_rig.h"
-
-// The GV lookup (propagation_rig.h) reads the global `gvBlocking`; the model sets it.
-LPVLAB_SHARED_GLSL_BEGIN
-#include "shaders/propagation/directed_faces.glsl"
-LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
@@ -37,24 +35,8 @@ const CubeFaceSolidAngles& angles() {
   return a;
 }
 
-glm::dvec4 normalOf(const std::vector<float>& n, const glm::ivec3& res, const glm::ivec3& cell) {
-  const std::size_t i = std::size_t(4) * shared::cellIndex(cell, res);
-  return {n[i], n[i + 1], n[i + 2], n[i + 3]};
-}
-
-// ---- the double-precision model: the shared GLSL, dilated and gathered as the kernels do -------
-
-std::vector<float> dilate(const std::vector<float>& normals, const glm::ivec3& res) {
-  std::vector<float> out(normals.size());
-  forEachCell(res, [&](const glm::ivec3& c) {
-    glm::dvec3 sum(0.0);
-    for (const glm::ivec3& d : kAxes)
-      if (shared::cellInside(c + d, res)) sum += shared::directedUnitNormal(normalOf(normals, res, c + d));
-    const glm::dvec4 v = shared::directedDilated(normalOf(normals, res, c), sum);
-    for (int k = 0; k < 4; ++k) out[std::size_t(4) * shared::cellIndex(c, res) + k] = float(v[k]);
-  });
-  return out;
-}
+// ---- the double-precision model: the shared GLSL, dilated (directed_model.h) and gathered as ----
+// ---- the kernels do -----------------------------------------------------------------------------
 
 // What `cell`'s neighbour at cell - d sends it along d, per channel, at the grid's order;
 // `occluded`: through the GV in shared::gvBlocking.
@@ -119,7 +101,7 @@ std::vector<float> vplNormals(const glm::ivec3& res, const glm::ivec3& cell, con
 // ---- a. the kernels against the C++ ------------------------------------------------------------
 
 // With a GV, iteration 0 unoccluded and iteration 1 through it (firstOccludedIteration = 1).
-void twoIterationsMatchTheCpp(int order, bool withGv) {
+void twoIterationsMatchTheCpp(int order, ComputeBackend backend, bool withGv) {
   const glm::ivec3 res{6, 5, 4};  // not multiples of the 4^3 work group, nor a cube
   const OrderGrid o = orderGrid(res, order);
   std::mt19937 random(4242 + order);
@@ -135,7 +117,7 @@ void twoIterationsMatchTheCpp(int order, bool withGv) {
     }
   ASSERT_GT(withNormal, 3);
 
-  PropagationRig rig("directed", res, iterationsTable(2), order, withGv);
+  PropagationRig rig("directed", res, iterationsTable(2), order, withGv, backend);
   rig.load(current, accumulated);
   rig.loadNormals(normals);
   if (withGv) {
@@ -162,12 +144,18 @@ void twoIterationsMatchTheCpp(int order, bool withGv) {
 }
 
 class DirectedOrder : public ::testing::TestWithParam<int> {};
+// The kernels' tests: per SH order and backend.
+class DirectedKernel : public ::testing::TestWithParam<std::tuple<int, ComputeBackend>> {
+ protected:
+  int order() const { return std::get<0>(GetParam()); }
+  ComputeBackend backend() const { return std::get<1>(GetParam()); }
+};
 
-TEST_P(DirectedOrder, TwoGpuIterationsMatchTheSharedCppDilationAndGather) {
-  twoIterationsMatchTheCpp(GetParam(), false);
+TEST_P(DirectedKernel, TwoIterationsMatchTheSharedCppDilationAndGather) {
+  twoIterationsMatchTheCpp(order(), backend(), false);
 }
-TEST_P(DirectedOrder, TwoGpuIterationsThroughAGeometryVolumeMatchTheSharedCpp) {
-  twoIterationsMatchTheCpp(GetParam(), true);
+TEST_P(DirectedKernel, TwoIterationsThroughAGeometryVolumeMatchTheSharedCpp) {
+  twoIterationsMatchTheCpp(order(), backend(), true);
 }
 
 // ---- b. normalisation and energy per iteration --------------------------------------------------
@@ -221,7 +209,7 @@ TEST(DirectedPropagation, OrderThreeGainIsOrderTwos) {
                 shared::directedGain(n, angles().farFace, angles().sideFace, 9), 1e-12);
 }
 
-void fluxIsKeptAlongTheNormal(int order, const glm::dvec3& n) {
+void fluxIsKeptAlongTheNormal(int order, ComputeBackend backend, const glm::dvec3& n) {
   const glm::ivec3 res{15, 15, 15}, centre{7, 7, 7};
   const OrderGrid o = orderGrid(res, order);
   const int iterations = 6, radius = 3;  // light reaches the grid's edge at step 8
@@ -233,7 +221,7 @@ void fluxIsKeptAlongTheNormal(int order, const glm::dvec3& n) {
   const double phi = injectedFlux();
   const double r = 1.0 / shared::directedGain(n, angles().farFace, angles().sideFace, o.coefficients);
 
-  PropagationRig rig("directed", res, iterationsTable(1), order);
+  PropagationRig rig("directed", res, iterationsTable(1), order, false, backend);
   Grid before = orderSource(o, centre, false, n);
   rig.load(before);
   std::vector<float> normals = vplNormals(res, centre, n);
@@ -272,26 +260,26 @@ void fluxIsKeptAlongTheNormal(int order, const glm::dvec3& n) {
   }
 }
 
-TEST_P(DirectedOrder, AVplLobeKeepsItsFluxAmongItsDilatedNormalsAlongAnAxis) {
-  fluxIsKeptAlongTheNormal(GetParam(), {0, 0, 1});
+TEST_P(DirectedKernel, AVplLobeKeepsItsFluxAmongItsDilatedNormalsAlongAnAxis) {
+  fluxIsKeptAlongTheNormal(order(), backend(), {0, 0, 1});
 }
-TEST_P(DirectedOrder, AVplLobeKeepsItsFluxAmongItsDilatedNormalsOffTheAxes) {
-  fluxIsKeptAlongTheNormal(GetParam(), glm::normalize(glm::dvec3(1, 2, 3)));
+TEST_P(DirectedKernel, AVplLobeKeepsItsFluxAmongItsDilatedNormalsOffTheAxes) {
+  fluxIsKeptAlongTheNormal(order(), backend(), glm::normalize(glm::dvec3(1, 2, 3)));
 }
 
 // ---- c. what it fixes: back-propagation below the VPL's surface ---------------------------------
 
-TEST_P(DirectedOrder, AFloorVplLightsNothingBelowTheFloorWhereStandardDoes) {
-  const int order = GetParam();
+TEST_P(DirectedKernel, AFloorVplLightsNothingBelowTheFloorWhereStandardDoes) {
+  const int order = this->order();
   const glm::ivec3 res{15, 15, 15}, floorCell{7, 7, 7};
   const OrderGrid o = orderGrid(res, order);
   const glm::dvec3 up{0, 1, 0};
   const int iterations = 7;
   auto below = [&](const glm::ivec3& c) { return c.y < floorCell.y; };
-  PropagationRig standard("standard", res, iterationsTable(iterations), order);
+  PropagationRig standard("standard", res, iterationsTable(iterations), order, false, backend());
   standard.load(orderSource(o, floorCell, false, up));
   standard.propagate();
-  PropagationRig directed("directed", res, iterationsTable(iterations), order);
+  PropagationRig directed("directed", res, iterationsTable(iterations), order, false, backend());
   directed.load(orderSource(o, floorCell, false, up));
   directed.loadNormals(vplNormals(res, floorCell, up));
   directed.propagate();
@@ -320,14 +308,16 @@ TEST_P(DirectedOrder, AFloorVplLightsNothingBelowTheFloorWhereStandardDoes) {
 // Without dilation only the cells that received VPLs reproject; light that left them spreads
 // as in standard propagation, and some of it gets below the floor again: the dilation is what
 // carries the VPL's direction along with its light.
-TEST(DirectedPropagation, WithoutDilationOnlyCellsWithNormalsReproject) {
+class DirectedBackend : public ::testing::TestWithParam<ComputeBackend> {};
+
+TEST_P(DirectedBackend, WithoutDilationOnlyCellsWithNormalsReproject) {
   const glm::ivec3 res{9, 9, 9}, floorCell{4, 4, 4};
   const OrderGrid o = orderGrid(res, 1);
   const glm::dvec3 up{0, 1, 0};
   const int iterations = 4;
   toml::table table = iterationsTable(iterations);
   table.insert("dilation", false);
-  PropagationRig rig("directed", res, table);
+  PropagationRig rig("directed", res, table, 1, false, GetParam());
   rig.load(orderSource(o, floorCell, false, up));
   const std::vector<float> normals = vplNormals(res, floorCell, up);
   rig.loadNormals(normals);
@@ -343,6 +333,19 @@ TEST(DirectedPropagation, WithoutDilationOnlyCellsWithNormalsReproject) {
 
 INSTANTIATE_TEST_SUITE_P(Orders, DirectedOrder, ::testing::Values(1, 2, 3),
                          [](const auto& info) { return "order" + std::to_string(info.param); });
+INSTANTIATE_TEST_SUITE_P(Backends, DirectedBackend,
+                         ::testing::Values(ComputeBackend::Gl, ComputeBackend::Cpu),
+                         [](const auto& info) {
+                           return info.param == ComputeBackend::Cpu ? "cpu" : "gl";
+                         });
+INSTANTIATE_TEST_SUITE_P(OrdersAndBackends, DirectedKernel,
+                         ::testing::Combine(::testing::Values(1, 2, 3),
+                                            ::testing::Values(ComputeBackend::Gl,
+                                                              ComputeBackend::Cpu)),
+                         [](const auto& info) {
+                           return "order" + std::to_string(std::get<0>(info.param)) +
+                                  (std::get<1>(info.param) == ComputeBackend::Cpu ? "_cpu" : "_gl");
+                         });
 
 }  // namespace
 }  // namespace lpvlab

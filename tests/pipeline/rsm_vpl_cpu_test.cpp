@@ -4,8 +4,8 @@
 //   a. on the built-in Cornell box at SH orders 1-3 it fills the grid the GL kernel fills,
 //      within float rounding (the flux balance itself is injection_test.cpp's, which runs on the
 //      default backend, the CPU here);
-//   b. the normal grid it fills for directed propagation (which runs on GL) gives the image of an
-//      all-GL run;
+//   b. the normal grid it fills drives directed propagation (on the CPU too) to the image of an
+//      all-GL run, within float rounding;
 //   c. its grid does not depend on the thread count, bit for bit;
 //   d. VPLs shifted by whole cells from walls on cell boundaries land in the same cells.
 
@@ -84,16 +84,16 @@ TEST(RsmVplCpu, VplsShiftedOntoACellBoundaryLandInTheSameCellOnBothBackends) {
   }
 }
 
-TEST(RsmVplCpu, ItsNormalGridDrivesDirectedPropagationOnGlAsGlsOwnDoes) {
+TEST(RsmVplCpu, ItsNormalGridDrivesDirectedPropagationAsGlsOwnDoes) {
   const std::vector<std::string> directed = {"propagation.type=\"directed\""};
   std::vector<std::string> glOnly = directed;
   glOnly.push_back("compute.backend=gl");
   const Injected gl = inject(glOnly, true);
-  const Injected mixed = inject(directed, true);
-  ASSERT_EQ(mixed.injectionRanOn, "cpu");
-  const Image& a = findAov(mixed.images, "indirect");
+  const Injected cpu = inject(directed, true);
+  ASSERT_EQ(cpu.injectionRanOn, "cpu");
+  const Image& a = findAov(cpu.images, "indirect");
   const Image& b = findAov(gl.images, "indirect");
-  EXPECT_LT(relativeDifference(a.pixels, b.pixels), 1e-5);
+  EXPECT_LT(relativeDifference(a.pixels, b.pixels), 1e-4);
 }
 
 TEST(RsmVplCpu, TheGridDoesNotDependOnTheThreadCount) {

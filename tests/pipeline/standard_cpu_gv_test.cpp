@@ -38,15 +38,15 @@ Propagated cpuPropagate(const Grid& injected, const glm::ivec3& res, int order, 
                         const Grid& gv, const Grid* albedo, int firstOccluded,
                         const std::string& isa = "auto", int threads = 0,
                         const std::string& method = "gather") {
-  const auto step = method == "scatter" ? standardScatterCpu<Real> : standardGatherCpu<Real>;
   const StandardFaceTable<Real> table = makeStandardFaceTable<Real>(order, kFar, kSide);
   const StandardOcclusion<Real> occlusion =
       makeStandardOcclusion(table, res, gv.data(), albedo ? albedo->data() : nullptr);
   std::vector<Real> current(injected.begin(), injected.end()), next(current.size()),
       accumulated = current;
   for (int i = 0; i < iterations; ++i) {
-    step(table, res, current.data(), next.data(), accumulated.data(), isa, threads,
-         i >= firstOccluded ? &occlusion : nullptr, pairedAccumulation(i, iterations));
+    standardIterationCpu(
+        method == "scatter", table, res, current.data(), next.data(), accumulated.data(), isa,
+        threads, i >= firstOccluded ? &occlusion : nullptr, pairedAccumulation(i, iterations));
     std::swap(current, next);
   }
   return {std::vector<double>(current.begin(), current.end()),

@@ -120,14 +120,14 @@ TEST(StandardCpu, PairedIterationsAccumulateTheSameSum) {
   const Grid injected = test::randomFloats(std::size_t(res.x * res.y * res.z) * 27, random);
   for (const bool scatter : {false, true})
     for (const int iterations : {4, 5}) {
-      const auto step = scatter ? standardScatterCpu<double> : standardGatherCpu<double>;
       std::vector<double> sums[2];
       for (const bool paired : {false, true}) {
         std::vector<double> current(injected.begin(), injected.end()), next(current.size()),
             accumulated = current;
         for (int i = 0; i < iterations; ++i) {
-          step(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, nullptr,
-               paired ? pairedAccumulation(i, iterations) : StandardAccumulation::Target);
+          standardIterationCpu(
+              scatter, table, res, current.data(), next.data(), accumulated.data(), "auto", 0,
+              nullptr, paired ? pairedAccumulation(i, iterations) : StandardAccumulation::Target);
           std::swap(current, next);
         }
         sums[paired] = accumulated;

@@ -1,6 +1,8 @@
-// Tetrahedral propagation ("tetrahedral": shaders/propagation/tetrahedral_*.comp) through the
-// whole strategy on hand-made cubic grids, at SH orders 1-3:
-//   - the GPU (split, gather steps, merge) against a double-precision C++ reference of any order
+// Tetrahedral propagation ("tetrahedral": shaders/propagation/tetrahedral_*.comp, and its CPU
+// kernels, tetrahedral_cpu.h) through the whole strategy on hand-made cubic grids, at SH orders
+// 1-3, every test on both backends:
+//   - the kernels (split, gather steps, merge) against a double-precision C++ reference of any
+//   order
 //     built from the same shared GLSL (tetrahedral_lattice.glsl) and the same face integrals
 //     (framework/math/tetrahedral_face_integrals.h) on random grids, without and with a random
 //     geometry volume (unoccluded steps, then occluded ones), for both `face_flux` rules;
@@ -8,21 +10,23 @@
 //   - flux per step against the normalisation: the 12 far faces of a cell's four neighbours
 //     tile the sphere, so a step from an isotropic source sends exactly its flux, and with the
 //     face integrals a step from any source does up to the clamp; the clamp can only add, by at
-//     most the factor computed below (> 1 for "centre", 1 for "integral"); until light reaches the grid's boundary
-//     (the closed shell here) nothing is lost, and `accumulated` is the injected light plus
-//     every step's, weighted by the step length (sqrt(2)/4 cube edges);
+//     most the factor computed below (> 1 for "centre", 1 for "integral"); until light reaches the
+//     grid's boundary (the closed shell here) nothing is lost, and `accumulated` is the injected
+//     light plus every step's, weighted by the step length (sqrt(2)/4 cube edges);
 //   - a single VPL in the middle keeps the lattice's symmetries (it keeps all 48 of the cube's
 //     about a cube centre: tests/math/tetrahedral_lattice_test.cpp), at orders 1 and 2;
 //   - the GV: an opaque wall stops all light (0 W beyond it), a transparent GV changes nothing.
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
 #include <random>
+#include <string>
+#include <tuple>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
@@ -45,11 +49,13 @@ const char* nameOf(FaceFlux rule) { return rule == FaceFlux::integral ? "integra
 
 // The tetrahedral strategy and its light grid of cubes at `order`, with a GV if asked.
 PropagationRig tetrahedralRig(const glm::ivec3& resolution, int iterations, int order = 1,
-                              bool withGv = false, FaceFlux rule = FaceFlux::integral) {
+                              bool withGv = false, FaceFlux rule = FaceFlux::integral,
+                              ComputeBackend backend = ComputeBackend::Gl) {
   toml::table table = iterationsTable(iterations);
   table.insert("face_flux", nameOf(rule));
-  return PropagationRig("tetrahedral", resolution, table, order, withGv);
+  return PropagationRig("tetrahedral", resolution, table, order, withGv, backend);
 }
+const char* nameOf(ComputeBackend backend) { return backend == ComputeBackend::Cpu ? "cpu" : "gl"; }
 void run(PropagationRig& rig, const Grid& current, const Grid& accumulated) {
   rig.load(current, accumulated);
   rig.propagate();
@@ -181,22 +187,31 @@ double maxStepGain(int order, FaceFlux rule) {
   return gain;
 }
 
-class TetrahedralOrder : public ::testing::TestWithParam<int> {};
+class TetrahedralOrder : public ::testing::TestWithParam<std::tuple<int, ComputeBackend>> {
+ protected:
+  int order() const { return std::get<0>(GetParam()); }
+  ComputeBackend backend() const { return std::get<1>(GetParam()); }
+};
 // Order and face-flux rule.
-class TetrahedralRule : public ::testing::TestWithParam<std::tuple<int, FaceFlux>> {};
+class TetrahedralRule : public ::testing::TestWithParam<std::tuple<int, FaceFlux, ComputeBackend>> {
+ protected:
+  int order() const { return std::get<0>(GetParam()); }
+  FaceFlux rule() const { return std::get<1>(GetParam()); }
+  ComputeBackend backend() const { return std::get<2>(GetParam()); }
+};
 
 // ---- a. the kernels against the C++ ------------------------------------------------------------
 
 // With a GV: firstOccludedIteration 1, so the first tetFirstOccludedStep(1) = 3 steps are
 // unoccluded and the rest read the random GV.
-void gpuMatchesTheCpp(int order, bool withGv, FaceFlux rule) {
+void kernelsMatchTheCpp(int order, bool withGv, FaceFlux rule, ComputeBackend backend) {
   const Lattice l{orderGrid({5, 4, 3}, order)};  // not multiples of the work group, nor a cube
   const int iterations = withGv ? 5 : 3;
   std::mt19937 random(2024 + order);
   const Grid current = randomFloats(l.cubes.floats(), random);
   const Grid accumulated = randomFloats(l.cubes.floats(), random);
 
-  PropagationRig rig = tetrahedralRig(l.cubes.res, iterations, order, withGv, rule);
+  PropagationRig rig = tetrahedralRig(l.cubes.res, iterations, order, withGv, rule, backend);
   const int firstOccludedStep = shared::tetFirstOccludedStep(1);
   if (withGv) {
     ASSERT_EQ(firstOccludedStep, 3);
@@ -221,20 +236,20 @@ void gpuMatchesTheCpp(int order, bool withGv, FaceFlux rule) {
   expectClose(gpuAccumulated, expectedAccumulated, 1e-5, "accumulated");
 }
 
-TEST_P(TetrahedralRule, GpuMatchesTheSharedCppOnRandomGrids) {
-  gpuMatchesTheCpp(std::get<0>(GetParam()), false, std::get<1>(GetParam()));
+TEST_P(TetrahedralRule, KernelsMatchTheSharedCppOnRandomGrids) {
+  kernelsMatchTheCpp(order(), false, rule(), backend());
 }
-TEST_P(TetrahedralRule, GpuThroughARandomGeometryVolumeMatchesTheSharedCpp) {
-  gpuMatchesTheCpp(std::get<0>(GetParam()), true, std::get<1>(GetParam()));
+TEST_P(TetrahedralRule, KernelsThroughARandomGeometryVolumeMatchTheSharedCpp) {
+  kernelsMatchTheCpp(order(), true, rule(), backend());
 }
 
 // ---- b. resampling and the normalisation ------------------------------------------------------
 
 TEST_P(TetrahedralOrder, ResamplingConservesFlux) {
-  const OrderGrid o = orderGrid({4, 3, 5}, GetParam());
+  const OrderGrid o = orderGrid({4, 3, 5}, order());
   std::mt19937 random(99);
   const Grid g = randomFloats(o.floats(), random);
-  PropagationRig rig = tetrahedralRig(o.res, 0, GetParam());
+  PropagationRig rig = tetrahedralRig(o.res, 0, order(), false, FaceFlux::integral, backend());
   run(rig, g);
   EXPECT_EQ(rig.accumulated(), g) << "no steps add nothing";
   const Grid resampled = rig.current();
@@ -247,7 +262,7 @@ TEST_P(TetrahedralOrder, ResamplingConservesFlux) {
   }
 }
 
-void fluxPerStep(int order, bool isotropic, FaceFlux rule) {
+void fluxPerStep(int order, bool isotropic, FaceFlux rule, ComputeBackend backend) {
   const OrderGrid o = orderGrid({11, 11, 11}, order);
   const glm::ivec3 centre{5, 5, 5};
   const int steps = 6;  // light moves 0.35 cubes per step (plus one cube of resampling each way):
@@ -259,7 +274,7 @@ void fluxPerStep(int order, bool isotropic, FaceFlux rule) {
             << gMax << "\n";
   double before = phi, stepsFlux = 0.0;
   for (int k = 1; k <= steps; ++k) {
-    PropagationRig rig = tetrahedralRig(o.res, k, order, false, rule);
+    PropagationRig rig = tetrahedralRig(o.res, k, order, false, rule, backend);
     run(rig, injected);
     const double now = flux(rig.current(), o), accumulated = flux(rig.accumulated(), o);
     std::cout << "[ tetrahedral ] order " << order << " step " << k << ": flux " << now / phi
@@ -281,20 +296,20 @@ void fluxPerStep(int order, bool isotropic, FaceFlux rule) {
 }
 
 TEST_P(TetrahedralRule, FluxPerStepFromAnIsotropicSource) {
-  fluxPerStep(std::get<0>(GetParam()), true, std::get<1>(GetParam()));
+  fluxPerStep(order(), true, rule(), backend());
 }
-TEST_P(TetrahedralRule, FluxPerStepFromALobe) {
-  fluxPerStep(std::get<0>(GetParam()), false, std::get<1>(GetParam()));
-}
+TEST_P(TetrahedralRule, FluxPerStepFromALobe) { fluxPerStep(order(), false, rule(), backend()); }
 
 TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
   const OrderGrid o = orderGrid({5, 5, 5}, 1);
-  PropagationRig rig = tetrahedralRig(o.res, 300);
-  run(rig, orderSource(o, {2, 2, 2}, false));
-  const double now = flux(rig.current(), o);
-  ASSERT_TRUE(std::isfinite(now));
-  EXPECT_GE(now, 0.0);
-  EXPECT_LT(now, 1e-4 * injectedFlux());
+  for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu}) {
+    PropagationRig rig = tetrahedralRig(o.res, 300, 1, false, FaceFlux::integral, backend);
+    run(rig, orderSource(o, {2, 2, 2}, false));
+    const double now = flux(rig.current(), o);
+    ASSERT_TRUE(std::isfinite(now)) << nameOf(backend);
+    EXPECT_GE(now, 0.0) << nameOf(backend);
+    EXPECT_LT(now, 1e-4 * injectedFlux()) << nameOf(backend);
+  }
 }
 
 // ---- c. symmetry -------------------------------------------------------------------------------
@@ -303,11 +318,11 @@ TEST(TetrahedralPropagation, LightLeavesASmallGrid) {
 const glm::ivec3 kRes11{11, 11, 11};
 const glm::ivec3 kCentre11{5, 5, 5};
 
-class TetrahedralSymmetry : public ::testing::TestWithParam<int> {};
+class TetrahedralSymmetry : public TetrahedralOrder {};
 
 TEST_P(TetrahedralSymmetry, IsotropicVplKeepsTheCubesSymmetries) {
-  const OrderGrid o = orderGrid(kRes11, GetParam());
-  PropagationRig rig = tetrahedralRig(kRes11, 7, GetParam());
+  const OrderGrid o = orderGrid(kRes11, order());
+  PropagationRig rig = tetrahedralRig(kRes11, 7, order(), false, FaceFlux::integral, backend());
   run(rig, orderSource(o, kCentre11, true));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     ASSERT_GT(maxAbs(g), 0.0);
@@ -317,8 +332,8 @@ TEST_P(TetrahedralSymmetry, IsotropicVplKeepsTheCubesSymmetries) {
 }
 
 TEST_P(TetrahedralSymmetry, LobeAlongZKeepsTheSymmetriesAboutZ) {
-  const OrderGrid o = orderGrid(kRes11, GetParam());
-  PropagationRig rig = tetrahedralRig(kRes11, 7, GetParam());
+  const OrderGrid o = orderGrid(kRes11, order());
+  PropagationRig rig = tetrahedralRig(kRes11, 7, order(), false, FaceFlux::integral, backend());
   run(rig, orderSource(o, kCentre11, false));
   for (const Grid& g : {rig.current(), rig.accumulated()}) {
     for (const Symmetry& s : {kMirrorX, kMirrorY, kSwapXY, kRotateZ})
@@ -345,14 +360,15 @@ std::vector<float> gvWall(const glm::ivec3& res, int xLow, int xHigh, double blo
 // crosses a face between its two centroids, so no light gets from x < 4 to x > 7 (cubes x >= 7
 // are fed only by lattice cells whose centroids have x > 6.75).
 TEST_P(TetrahedralOrder, AnOpaqueGvWallStopsTheLight) {
-  const OrderGrid o = orderGrid({12, 5, 5}, GetParam());
+  const OrderGrid o = orderGrid({12, 5, 5}, order());
   const glm::ivec3 source{1, 2, 2};
   const int steps = 40;  // enough to cross the grid about once without the wall
   auto beyond = [](const glm::ivec3& c) { return c.x >= 7; };
-  PropagationRig open = tetrahedralRig(o.res, steps, GetParam());
+  PropagationRig open = tetrahedralRig(o.res, steps, order(), false, FaceFlux::integral, backend());
   run(open, orderSource(o, source, false, {1, 0, 0}));
   const double openBeyond = flux(open.accumulated(), o, beyond);
-  PropagationRig walled = tetrahedralRig(o.res, steps, GetParam(), true);
+  PropagationRig walled =
+      tetrahedralRig(o.res, steps, order(), true, FaceFlux::integral, backend());
   walled.loadGv(gvWall(o.res, 4, 6, 1000.0), 0);
   run(walled, orderSource(o, source, false, {1, 0, 0}));
   const Grid g = walled.accumulated();
@@ -362,8 +378,9 @@ TEST_P(TetrahedralOrder, AnOpaqueGvWallStopsTheLight) {
     for (int channel = 0; channel < 3; ++channel)
       for (int k = 0; k < o.coefficients; ++k) walledBeyond += std::abs(g[o.at(c, channel, k)]);
   });
-  std::cout << "[ tetrahedral ] order " << GetParam() << ": accumulated beyond the wall: open "
-            << openBeyond << " W, walled " << walledBeyond << " (sum of |coefficients|)\n";
+  std::cout << "[ tetrahedral ] " << nameOf(backend()) << ", order " << order()
+            << ": accumulated beyond the wall: open " << openBeyond << " W, walled " << walledBeyond
+            << " (sum of |coefficients|)\n";
   EXPECT_GT(openBeyond, 1e-4 * injectedFlux()) << "without the wall light gets there";
   EXPECT_EQ(walledBeyond, 0.0);
   EXPECT_GT(flux(g, o, [](const glm::ivec3& c) { return c.x < 4; }), injectedFlux())
@@ -371,29 +388,36 @@ TEST_P(TetrahedralOrder, AnOpaqueGvWallStopsTheLight) {
 }
 
 TEST_P(TetrahedralOrder, ATransparentGvChangesNothing) {
-  const OrderGrid o = orderGrid({6, 5, 4}, GetParam());
+  const OrderGrid o = orderGrid({6, 5, 4}, order());
   std::mt19937 random(7);
   const Grid current = randomFloats(o.floats(), random), accumulated = randomFloats(o.floats(), random);
-  PropagationRig plain = tetrahedralRig(o.res, 6, GetParam());
+  PropagationRig plain = tetrahedralRig(o.res, 6, order(), false, FaceFlux::integral, backend());
   run(plain, current, accumulated);
-  PropagationRig withGv = tetrahedralRig(o.res, 6, GetParam(), true);
+  PropagationRig withGv = tetrahedralRig(o.res, 6, order(), true, FaceFlux::integral, backend());
   withGv.loadGv(gvWall(o.res, 0, o.res.x, 0.0), 0);
   run(withGv, current, accumulated);
   expectClose(withGv.current(), plain.current(), 1e-6, "current");
   expectClose(withGv.accumulated(), plain.accumulated(), 1e-6, "accumulated");
 }
 
-INSTANTIATE_TEST_SUITE_P(Orders, TetrahedralOrder, ::testing::Values(1, 2, 3),
-                         [](const auto& info) { return "order" + std::to_string(info.param); });
-INSTANTIATE_TEST_SUITE_P(OrdersAndRules, TetrahedralRule,
+const auto kBackends = ::testing::Values(ComputeBackend::Gl, ComputeBackend::Cpu);
+std::string orderAndBackend(const ::testing::TestParamInfo<std::tuple<int, ComputeBackend>>& info) {
+  return "order" + std::to_string(std::get<0>(info.param)) + "_" + nameOf(std::get<1>(info.param));
+}
+INSTANTIATE_TEST_SUITE_P(OrdersAndBackends, TetrahedralOrder,
+                         ::testing::Combine(::testing::Values(1, 2, 3), kBackends),
+                         orderAndBackend);
+INSTANTIATE_TEST_SUITE_P(OrdersRulesAndBackends, TetrahedralRule,
                          ::testing::Combine(::testing::Values(1, 2, 3),
-                                            ::testing::Values(FaceFlux::integral, FaceFlux::centre)),
+                                            ::testing::Values(FaceFlux::integral, FaceFlux::centre),
+                                            kBackends),
                          [](const auto& info) {
                            return "order" + std::to_string(std::get<0>(info.param)) + "_" +
-                                  nameOf(std::get<1>(info.param));
+                                  nameOf(std::get<1>(info.param)) + "_" +
+                                  nameOf(std::get<2>(info.param));
                          });
-INSTANTIATE_TEST_SUITE_P(Orders, TetrahedralSymmetry, ::testing::Values(1, 2),
-                         [](const auto& info) { return "order" + std::to_string(info.param); });
+INSTANTIATE_TEST_SUITE_P(OrdersAndBackends, TetrahedralSymmetry,
+                         ::testing::Combine(::testing::Values(1, 2), kBackends), orderAndBackend);
 
 }  // namespace
 }  // namespace lpvlab

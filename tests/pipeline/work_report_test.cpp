@@ -5,6 +5,8 @@
 //   b. the per-unit figures follow the kernels run: the CPU's factored gather (3 x 36N) against
 //      GL's (3 x 60N), more with SH order 2, more with the GV;
 //   c. a strategy that does not model its work is listed as not counted, never as zero;
+//   e. the GL kernels' work (the GPU estimate's input) is the GL backend's whatever the backend,
+//      and scales with the grid's cells and the iterations as the counters say;
 //   d. the sweep summary turns the report into work.<stage>.* columns.
 
 #include <cmath>
@@ -27,6 +29,7 @@ namespace {
 
 struct Report {
   nlohmann::json work;
+  nlohmann::json gpuWork;  // the GL kernels' (Pipeline::workReport(true))
   double cells = 0.0;
   int levels = 1;
   int iterations = 0;
@@ -42,6 +45,7 @@ Report workOf(std::vector<std::string> overrides) {
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   Report r;
   r.work = pipeline.workReport();
+  r.gpuWork = pipeline.workReport(true);
   r.cells = double(e.settings.grid.cellCount());
   r.levels = int(pipeline.levels().size());
   r.iterations = pipeline.strategies().propagation->iterations();
@@ -114,12 +118,38 @@ TEST(WorkReport, PerUnitFiguresFollowTheKernelsRun) {
   EXPECT_LT(directPerPixel({}), directPerPixel({"compute.backend=gl"}));
 }
 
+TEST(WorkReport, GpuWorkIsTheGlKernelsAndScalesWithTheGridAndTheIterations) {
+  for (const std::string type : {"standard", "directed"}) {
+    const std::string propagation = "propagation.type=\"" + type + "\"";
+    const Report cpu = workOf({propagation});  // "auto": the CPU on llvmpipe
+    const Report gl = workOf({propagation, "compute.backend=gl"});
+    EXPECT_NE(cpu.work.at("propagation"), gl.work.at("propagation")) << type;
+    EXPECT_EQ(cpu.gpuWork, gl.work) << type;
+    EXPECT_EQ(gl.gpuWork, gl.work) << type;
+    // About twice the cells per axis and twice the iterations: the propagation's work grows as
+    // cells x iterations (16 times for a cubic grid), the same per cell-iteration.
+    const auto reportOf = [&](const std::string& resolution, const std::string& iterations) {
+      return workOf(
+          {propagation, "grid.resolution=" + resolution, "propagation.iterations=" + iterations});
+    };
+    const Report small = reportOf("12", "5"), large = reportOf("24", "10");
+    const double growth = (large.cells * large.iterations) / (small.cells * small.iterations);
+    EXPECT_GT(growth, 12.0) << type;
+    const nlohmann::json& a = only(small.gpuWork.at("propagation"));
+    const nlohmann::json& b = only(large.gpuWork.at("propagation"));
+    for (const char* total : {"units", "multiply_adds", "bytes"})
+      EXPECT_DOUBLE_EQ(b.at(total).get<double>(), growth * a.at(total).get<double>())
+          << type << " " << total;
+    EXPECT_GT(a.at("multiply_adds").get<double>(), 0.0) << type;
+  }
+}
+
 TEST(WorkReport, StrategiesWithoutAModelAreListedAsNotCounted) {
-  const Report r = workOf({"propagation.type=\"directed\""});
-  const nlohmann::json& propagation = r.work.at("propagation");
-  ASSERT_EQ(propagation.size(), 1u);
-  EXPECT_EQ(propagation.at(0).at("not_counted"), "directed");
-  EXPECT_FALSE(propagation.at(0).contains("multiply_adds"));
+  const Report r = workOf({"rendering.type=\"subsurface\""});
+  const nlohmann::json& indirect = r.work.at("indirect");
+  ASSERT_EQ(indirect.size(), 1u);
+  EXPECT_EQ(indirect.at(0).at("not_counted"), "subsurface");
+  EXPECT_FALSE(indirect.at(0).contains("multiply_adds"));
 }
 
 // The glossy march counts its samples apart from the pixels' diffuse read: marchSamples per pixel,

@@ -9,6 +9,10 @@
 // shaders/propagation/directed_faces.glsl and docs/variants.md#directed, at SH orders 1-3 (the
 // gain derived for the grid's order). A geometry volume, if the occlusion strategy provides one,
 // attenuates the light crossing each shared face as in thesis alg. 6.2.
+// On the CPU backend the standard CPU kernel runs it, finishing each cell with a normal by the
+// second reprojection (directed_cpu.h, standard_cpu_frame.h): the dilation only decides from which
+// iteration a cell has its normal, so it and every cell's gain are found once per frame, and kept
+// while the injected normals stay the same.
 //
 // | parameter  | type | default | meaning                                                       |
 // |------------|------|---------|---------------------------------------------------------------|
@@ -17,7 +21,11 @@
 // |            |      |         | only in cells that received VPLs (the rest propagate as       |
 // |            |      |         | standard), to see what the dilation contributes               |
 
+#include <algorithm>
+#include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
@@ -26,6 +34,9 @@
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/propagation/directed_cpu.h"
+#include "variants/propagation/standard_cpu_frame.h"
+#include "variants/propagation/standard_work.h"
 
 namespace lpvlab {
 namespace {
@@ -48,12 +59,19 @@ public:
     uses.reads(kGeometryVolume);
   }
   int maxShOrder() const override { return 3; }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   void prepare(const StrategySetup& setup) override {
     ShaderCompiler& shaders = setup.shaders;
     const GridGeometry& grid = setup.grid;
     const Requirements& requirements = setup.requirements;
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    if (runsOnCpu(requirements)) {
+      cpu_ = StandardCpuFrame(requirements.shOrder, angles.farFace, angles.sideFace,
+                              LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float));
+      onCpu_ = true;
+      return;
+    }
     gather_ = shaders.compute("propagation/directed_gather.comp",
                               {SpecConstant::f(0, float(angles.farFace)),
                                SpecConstant::f(1, float(angles.sideFace)),
@@ -69,6 +87,7 @@ public:
   }
 
   void propagate(Frame& frame) override {
+    if (onCpu_) return propagateOnCpu(frame);
     LightGrid& grid = frame.lightGrid;
     const gl::Buffer* normals = &frame.get(kNormalGrid).normals;
     const GeometryVolume* gv = frame.find(kGeometryVolume);
@@ -101,16 +120,68 @@ public:
   }
 
   int iterations() const override { return iterations_; }
+
+  // Per cell-iteration: the standard transfer's (standard_work.h) and the second reprojection.
+  // On the CPU: per channel the six normals' weighted flux sum and the lobe (6 + min(N, 9)), the
+  // weights and lobe read per cell; the dilation and gains, once per frame, not counted. On GL,
+  // per face and channel the reprojection factor (about 8), per cell the gain G(n) (60 lobe
+  // values of about 8 each) and the lobe (N), the dilation's reads of six neighbours' normals
+  // (vec4) and its write, and the gather's read of the cell's normal.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override {
+    const bool onCpu = runsOnCpu(requirements);
+    const double n = shape.coefficients, lobe = std::min(n, 9.0);
+    StandardTransferWork w =
+        standardTransferWork(shape.coefficients, onCpu, false, requirements.has(kGeometryVolume));
+    if (onCpu) {
+      w.multiplyAdds += 3 * (6 + lobe);
+      w.bytes += 4 * (1 + 6 + lobe);
+    } else {
+      w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
+      w.bytes += 16 * ((dilation_ ? 7 : 0) + 1);
+    }
+    return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
+  }
   std::size_t memoryBytes() const override {
-    return scratch_.size() + normals_[0].size() + normals_[1].size();
+    std::size_t bytes = scratch_.size() + normals_[0].size() + normals_[1].size() +
+                        cpu_.memoryBytes() + cpuNormals_.size() * sizeof(float);
+    for (const auto& [grid, cache] : cpuCells_)
+      bytes += (cache.normals.size() + cache.cells.since.size() + cache.cells.faceWeight.size() +
+                cache.cells.lobe.size()) *
+               sizeof(float);
+    return bytes;
   }
 
 private:
+ // The reprojected cells of this level are found again only when its injected normals (or its
+ // grid) changed; in a static scene the warm-up frame pays for them.
+ void propagateOnCpu(Frame& frame) {
+   const LightGrid& grid = frame.lightGrid;
+   downloadFloats(frame.get(kNormalGrid).normals, std::size_t(4) * grid.geometry.cellCount(),
+                  cpuNormals_);
+   CellsCache& cache = cpuCells_[&grid];
+   if (cache.cells.resolution != grid.geometry.resolution || cache.normals != cpuNormals_) {
+     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+     cache.cells = makeDirectedCells(cpu_.table(), grid.geometry.resolution, cpuNormals_,
+                                     iterations_, dilation_, angles.farFace, angles.sideFace);
+     cache.normals = cpuNormals_;
+   }
+   cpu_.propagate(frame, {.count = iterations_, .reprojected = &cache.cells});
+ }
+
   int iterations_;
   bool dilation_;
   Program gather_, dilate_;
   DualBuffer scratch_;  // swapped with the grid's current buffer
   gl::Buffer normals_[2];  // dilation ping-pong
+  bool onCpu_ = false;
+  StandardCpuFrame cpu_;           // on the CPU backend
+  std::vector<float> cpuNormals_;  // the injected normals, read back
+  struct CellsCache {
+    std::vector<float> normals;  // the injected normals they were found from
+    ReprojectedCells<float> cells;
+  };
+  std::map<const LightGrid*, CellsCache> cpuCells_;  // per cascade level
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "directed",

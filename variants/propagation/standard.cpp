@@ -9,31 +9,30 @@
 // When an occlusion strategy produces a geometry volume (this strategy reads kGeometryVolume),
 // each face's flux is multiplied by the GV's transmittance from iteration
 // GeometryVolume::firstOccludedIteration on (alg. 6.2 lines 11-14). With `bounces` (which
-// consume the GV and its surfaces' albedo, kSurfaceAlbedo), the light a face crossing blocks is re-emitted by the GV's
-// surfaces there (albedo times a clamped cosine lobe about their normal) into the cell it came
-// from, every occluded iteration, so light bounces as often as iterations allow
-// (standard_faces.glsl has the mathematics).
-// On the CPU backend ([compute] backend, strategy.h) gathering and scattering run the CPU kernels
-// of standard_cpu.h, with the GV and its bounces, on the light grid's host side
-// (dual_buffer.h: read back only if a GL kernel wrote it last; the GV is read back from GL), with
-// iterations paired so the accumulated grid is updated every other one.
+// consume the GV and its surfaces' albedo, kSurfaceAlbedo), the light a face crossing blocks is
+// re-emitted by the GV's surfaces there (albedo times a clamped cosine lobe about their normal)
+// into the cell it came from, every occluded iteration, so light bounces as often as iterations
+// allow (standard_faces.glsl has the mathematics). On the CPU backend ([compute] backend,
+// strategy.h) gathering and scattering run the CPU kernels of standard_cpu.h, with the GV and its
+// bounces, on the light grid's host side (standard_cpu_frame.h: read back only if a GL kernel wrote
+// it last; the GV is read back from GL), with iterations paired so the accumulated grid is updated
+// every other one.
 //
 // | parameter  | type   | default  | meaning                                                     |
 // |------------|--------|----------|-------------------------------------------------------------|
-// | iterations | int    | 32       | propagation steps; light travels one cell per step (0..4096): |
-// |            |        |          | a 32-cell grid needs about 32 for light to cross it           |
-// | method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
-// |            |        |          | different memory traffic (scatter: atomics on GL, six passes  |
-// |            |        |          | on the CPU)                                                   |
-// | bounces    | bool   | false    | re-emit the light the GV blocks with its surfaces' albedo     |
-// |            |        |          | (multiple bounces); needs [occlusion] "geometry_volume"       |
-// | far_face_solid_angle  | real | 0.40066968 | Omega of the far face (solid_angle.h); a     |
-// | side_face_solid_angle | real | 0.42343135 | side face's; both for `lpvlab fit` to vary   |
-// | damping    | real   | 1        | every step's transfer times this (0..2): both solid angles    |
-// |            |        |          | scaled, since the transfer is linear in them                  |
+// | iterations | int    | 32       | propagation steps; light travels one cell per step (0..4096):
+// | |            |        |          | a 32-cell grid needs about 32 for light to cross it | |
+// method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
+// |            |        |          | different memory traffic (scatter: atomics on GL, six passes |
+// |            |        |          | on the CPU) | | bounces    | bool   | false    | re-emit the
+// light the GV blocks with its surfaces' albedo     | |            |        |          | (multiple
+// bounces); needs [occlusion] "geometry_volume"       | | far_face_solid_angle  | real | 0.40066968
+// | Omega of the far face (solid_angle.h); a     | | side_face_solid_angle | real | 0.42343135 |
+// side face's; both for `lpvlab fit` to vary   | | damping    | real   | 1        | every step's
+// transfer times this (0..2): both solid angles    | |            |        |          | scaled,
+// since the transfer is linear in them                  |
 
 #include <cmath>
-#include <map>
 #include <string>
 #include <utility>
 
@@ -44,7 +43,8 @@
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
-#include "variants/propagation/standard_cpu.h"
+#include "variants/propagation/standard_cpu_frame.h"
+#include "variants/propagation/standard_work.h"
 
 namespace lpvlab {
 namespace {
@@ -81,10 +81,8 @@ public:
     const Requirements& requirements = setup.requirements;
     const GridGeometry& grid = setup.grid;
     if (runsOnCpu(requirements)) {
-      cpuTable_ = makeStandardFaceTable<float>(requirements.shOrder, damping_ * farFace_,
-                                               damping_ * sideFace_);
-      // The ping-pong partner of the grid's host side (the grid's own two live in LightGrid).
-      cpuNext_.assign(LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float), 0.0f);
+      cpu_ = StandardCpuFrame(requirements.shOrder, damping_ * farFace_, damping_ * sideFace_,
+                              LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float));
       onCpu_ = true;
       return;
     }
@@ -99,7 +97,9 @@ public:
   }
 
   void propagate(Frame& frame) override {
-    if (onCpu_) return propagateOnCpu(frame);
+    if (onCpu_)
+      return cpu_.propagate(frame,
+                            {.count = iterations_, .scatter = scatter_, .bounces = bounces_});
     using namespace kernel;
     LightGrid& grid = frame.lightGrid;
     program_.use();
@@ -128,78 +128,20 @@ public:
 
   int iterations() const override { return iterations_; }
 
-  // Per cell-iteration, with N coefficients per channel and 3 channels. Reads: the six
-  // neighbours' 3N floats; writes: the cell's 3N; the accumulated grid's 3N read and written.
-  // Transfers: the CPU kernel sums fluxes per face normal and skips the SH terms that vanish on
-  // axis-aligned faces (standardGatherMultiplyAdds: 96 of 30 x 4 + 6 x 4 at order 1; scattering
-  // adds the lobes in each of its six passes); the GL kernels do 30 faces x 2N per channel (their
-  // SH evaluations per face not counted). Scattering adds into its 6 neighbours (atomically on
-  // GL; in six read-modify-write passes on the CPU): 6 x 3N read-modify-writes instead of 3N
-  // writes. The GV reads its 8 corners (vec4) per cell and interpolates 8 x 4 per face; bounces
-  // run every face twice (on the CPU only the blocked faces, not counted).
+  // Per cell-iteration: standard_work.h; bounces run every face twice on GL (on the CPU only the
+  // blocked faces, not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const double n = shape.coefficients;
     const bool onCpu = runsOnCpu(requirements);
-    const int cpuMadds = scatter_ ? standardScatterMultiplyAdds(shape.coefficients)
-                                  : standardGatherMultiplyAdds(shape.coefficients);
-    double madds = onCpu ? 3.0 * cpuMadds : 3 * 30 * 2 * n;
-    double bytes = 4 * (6 * 3 * n + (scatter_ ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
-    if (requirements.has(kGeometryVolume)) {
-      // The CPU reads each face's transmittance, found once per frame, and multiplies by it.
-      madds += onCpu ? 3 * 30 : 30 * 8 * 4;
-      bytes += onCpu ? 30 * 4 : 8 * 16;
-    }
-    if (bounces_ && !onCpu) madds *= 2;
-    return {{"cell-iteration", shape.cells * shape.levels * iterations_, madds, bytes}};
+    StandardTransferWork w = standardTransferWork(shape.coefficients, onCpu, scatter_,
+                                                  requirements.has(kGeometryVolume));
+    if (bounces_ && !onCpu) w.multiplyAdds *= 2;
+    return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
 
-  std::size_t memoryBytes() const override {
-    std::size_t bytes =
-        scratch_.size() + (cpuNext_.size() + cpuGv_.size() + cpuGvAlbedo_.size()) * sizeof(float);
-    for (const auto& [gv, cache] : cpuOcclusion_) bytes += cache.bytes();
-    return bytes;
-  }
+  std::size_t memoryBytes() const override { return scratch_.size() + cpu_.memoryBytes(); }
 
-private:
-  // With a GV, what it does to every face (and its bounces) is found once per GV (standard_cpu.h),
-  // and used from its first occluded iteration on.
-  void propagateOnCpu(Frame& frame) {
-    LightGrid& grid = frame.lightGrid;
-    // On the grid's host side (read back only if GL wrote it last); the accumulated grid is added
-    // to as it is (the pipeline starts it as the injected grid; a caller stepping propagation by
-    // hand keeps summing), as the GL kernels add to it.
-    std::vector<float>& current = grid.current.host();
-    std::vector<float>& accumulated = grid.accumulated.host();
-    cpuNext_.resize(current.size());
-    const GeometryVolume* gv = frame.find(kGeometryVolume);
-    const StandardOcclusion<float>* occlusion = nullptr;
-    if (gv) {
-      const std::size_t gvCells = std::size_t(gv->geometry.cellCount());
-      downloadFloats(gv->blocking, gvCells * GeometryVolume::kCoefficients, cpuGv_);
-      if (bounces_) downloadFloats(frame.get(kSurfaceAlbedo).albedo, gvCells * 4, cpuGvAlbedo_);
-      // Found again only when the level's GV (or its albedo) differs from the last frame's, bit
-      // for bit: in a static scene, the first frame (the warm-up) pays for it.
-      OcclusionCache& cache = cpuOcclusion_[gv];
-      if (cache.faces.resolution != grid.geometry.resolution || cpuGv_ != cache.gv ||
-          cpuGvAlbedo_ != cache.albedo) {
-        cache.faces = makeStandardOcclusion(cpuTable_, grid.geometry.resolution, cpuGv_.data(),
-                                            bounces_ ? cpuGvAlbedo_.data() : nullptr);
-        cache.gv = cpuGv_;
-        cache.albedo = cpuGvAlbedo_;
-      }
-      occlusion = &cache.faces;
-    }
-    for (int i = 0; i < iterations_; ++i) {
-      const bool occluded = gv && i >= gv->firstOccludedIteration;
-      const auto iteration = scatter_ ? standardScatterCpu<float> : standardGatherCpu<float>;
-      iteration(cpuTable_, grid.geometry.resolution, current.data(), cpuNext_.data(),
-                accumulated.data(), "auto", 0, occluded ? occlusion : nullptr,
-                pairedAccumulation(i, iterations_));
-      current.swap(cpuNext_);  // the grid's host side now holds the new light
-    }
-  }
-
+ private:
   int iterations_;
   bool scatter_;
   bool bounces_;
@@ -207,20 +149,7 @@ private:
   Program program_;
   DualBuffer scratch_;  // swapped with the grid's current buffer
   bool onCpu_ = false;
-  StandardFaceTable<float> cpuTable_;
-  std::vector<float> cpuNext_;  // on the CPU backend: the host side's ping-pong partner
-  std::vector<float> cpuGv_, cpuGvAlbedo_;
-  // Per level (its GV): what the GV does to the faces, found from this GV and albedo.
-  struct OcclusionCache {
-    StandardOcclusion<float> faces;
-    std::vector<float> gv, albedo;
-    std::size_t bytes() const {
-      return (faces.transmittance.size() + faces.bounceLobes.size() + gv.size() + albedo.size()) *
-                 sizeof(float) +
-             faces.bounces.size() * sizeof(StandardOcclusion<float>::Bounce);
-    }
-  };
-  std::map<const GeometryVolume*, OcclusionCache> cpuOcclusion_;
+  StandardCpuFrame cpu_;  // on the CPU backend
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "standard",

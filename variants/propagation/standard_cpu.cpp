@@ -119,6 +119,14 @@ namespace {
 // The row padding of the kernel (see gatherRegister's callers).
 constexpr int kRowPadding = 16;
 
+}  // namespace
+
+int standardCpuRowWidth(int cellsPerRow) {
+  return (cellsPerRow + kRowPadding - 1) / kRowPadding * kRowPadding;
+}
+
+namespace {
+
 // Per table entry (light from neighbour `direction` into the face with `normal`), the face index
 // f of standard_faces.glsl for the flow -offset, or -1 for the shared face.
 struct FaceGeometry {
@@ -149,7 +157,7 @@ StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& tab
   StandardOcclusion<Real> o;
   o.resolution = res;
   o.coefficients = table.coefficients;
-  o.width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
+  o.width = standardCpuRowWidth(res.x);
   const int rows = res.y * res.z, N = table.coefficients;
   constexpr int kFaces = StandardOcclusion<Real>::kFaces;
   o.transmittance.assign(std::size_t(kFaces) * rows * o.width, Real(1));
@@ -254,11 +262,23 @@ struct RegisterOf {
 // the intensity's multiply-adds.
 // Occluded: each face's flux is max(intensity, 0) times the face's transmittance, read from
 // t[standardFaceSlot(d, normal) * tStride + x]. `only` >= 0: from that neighbour alone.
-template <int N, int Bytes, bool Occluded, class Real>
+// Reprojects: the lanes whose cell reprojects in this iteration (ReprojectedCells, its row at
+// `reprojected`) take the reprojected lobe instead.
+template <class Real>
+struct ReprojectedRow {
+  const Real* since;       // the row's since[x]
+  const Real* faceWeight;  // normal n's weights at faceWeight[n * stride + x]
+  const Real* lobe;        // coefficient k's lobe at lobe[k * stride + x]
+  std::size_t stride;
+  Real iteration;
+};
+
+template <int N, int Bytes, bool Occluded, bool Reprojects, class Real>
 [[gnu::always_inline]] inline void gatherRegister(const StandardFaceTable<Real>& table,
                                                   const Real* const (&from)[6],
                                                   const std::size_t (&stride)[6], int width, int x,
                                                   const Real* t, std::size_t tStride, int only,
+                                                  const ReprojectedRow<Real>* reprojected,
                                                   Real* out) {
   using V = typename RegisterOf<Real, Bytes>::type;
   V fluxByNormal[6] = {};
@@ -289,12 +309,32 @@ template <int N, int Bytes, bool Occluded, class Real>
       }
     }
   }
+  // Reprojecting lanes: r = sum_n flux_n faceWeight_n, re-emitted as r * lobe_k.
+  [[maybe_unused]] V redirected = {};
+  [[maybe_unused]] decltype(V{} < V{}) reprojecting = {};
+  if constexpr (Reprojects) {
+    V since;
+    std::memcpy(&since, reprojected->since + x, sizeof(V));
+    reprojecting = since <= reprojected->iteration;
+#pragma GCC unroll 6
+    for (int normal = 0; normal < 6; ++normal) {
+      V weight;
+      std::memcpy(&weight, reprojected->faceWeight + normal * reprojected->stride + x, sizeof(V));
+      redirected += fluxByNormal[normal] * weight;
+    }
+  }
 #pragma GCC unroll 16
   for (int k = 0; k < N; ++k) {
     V sum = {};
 #pragma GCC unroll 6
     for (int normal = 0; normal < 6; ++normal)
       if (lobeUsesBasis(normal, k)) sum += fluxByNormal[normal] * table.normalLobe[normal][k];
+    if constexpr (Reprojects) {
+      V lobe = {};
+      if (k < ReprojectedCells<Real>::kMaxLobeCoefficients)
+        std::memcpy(&lobe, reprojected->lobe + k * reprojected->stride + x, sizeof(V));
+      sum = reprojecting ? redirected * lobe : sum;
+    }
     std::memcpy(out + k * width + x, &sum, sizeof sum);
   }
 }
@@ -391,16 +431,15 @@ template <int Bytes, class Real>
 // cell is then stored once and added to `accumulated`. With `occlusion`, the faces' fluxes are
 // attenuated and the row's bounces added before storing. A scattering pass (`only` >= 0) takes
 // the light of neighbour `only` alone and writes as `output` says (the bounces in the first pass).
+// With `reprojected`, its cells that reproject in iteration `iteration` do.
 template <int N, int Bytes, class Real>
-[[gnu::always_inline]] inline void gatherRowsImpl(const StandardFaceTable<Real>& table,
-                                                  const glm::ivec3& res, const Real* source,
-                                                  Real* target, Real* accumulated, int rowBegin,
-                                                  int rowEnd,
-                                                  const StandardOcclusion<Real>* occlusion,
-                                                  int only, RowOutput output) {
+[[gnu::always_inline]] inline void gatherRowsImpl(
+    const StandardFaceTable<Real>& table, const glm::ivec3& res, const Real* source, Real* target,
+    Real* accumulated, int rowBegin, int rowEnd, const StandardOcclusion<Real>* occlusion, int only,
+    RowOutput output, const ReprojectedCells<Real>* reprojected, int iteration) {
   const std::size_t plane = std::size_t(res.x) * res.y * res.z;  // cells: one coefficient's span
   const Real* const sourceEnd = source + 3 * N * plane;
-  const int width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
+  const int width = standardCpuRowWidth(res.x);
   const std::size_t staged = std::size_t(N) * width;
   // Per direction a staged row, whose cells outside [first, last) below stay zero: they are never
   // written. And one row of zeros for the neighbours outside the grid.
@@ -457,19 +496,32 @@ template <int N, int Bytes, class Real>
           copyShortRun(neighbourRow + k * plane + first + o.x, copy + std::size_t(k) * width + first,
                        last - first);
       }
-      if (occlusion) {
-        const std::size_t tStride = std::size_t(res.y) * res.z * width;
-        const Real* t = occlusion->transmittance.data() + std::size_t(row) * width;
+      const std::size_t rowStride = std::size_t(rows) * width;
+      const Real* t =
+          occlusion ? occlusion->transmittance.data() + std::size_t(row) * width : nullptr;
+      ReprojectedRow<Real> reprojectedRow{};
+      if (reprojected)
+        reprojectedRow = {reprojected->since.data() + std::size_t(row) * width,
+                          reprojected->faceWeight.data() + std::size_t(row) * width,
+                          reprojected->lobe.data() + std::size_t(row) * width, rowStride,
+                          Real(iteration)};
+      // The row's four kinds of register, chosen once per row.
+      const auto registers = [&]<bool Occluded, bool Reprojects>() {
         for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
-          gatherRegister<N, Bytes, true>(table, from, stride, width, x, t, tStride, only, out.data());
-        if (output != RowOutput::Add)
-          addBounces<N>(table, *occlusion, row, source + channelBase + base, plane, channel, width,
-                        out.data());
-      } else {
-        for (int x = 0; x < width; x += RegisterOf<Real, Bytes>::kLanes)
-          gatherRegister<N, Bytes, false>(table, from, stride, width, x,
-                                          static_cast<const Real*>(nullptr), 0, only, out.data());
-      }
+          gatherRegister<N, Bytes, Occluded, Reprojects>(
+              table, from, stride, width, x, t, rowStride, only, &reprojectedRow, out.data());
+      };
+      if (occlusion && reprojected)
+        registers.template operator()<true, true>();
+      else if (occlusion)
+        registers.template operator()<true, false>();
+      else if (reprojected)
+        registers.template operator()<false, true>();
+      else
+        registers.template operator()<false, false>();
+      if (occlusion && output != RowOutput::Add)
+        addBounces<N>(table, *occlusion, row, source + channelBase + base, plane, channel, width,
+                      out.data());
       for (int k = 0; k < N; ++k)
         storeRow<Bytes>(out.data() + std::size_t(k) * width,
                         target + channelBase + k * plane + base,
@@ -480,19 +532,20 @@ template <int N, int Bytes, class Real>
 }
 
 template <class Real>
-using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*,
-                              Real*, Real*, int, int, const StandardOcclusion<Real>*, int,
-                              RowOutput);
+using RowsFunction = void (*)(const StandardFaceTable<Real>&, const glm::ivec3&, const Real*, Real*,
+                              Real*, int, int, const StandardOcclusion<Real>*, int, RowOutput,
+                              const ReprojectedCells<Real>*, int);
 
 // The row loop compiled for each instruction set with its register width (the inlined body takes
 // the function's target).
-#define LPVLAB_GATHER_ROWS(name, bytes, attributes)                                             \
-  template <int N, class Real>                                                                  \
-  attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,             \
-                       const Real* source, Real* target, Real* accumulated, int begin, int end,  \
-                       const StandardOcclusion<Real>* occlusion, int only, RowOutput output) {  \
-    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end, occlusion,    \
-                             only, output);                                                     \
+#define LPVLAB_GATHER_ROWS(name, bytes, attributes)                                                \
+  template <int N, class Real>                                                                     \
+  attributes void name(const StandardFaceTable<Real>& table, const glm::ivec3& res,                \
+                       const Real* source, Real* target, Real* accumulated, int begin, int end,    \
+                       const StandardOcclusion<Real>* occlusion, int only, RowOutput output,       \
+                       const ReprojectedCells<Real>* reprojected, int iteration) {                 \
+    gatherRowsImpl<N, bytes>(table, res, source, target, accumulated, begin, end, occlusion, only, \
+                             output, reprojected, iteration);                                      \
   }
 LPVLAB_GATHER_ROWS(gatherRowsX86_64, 16, )
 LPVLAB_GATHER_ROWS(gatherRowsV3, 32, __attribute__((target("arch=x86-64-v3"))))
@@ -576,11 +629,15 @@ template <class Real>
 void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                   const Real* source, Real* target, Real* accumulated, const std::string& isa,
                   int threads, const StandardOcclusion<Real>* occlusion,
-                  StandardAccumulation accumulation, bool scatter) {
+                  StandardAccumulation accumulation, bool scatter,
+                  const ReprojectedCells<Real>* reprojected, int iteration) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
   if (occlusion && (occlusion->resolution != resolution || occlusion->coefficients != table.coefficients))
     throw Error("standard propagation (CPU): the geometry volume's faces were made for another grid");
+  if (reprojected &&
+      (reprojected->resolution != resolution || reprojected->coefficients != table.coefficients))
+    throw Error("standard propagation (CPU): the reprojected cells were made for another grid");
   const std::string& chosen = resolveIsa(isa);
   RowsFunction<Real> rows = table.coefficients == 4   ? rowsFor<4, Real>(chosen)
                             : table.coefficients == 9 ? rowsFor<9, Real>(chosen)
@@ -589,7 +646,7 @@ void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolu
   const auto pass = [&](int only, RowOutput output) {
     tbb::parallel_for(tbb::blocked_range<int>(0, rowCount), [&](const tbb::blocked_range<int>& r) {
       rows(table, resolution, source, target, accumulated, r.begin(), r.end(), occlusion, only,
-           output);
+           output, reprojected, iteration);
     });
   };
   auto work = [&] {
@@ -628,9 +685,10 @@ template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated, const std::string& isa,
                        int threads, const StandardOcclusion<Real>* occlusion,
-                       StandardAccumulation accumulation) {
+                       StandardAccumulation accumulation, const ReprojectedCells<Real>* reprojected,
+                       int iteration) {
   propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
-               accumulation, false);
+               accumulation, false, reprojected, iteration);
 }
 
 template <class Real>
@@ -640,7 +698,7 @@ void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& 
                         const StandardOcclusion<Real>* occlusion,
                         StandardAccumulation accumulation) {
   propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
-               accumulation, true);
+               accumulation, true, static_cast<const ReprojectedCells<Real>*>(nullptr), 0);
 }
 
 template void standardScatterCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
@@ -651,9 +709,11 @@ template void standardScatterCpu<double>(const StandardFaceTable<double>&, const
                                          const StandardOcclusion<double>*, StandardAccumulation);
 template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                        const float*, float*, float*, const std::string&, int,
-                                       const StandardOcclusion<float>*, StandardAccumulation);
+                                       const StandardOcclusion<float>*, StandardAccumulation,
+                                       const ReprojectedCells<float>*, int);
 template void standardGatherCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
                                         const double*, double*, double*, const std::string&, int,
-                                        const StandardOcclusion<double>*, StandardAccumulation);
+                                        const StandardOcclusion<double>*, StandardAccumulation,
+                                        const ReprojectedCells<double>*, int);
 
 }  // namespace lpvlab

@@ -46,6 +46,7 @@
 // fixed order of additions, so the result does not depend on the thread count (no atomics).
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -88,6 +89,28 @@ struct StandardOcclusion {
   std::vector<Real> bounceLobes;         // per bounce, `coefficients` values: lobe(n) / pi
   int coefficients = 4;
 };
+
+// A second reprojection of each cell's received light, from an iteration on (directed
+// propagation, directed_cpu.h): where a cell reprojects, its target coefficients are
+//     (sum over normals n of the fluxes through its faces with normal n times faceWeight[n]) *
+//     lobe[k]
+// in place of sum_n flux_n normalLobe[n][k]. Laid out as StandardOcclusion's transmittance (rows
+// padded to `width` cells).
+template <class Real>
+struct ReprojectedCells {
+  static constexpr int kMaxLobeCoefficients = 9;  // a clamped cosine has no band 3
+  glm::ivec3 resolution{0};
+  int width = 0;
+  int coefficients = 4;
+  // since[row * width + x]: the first iteration in which the cell reprojects, or kNever.
+  static constexpr Real kNever = Real(1 << 24);
+  std::vector<Real> since;
+  std::vector<Real> faceWeight;  // [(normal * rows + row) * width + x]
+  std::vector<Real> lobe;        // [(k * rows + row) * width + x], k < min(coefficients, 9)
+};
+
+// The cells per row of the kernel's padded rows (StandardOcclusion, ReprojectedCells).
+int standardCpuRowWidth(int cellsPerRow);
 
 // The slot of the face with `normal` receiving light from neighbour `direction` (normal !=
 // direction): 0..29.
@@ -138,13 +161,15 @@ inline StandardAccumulation pairedAccumulation(int iteration, int iterations) {
 // `occlusion`: the GV's faces, made for this table and resolution, or null (no GV, or an
 // iteration before the GV's first occluded one). `accumulation`: see StandardAccumulation.
 // `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for an unknown one or one
-// this CPU lacks. `threads`: 0 for oneTBB's default (all cores).
+// this CPU lacks. `threads`: 0 for oneTBB's default (all cores). `reprojected`: the cells that
+// reproject their light in this iteration (`iteration`), or null.
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated,
                        const std::string& isa = "auto", int threads = 0,
                        const StandardOcclusion<Real>* occlusion = nullptr,
-                       StandardAccumulation accumulation = StandardAccumulation::Target);
+                       StandardAccumulation accumulation = StandardAccumulation::Target,
+                       const ReprojectedCells<Real>* reprojected = nullptr, int iteration = 0);
 
 // The same iteration by scattering (see above): the same result, scattering's work.
 template <class Real>
@@ -153,5 +178,20 @@ void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& 
                         const std::string& isa = "auto", int threads = 0,
                         const StandardOcclusion<Real>* occlusion = nullptr,
                         StandardAccumulation accumulation = StandardAccumulation::Target);
+
+// One iteration by scattering or gathering, as `scatter` says.
+template <class Real>
+void standardIterationCpu(bool scatter, const StandardFaceTable<Real>& table,
+                          const glm::ivec3& resolution, const Real* source, Real* target,
+                          Real* accumulated, const std::string& isa = "auto", int threads = 0,
+                          std::type_identity_t<const StandardOcclusion<Real>*> occlusion = nullptr,
+                          StandardAccumulation accumulation = StandardAccumulation::Target) {
+  if (scatter)
+    standardScatterCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
+                       accumulation);
+  else
+    standardGatherCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
+                      accumulation);
+}
 
 }  // namespace lpvlab

@@ -20,12 +20,18 @@
 // transmittance where its direction crosses the shared face (thesis alg. 6.2 lines 11-14 on the
 // lattice), from the lattice step at which light has travelled the GV's firstOccludedIteration
 // cube edges on (tetFirstOccludedStep).
+// On the CPU backend the three steps run tetrahedral_cpu.h's kernels on the light grid's host
+// side, the lattice in the CPU's own layout; what the GV does to every face is found once per GV
+// (again only when it changes, so a static scene's warm-up frame pays for it).
 //
 // | parameter  | type | default | meaning                                                     |
 // |------------|------|---------|-------------------------------------------------------------|
 // | iterations | int  | 90      | lattice steps (0..16384); 90 moves light about 32 cube edges |
-// | face_flux  | text | integral | "integral": exact SH integral over each face; "centre": solid angle x intensity towards its centroid |
+// | face_flux  | text | integral | "integral": exact SH integral over each face; "centre": solid
+// angle x intensity towards its centroid |
 
+#include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -37,6 +43,7 @@
 #include "framework/math/tetrahedral_solid_angles.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/propagation/tetrahedral_cpu.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"
@@ -65,11 +72,17 @@ public:
 
   int maxShOrder() const override { return 3; }
   void declare(ResourceUses& uses) const override { uses.reads(kGeometryVolume); }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   void prepare(const StrategySetup& setup) override {
     ShaderCompiler& shaders = setup.shaders;
     const GridGeometry& grid = setup.grid;
     const Requirements& requirements = setup.requirements;
+    if (runsOnCpu(requirements)) {
+      cpuTable_ = makeTetrahedralTable<float>(requirements.shOrder, faceIntegrals_);
+      onCpu_ = true;
+      return;
+    }
     const TetrahedralFaceSolidAngles angles = tetrahedralFaceSolidAngles();
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
     split_ = shaders.compute("propagation/tetrahedral_split.comp", {SpecConstant::i(0, coefficients)});
@@ -94,6 +107,7 @@ public:
   }
 
   void propagate(Frame& frame) override {
+    if (onCpu_) return propagateOnCpu(frame);
     LightGrid& grid = frame.lightGrid;
     const glm::ivec3 res = grid.geometry.resolution;
     const glm::ivec3 cellDomain{kCellsPerCube * res.x, res.y, res.z};
@@ -137,15 +151,81 @@ public:
   }
 
   int iterations() const override { return iterations_; }
+
+  // Per cube and step (a cell-iteration of the cubic grid, as the other propagations count), for
+  // its 12 lattice cells, with N coefficients per channel and 3 channels: each cell reads its four
+  // neighbours' 3N floats, writes its 3N and adds them to the sum (read and written). GL: per far
+  // face (12 per cell) and channel N multiply-adds of the weights and N of the lobe (the lobe's
+  // and, with "centre", the basis's evaluations per face not counted); the GV reads 8 corners
+  // (vec4) per crossing and interpolates 8 x 4. The CPU sums the fluxes per face (16N per cell and
+  // channel: tetrahedralStepMultiplyAdds) and reads each face's transmittance, found once per GV.
+  // Per cube and frame: the split (24 cell values of 3N from two cubes) and the merge (24 cells'
+  // two grids into one cube's), 2 multiply-adds each.
+  std::vector<WorkCount> work(const FrameShape& shape,
+                              const Requirements& requirements) const override {
+    const double n = shape.coefficients, cells = double(kCellsPerCube);
+    const bool onCpu = runsOnCpu(requirements);
+    double madds = cells * 3 * (onCpu ? tetrahedralStepMultiplyAdds(shape.coefficients) : 12 * 2 * n);
+    double bytes = cells * 4 * (4 * 3 * n + 3 * n + 2 * 3 * n);
+    if (requirements.has(kGeometryVolume)) {
+      madds += cells * 12 * (onCpu ? 3 : 8 * 4);
+      bytes += cells * 12 * (onCpu ? 4 : 8 * 16);
+    }
+    const double cubes = shape.cells * shape.levels;
+    return {{"cell-iteration", cubes * iterations_, madds, bytes},
+            {"cell", cubes, 2 * 24 * 3 * n * 2, 4 * 24 * 3 * n * 3}};
+  }
+
   std::size_t memoryBytes() const override {
-    return current_.size() + scratch_.size() + sum_.size() + faceIntegralTable_.size();
+    std::size_t bytes = current_.size() + scratch_.size() + sum_.size() +
+                        faceIntegralTable_.size() + cpuGv_.size() * sizeof(float);
+    for (const auto& [grid, level] : cpuLevels_)
+      bytes += level.lattice.bytes() +
+               (level.occlusion.transmittance.size() + level.gv.size()) * sizeof(float);
+    return bytes;
   }
 
 private:
+ // Per cascade level: its lattice, and what its GV does to the faces with the GV it was found from.
+ struct CpuLevel {
+   TetrahedralLattice<float> lattice;
+   TetrahedralOcclusion<float> occlusion;
+   std::vector<float> gv;
+ };
+
+ void propagateOnCpu(Frame& frame) {
+   LightGrid& grid = frame.lightGrid;
+   const glm::ivec3 res = grid.geometry.resolution;
+   CpuLevel& level = cpuLevels_[&grid];
+   if (level.lattice.resolution != res)
+     level.lattice = TetrahedralLattice<float>(res, cpuTable_.coefficients);
+   const GeometryVolume* gv = frame.find(kGeometryVolume);
+   if (gv) {
+     downloadFloats(gv->blocking,
+                    std::size_t(gv->geometry.cellCount()) * GeometryVolume::kCoefficients, cpuGv_);
+     if (level.occlusion.resolution != res || cpuGv_ != level.gv) {
+       level.occlusion = makeTetrahedralOcclusion(level.lattice, cpuGv_.data());
+       level.gv = cpuGv_;
+     }
+   }
+   std::vector<float>& current = grid.current.host();
+   tetrahedralSplitCpu(current.data(), level.lattice);
+   const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
+   const CpuKernelLevel instructions = widestCpuKernelLevel();
+   for (int i = 0; i < iterations_; ++i)
+     tetrahedralStepCpu(cpuTable_, level.lattice,
+                        gv && i >= firstOccluded ? &level.occlusion : nullptr, instructions);
+   tetrahedralMergeCpu(level.lattice, current.data(), grid.accumulated.host().data());
+ }
+
   int iterations_;
   bool faceIntegrals_;
   Program split_, gather_, merge_;
   gl::Buffer current_, scratch_, sum_, faceIntegralTable_;
+  bool onCpu_ = false;
+  TetrahedralTable<float> cpuTable_{};
+  std::vector<float> cpuGv_;  // this frame's GV, read back
+  std::map<const LightGrid*, CpuLevel> cpuLevels_;
 };
 
 LPVLAB_REGISTER(PropagationStrategy, "tetrahedral",

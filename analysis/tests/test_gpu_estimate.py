@@ -1,0 +1,147 @@
+"""The GPU estimate (gpu_estimate.py): the shipped GPU table, the roofline bound, how the
+estimate follows the counters, the comparison with the thesis's tables, errors naming the file
+and key, and the report's labelled section."""
+import math
+import os
+import tempfile
+import unittest
+
+import pandas as pd
+
+from lpvlab_analysis import gpu_estimate as G
+from lpvlab_analysis import thesis_tables as T
+
+
+def _gpu(fma=1e12, bw=100e9):
+    return G.Gpu("test", "Test GPU", fma, bw)
+
+
+def _table(text):
+    d = tempfile.mkdtemp()
+    p = os.path.join(d, "gpus.toml")
+    with open(p, "w") as f:
+        f.write(text)
+    return p
+
+
+class GpuTableTest(unittest.TestCase):
+    def test_shipped_table_has_the_thesis_gpus(self):
+        gpus = {g.key: g for g in G.load_gpus()}
+        self.assertEqual(gpus["r9_fury"].thesis_setup, "Intel")   # thesis table 8.1
+        self.assertEqual(gpus["gtx_960"].thesis_setup, "AMD")
+        # 3584 x 1.0 GHz and 1024 x 1.178 GHz multiply-adds; 512 and 112.2 GB/s.
+        self.assertAlmostEqual(gpus["r9_fury"].fma_per_s, 3584 * 1.0e9, delta=1e6)
+        self.assertAlmostEqual(gpus["gtx_960"].fma_per_s, 1024 * 1.178e9, delta=1e9)
+        self.assertEqual(gpus["gtx_960"].bytes_per_s, 112.2e9)
+        for g in gpus.values():
+            self.assertGreater(g.fma_per_s, 0)
+            self.assertGreater(g.bytes_per_s, 0)
+
+    def test_malformed_tables_name_the_file_gpu_and_key(self):
+        cases = {
+            "[x]\nname = 'X'\nbytes_per_s = 1e9\n": "[x] has no 'fma_per_s'",
+            "[x]\nname = 'X'\nfma_per_s = -1.0\nbytes_per_s = 1e9\n": "[x] fma_per_s = -1.0 is not a positive number",
+            "[x]\nname = 'X'\nfma_per_s = nan\nbytes_per_s = 1e9\n": "fma_per_s = nan",
+            "[x\n": "not valid TOML",
+            "x = 3\n": "'x' is not a table of a GPU",
+            "": "no GPUs",
+        }
+        for text, message in cases.items():
+            path = _table(text)
+            with self.assertRaises(G.GpuTableError) as ctx:
+                G.load_gpus(path)
+            self.assertIn(path, str(ctx.exception))
+            self.assertIn(message, str(ctx.exception))
+        with self.assertRaises(G.GpuTableError):
+            G.load_gpus("/nonexistent/gpus.toml")
+
+
+class RooflineTest(unittest.TestCase):
+    def test_the_slower_of_arithmetic_and_memory(self):
+        gpu = _gpu(fma=1e12, bw=100e9)
+        # 1e9 multiply-adds: 1 ms; 2e8 bytes: 2 ms -> memory-bound, 2 ms.
+        self.assertAlmostEqual(G.stage_ms(1e9, 2e8, gpu), 2.0)
+        # 4e9 multiply-adds: 4 ms -> arithmetic-bound.
+        self.assertAlmostEqual(G.stage_ms(4e9, 2e8, gpu), 4.0)
+        self.assertAlmostEqual(G.stage_ms(4e9, math.nan, gpu), 4.0)
+        self.assertTrue(math.isnan(G.stage_ms(math.nan, math.nan, gpu)))
+
+    def test_the_estimate_scales_as_the_counters_when_grid_or_iterations_change(self):
+        # Per cell-iteration counts of a kernel (both terms matter on one of the two GPUs), at
+        # grids 16^3 and 32^3 and 8 and 16 iterations: the estimate follows cells x iterations.
+        per_madd, per_byte = 720.0, 432.0
+        rows = []
+        for res in (16, 32):
+            for it in (8, 16):
+                units = res ** 3 * it
+                rows.append({"config_name": f"{res}-{it}", "gpu_ms.propagation": 1.0,
+                             "gpu_work.propagation.cell-iterations": units,
+                             "gpu_work.propagation.multiply_adds": per_madd * units,
+                             "gpu_work.propagation.bytes": per_byte * units,
+                             "gpu_work.injection.VPLs": 100.0})
+        df = pd.DataFrame(rows)
+        gpus = [_gpu(1e12, 100e9), _gpu(1e12, 1e15)]  # memory-bound, arithmetic-bound
+        gpus[1].key = "fast_memory"
+        est = G.with_estimates(df, gpus)
+        self.assertEqual(G.counted_stages(df), ["propagation"])
+        for g in gpus:
+            col = est[f"{G.PREFIX}{g.key}.propagation"]
+            base = col.iloc[0]
+            self.assertGreater(base, 0)
+            for i, row in df.iterrows():
+                ratio = row["gpu_work.propagation.cell-iterations"] / df["gpu_work.propagation.cell-iterations"].iloc[0]
+                self.assertAlmostEqual(col.iloc[i] / base, ratio, places=12)
+            self.assertTrue((est[f"{G.PREFIX}{g.key}.total"] == col).all())
+        # The first is memory-bound (432 B / 100 GB/s), the second arithmetic-bound (720 / 1e12).
+        units = df["gpu_work.propagation.cell-iterations"].iloc[0]
+        self.assertAlmostEqual(est[f"{G.PREFIX}test.propagation"].iloc[0], 1e3 * per_byte * units / 100e9)
+        self.assertAlmostEqual(est[f"{G.PREFIX}fast_memory.propagation"].iloc[0], 1e3 * per_madd * units / 1e12)
+
+
+class ThesisComparisonTest(unittest.TestCase):
+    def test_per_unit_counts_at_the_thesis_configuration(self):
+        # A sweep of iterations (as thesis_tables.toml), standard gathering on a 16^3 grid: the
+        # comparison takes its per-unit counts to 32^3 x 4 levels x the thesis's iterations.
+        per_madd, per_byte = 720.0, 432.0
+        rows = []
+        for i, it in enumerate((1, 2, 4, 8)):
+            units = 16 ** 3 * it
+            rows.append({"config_id": f"c{i}", "config_name": f"it{it}", "variant": "standard",
+                         "param.propagation.type": "standard", "param.propagation.method": "gather",
+                         "param.propagation.iterations": it, "gpu_ms.propagation": float(it),
+                         "gpu_work.propagation.cell-iterations": units,
+                         "gpu_work.propagation.multiply_adds": per_madd * units,
+                         "gpu_work.propagation.bytes": per_byte * units})
+        agg = pd.DataFrame(rows)
+        gpus = G.load_gpus()
+        rows = G.thesis_comparison(agg, gpus)
+        by_gpu = {r["gpu"]: r for r in rows if r["table"] == "8.5"}
+        self.assertEqual(set(by_gpu), {"AMD Radeon R9 Fury", "NVIDIA GeForce GTX 960"})
+        fury = by_gpu["AMD Radeon R9 Fury"]
+        self.assertEqual(fury["thesis_column"], "Intel CS gather")
+        self.assertEqual(fury["thesis_ms"], T.TABLES["8.5"].columns["Intel CS gather"])
+        units_32 = 4 * 32 ** 3 * 32
+        i32 = fury["x"].index(32)
+        expected = 1e3 * max(per_madd * units_32 / 3.584e12, per_byte * units_32 / 512e9)
+        self.assertAlmostEqual(fury["estimate_ms"][i32], expected)
+        self.assertAlmostEqual(fury["ratio"][i32], fury["thesis_ms"][i32] / expected)
+        # The per-step increment: (t(64) - t(1)) / 63, for the thesis and the estimate.
+        t = fury["thesis_ms"]
+        self.assertAlmostEqual(fury["thesis_slope_ms"], (t[-1] - t[0]) / 63)
+        self.assertAlmostEqual(fury["estimate_slope_ms"], 1e3 * per_byte * 4 * 32 ** 3 / 512e9)
+
+
+class ReportSectionTest(unittest.TestCase):
+    def test_the_report_labels_the_estimate(self):
+        from lpvlab_analysis import report
+        df = pd.DataFrame([{"config_name": "a", "gpu_ms.propagation": 12.5,
+                            "gpu_work.propagation.multiply_adds": 1e9, "gpu_work.propagation.bytes": 1e6}])
+        html, md = report._gpu_estimate_section(df, [_gpu(1e12, 100e9)])
+        text = "\n".join(html)
+        self.assertIn("estimate Test GPU", text)
+        self.assertIn("measured here (ms)", text)
+        self.assertIn("| a | propagation | 12.5 | 1 |", md)   # 1e9 / 1e12 s = 1 ms
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,58 @@
+#pragma once
+// A frame's propagation by the standard CPU kernels (standard_cpu.h) on the light grid's host
+// side, for every strategy built on them (standard; directed, which adds its reprojected cells):
+// the face table, the ping-pong partner of the grid's host side, and, per cascade level, what
+// its geometry volume does to the faces, found again only when the GV (or its albedo) differs
+// from the last frame's bit for bit, so that in a static scene the warm-up frame pays for it.
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include "variants/propagation/standard_cpu.h"
+
+namespace lpvlab {
+
+struct Frame;
+struct GeometryVolume;
+
+class StandardCpuFrame {
+ public:
+  StandardCpuFrame() = default;
+  // The transfer's face solid angles (already scaled by any damping; an Error for a bad one) and
+  // the light grid's floats (LightGrid::floatsPerGrid).
+  StandardCpuFrame(int shOrder, double farSolidAngle, double sideSolidAngle,
+                   std::size_t floatsPerGrid);
+
+  struct Iterations {
+    int count = 0;
+    bool scatter = false;  // six scattering passes instead of one gathering pass
+    bool bounces = false;  // the GV's surfaces re-emit what it blocks (reads kSurfaceAlbedo)
+    const ReprojectedCells<float>* reprojected = nullptr;  // gathering only
+  };
+  // `iterations` steps of frame.lightGrid on its host side (read back only if a GL kernel wrote
+  // it last), iterations paired (pairedAccumulation). The accumulated grid is added to as it is
+  // (the pipeline starts it as the injected grid; a caller stepping propagation by hand keeps
+  // summing), as the GL kernels add to it. The GV, if the frame has one, attenuates from its
+  // first occluded iteration on.
+  void propagate(Frame& frame, const Iterations& iterations);
+
+  const StandardFaceTable<float>& table() const { return table_; }
+  std::size_t memoryBytes() const;
+
+ private:
+  // What a level's GV does to the faces, and the GV and albedo it was found from.
+  struct OcclusionCache {
+    StandardOcclusion<float> faces;
+    std::vector<float> gv, albedo;
+    std::size_t bytes() const;
+  };
+  const StandardOcclusion<float>& occlusionOf(Frame& frame, const GeometryVolume& gv, bool bounces);
+
+  StandardFaceTable<float> table_{};
+  std::vector<float> next_;         // the host side's ping-pong partner
+  std::vector<float> gv_, albedo_;  // this frame's GV and albedo, read back
+  std::map<const GeometryVolume*, OcclusionCache> occlusion_;
+};
+
+}  // namespace lpvlab

@@ -1,0 +1,365 @@
+#include "variants/propagation/tetrahedral_cpu.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+#include "framework/math/tetrahedral_face_integrals.h"
+#include "framework/math/tetrahedral_solid_angles.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/propagation/tetrahedral_lattice.glsl"
+using glm::mix;
+// The GV lookup over one GV buffer (coefficient-major, 4 values per GV cell).
+struct TetGvLookup {
+  const float* gvBlocking;
+#include "shaders/common/geometry_volume_lookup.glsl"
+};
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+
+namespace {
+
+constexpr int kCodes = 12, kFaces = 4;
+constexpr int kRowPadding = 16;  // rows are a whole number of registers at every width
+// Values before the first and after the last plane, so that the neighbour reads a cell to the
+// left of the first row or right of the last (border cells: their results are dropped) stay
+// inside the buffer.
+constexpr std::size_t kGuard = 16;
+
+}  // namespace
+
+template <class Real>
+TetrahedralTable<Real> makeTetrahedralTable(int shOrder, bool faceIntegrals) {
+  if (shOrder < 1 || shOrder > 3)
+    throw Error("tetrahedral propagation (CPU): SH order " + std::to_string(shOrder) +
+                " is not 1, 2 or 3");
+  TetrahedralTable<Real> table{};
+  table.coefficients = (shOrder + 1) * (shOrder + 1);
+  const TetrahedralFaceSolidAngles angles = tetrahedralFaceSolidAngles();
+  const std::vector<double>& integrals = tetrahedralFaceIntegrals();
+  for (int code = 0; code < kCodes; ++code) {
+    for (int k = 0; k < kFaces; ++k)
+      for (int i = 0; i < table.coefficients; ++i)
+        table.lobe[code][k][i] =
+            Real(shared::shCosineLobeAt(i, shared::tetFaceNormal(code, k)) / shared::PI);
+    for (int j = 0; j < kFaces; ++j) {
+      const glm::ivec4 n = shared::tetNeighbour(glm::ivec4(0, 0, 0, code), j);
+      table.neighbourOffset[code][j] = glm::ivec3(n);
+      table.neighbourCode[code][j] = n.w;
+      for (int k = 0; k < kFaces; ++k) {
+        if (k == j) continue;
+        const glm::dvec3 direction = shared::tetFarFaceDirection(code, j, k);
+        const double solidAngle =
+            shared::tetFarFaceSolidAngle(j, k, angles.smallFace, angles.largeFace);
+        for (int i = 0; i < table.coefficients; ++i)
+          table.weight[code][j][k][i] = Real(
+              faceIntegrals ? integrals[std::size_t(shared::tetFaceIntegralIndex(code, j, k, i))]
+                            : solidAngle * shared::shBasisAt(i, direction));
+      }
+    }
+  }
+  return table;
+}
+
+template TetrahedralTable<float> makeTetrahedralTable<float>(int, bool);
+template TetrahedralTable<double> makeTetrahedralTable<double>(int, bool);
+
+template <class Real>
+TetrahedralLattice<Real>::TetrahedralLattice(const glm::ivec3& res, int n)
+    : resolution(res), coefficients(n) {
+  width = (res.x + 2 + kRowPadding - 1) / kRowPadding * kRowPadding;
+  plane = std::size_t(width) * (res.y + 2) * (res.z + 2);
+  const std::size_t values = 3 * std::size_t(n) * kCodes * plane + 2 * kGuard;
+  current.assign(values, Real(0));
+  next.assign(values, Real(0));
+  sum.assign(values, Real(0));
+}
+
+template <class Real>
+std::size_t TetrahedralLattice<Real>::at(int channel, int i, int code, const glm::ivec3& c) const {
+  return kGuard + (std::size_t(channel * coefficients + i) * kCodes + code) * plane +
+         (std::size_t(c.z + 1) * (resolution.y + 2) + (c.y + 1)) * width + (c.x + 1);
+}
+
+template struct TetrahedralLattice<float>;
+template struct TetrahedralLattice<double>;
+
+namespace {
+
+// Calls f(code, cube) for every lattice cell that exists (both its cubes inside the grid).
+template <class F>
+void forEachCell(const glm::ivec3& res, F&& f) {
+  for (int code = 0; code < kCodes; ++code)
+    for (int z = 0; z < res.z; ++z)
+      for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x)
+          if (shared::tetInside(glm::ivec4(x, y, z, code), res)) f(code, glm::ivec3(x, y, z));
+}
+
+}  // namespace
+
+template <class Real>
+TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Real>& lattice,
+                                                    const float* gvBlocking) {
+  TetrahedralOcclusion<Real> o;
+  const glm::ivec3 res = lattice.resolution;
+  o.resolution = res;
+  o.transmittance.assign(std::size_t(kCodes) * 12 * lattice.plane + 2 * kGuard, Real(1));
+  const shared::TetGvLookup blocking{gvBlocking};
+  // Per code and z-slice in parallel: each writes its own cells.
+  tbb::parallel_for(tbb::blocked_range<int>(0, kCodes * res.z), [&](const tbb::blocked_range<int>&
+                                                                        r) {
+    shared::TetGvLookup lookup = blocking;  // (its GLSL functions are not const members)
+    for (int task = r.begin(); task < r.end(); ++task) {
+      const int code = task / res.z, z = task % res.z;
+      for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+          const glm::ivec4 tet(x, y, z, code);
+          if (!shared::tetInside(tet, res)) continue;
+          // The cell's index in a plane (at() without the channel, coefficient and code).
+          const std::size_t cell = lattice.at(0, 0, 0, glm::ivec3(x, y, z)) - kGuard;
+          for (int j = 0; j < kFaces; ++j)
+            for (int k = 0; k < kFaces; ++k) {
+              if (k == j) continue;
+              const double t = shared::gvTransmittance(
+                  lookup.gvBlockingAt(shared::tetFarFaceCrossing(tet, j, k), res + 1),
+                  shared::tetFarFaceDirection(code, j, k));
+              o.transmittance[kGuard +
+                              std::size_t(code * 12 + tetrahedralFaceSlot(j, k)) * lattice.plane +
+                              cell] = Real(t);
+            }
+        }
+    }
+  });
+  return o;
+}
+
+template TetrahedralOcclusion<float> makeTetrahedralOcclusion<float>(
+    const TetrahedralLattice<float>&, const float*);
+template TetrahedralOcclusion<double> makeTetrahedralOcclusion<double>(
+    const TetrahedralLattice<double>&, const float*);
+
+template <class Real>
+void tetrahedralSplitCpu(const Real* cubes, TetrahedralLattice<Real>& lattice) {
+  const glm::ivec3 res = lattice.resolution;
+  const int n = lattice.coefficients, cubeCells = shared::cellCount(res);
+  std::fill(lattice.sum.begin(), lattice.sum.end(), Real(0));
+  forEachCell(res, [&](int code, const glm::ivec3& cube) {
+    const glm::ivec3 upper = cube + shared::tetUnitOffset(shared::tetAxis(code));
+    const int lowerIndex = shared::cellIndex(cube, res), upperIndex = shared::cellIndex(upper, res);
+    const Real lowerWeight = Real(shared::tetSplitWeight(cube, res));
+    const Real upperWeight = Real(shared::tetSplitWeight(upper, res));
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < n; ++k)
+        lattice.current[lattice.at(channel, k, code, cube)] =
+            lowerWeight * cubes[shared::coefficientIndex(channel, k, n, lowerIndex, cubeCells)] +
+            upperWeight * cubes[shared::coefficientIndex(channel, k, n, upperIndex, cubeCells)];
+  });
+}
+
+template void tetrahedralSplitCpu<float>(const float*, TetrahedralLattice<float>&);
+template void tetrahedralSplitCpu<double>(const double*, TetrahedralLattice<double>&);
+
+template <class Real>
+void tetrahedralMergeCpu(const TetrahedralLattice<Real>& lattice, Real* current,
+                         Real* accumulated) {
+  const glm::ivec3 res = lattice.resolution;
+  const int n = lattice.coefficients, cubeCells = shared::cellCount(res);
+  const Real merge = Real(shared::TET_MERGE_WEIGHT);
+  const Real step = Real(shared::TET_STEP_LENGTH * shared::TET_MERGE_WEIGHT);
+  tbb::parallel_for(tbb::blocked_range<int>(0, res.z), [&](const tbb::blocked_range<int>& r) {
+    for (int z = r.begin(); z < r.end(); ++z)
+      for (int y = 0; y < res.y; ++y)
+        for (int x = 0; x < res.x; ++x) {
+          const glm::ivec3 cube(x, y, z);
+          const int index = shared::cellIndex(cube, res);
+          for (int channel = 0; channel < 3; ++channel)
+            for (int k = 0; k < n; ++k) {
+              Real last = 0, sum = 0;
+              // The cube's 24 cells: the 12 it is the lower cube of and the 12 it is the upper.
+              for (int code = 0; code < kCodes; ++code)
+                for (int side = 0; side < 2; ++side) {
+                  const glm::ivec3 lower =
+                      cube - side * shared::tetUnitOffset(shared::tetAxis(code));
+                  if (!shared::tetInside(glm::ivec4(lower, code), res)) continue;
+                  const std::size_t at = lattice.at(channel, k, code, lower);
+                  last += lattice.current[at];
+                  sum += lattice.sum[at];
+                }
+              const std::size_t i =
+                  std::size_t(shared::coefficientIndex(channel, k, n, index, cubeCells));
+              current[i] = merge * last;
+              accumulated[i] += step * sum;
+            }
+        }
+  });
+}
+
+template void tetrahedralMergeCpu<float>(const TetrahedralLattice<float>&, float*, float*);
+template void tetrahedralMergeCpu<double>(const TetrahedralLattice<double>&, double*, double*);
+
+namespace {
+
+template <class Real, int Bytes>
+struct RegisterOf {
+  typedef Real type __attribute__((vector_size(Bytes)));
+  static constexpr int kLanes = Bytes / int(sizeof(Real));
+};
+
+// One register of cells of one code along a row, one channel: from the four neighbour rows
+// (from[j], coefficient i at from[j][i * stride + p]) through the three far faces each, the
+// fluxes summed per face k, then the four lobes added into out[i * width + p].
+template <int N, int Bytes, bool Occluded, class Real>
+[[gnu::always_inline]] inline void stepRegister(const TetrahedralTable<Real>& table, int code,
+                                                const Real* const (&from)[kFaces],
+                                                std::size_t stride, int p, const Real* t,
+                                                std::size_t tStride, int width, Real* out) {
+  using V = typename RegisterOf<Real, Bytes>::type;
+  V flux[kFaces] = {};
+#pragma GCC unroll 4
+  for (int j = 0; j < kFaces; ++j) {
+    V s[N];
+#pragma GCC unroll 16
+    for (int i = 0; i < N; ++i) std::memcpy(&s[i], from[j] + i * stride + p, sizeof(V));
+#pragma GCC unroll 4
+    for (int k = 0; k < kFaces; ++k) {
+      if (k == j) continue;
+      const Real* w = table.weight[code][j][k];
+      if constexpr (Occluded) {
+        V integral = {};
+#pragma GCC unroll 16
+        for (int i = 0; i < N; ++i) integral += s[i] * w[i];
+        const V zero = {};
+        V transmittance;
+        std::memcpy(&transmittance, t + tetrahedralFaceSlot(j, k) * tStride + p, sizeof(V));
+        flux[k] += transmittance * (integral > zero ? integral : zero);
+      } else {
+        V total = flux[k];
+#pragma GCC unroll 16
+        for (int i = 0; i < N; ++i) total += s[i] * w[i];
+        flux[k] = total > flux[k] ? total : flux[k];  // flux + max(0, integral)
+      }
+    }
+  }
+#pragma GCC unroll 16
+  for (int i = 0; i < N; ++i) {
+    V value = {};
+#pragma GCC unroll 4
+    for (int k = 0; k < kFaces; ++k) value += flux[k] * table.lobe[code][k][i];
+    std::memcpy(out + i * width + p, &value, sizeof(V));
+  }
+}
+
+// The rows of tasks [begin, end) (task = code * rows + row, row = y + res.y z), every channel.
+template <int N, int Bytes, class Real>
+void stepRows(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
+              const TetrahedralOcclusion<Real>* occlusion, int begin, int end) {
+  const glm::ivec3 res = lattice.resolution;
+  const int rows = res.y * res.z, width = lattice.width;
+  const std::size_t stride = std::size_t(kCodes) * lattice.plane;  // one coefficient to the next
+  std::vector<Real> out(static_cast<std::size_t>(N) * width);
+  for (int task = begin; task < end; ++task) {
+    const int code = task / rows, row = task % rows, y = row % res.y, z = row / res.y;
+    const glm::ivec3 upper = glm::ivec3(0, y, z) + shared::tetUnitOffset(shared::tetAxis(code));
+    if (upper.y >= res.y || upper.z >= res.z) continue;  // no cell of this code in the row
+    // Cells x in [0, count) exist (a cell of axis x needs the cube at x + 1).
+    const int count = res.x - (shared::tetAxis(code) == 0 ? 1 : 0);
+    if (count <= 0) continue;
+    const std::size_t rowStart = lattice.at(0, 0, code, glm::ivec3(-1, y, z)) - kGuard -
+                                 std::size_t(code) * lattice.plane;  // within a plane
+    for (int channel = 0; channel < 3; ++channel) {
+      const Real* from[kFaces];
+      for (int j = 0; j < kFaces; ++j) {
+        const glm::ivec3 o = table.neighbourOffset[code][j];
+        // The neighbour row, shifted by its x offset: register p of the target row reads the
+        // neighbours of the same cells (border cells are zeros; the guard keeps the reads in).
+        from[j] = lattice.current.data() + (lattice.at(channel, 0, table.neighbourCode[code][j],
+                                                       glm::ivec3(-1, y + o.y, z + o.z)) +
+                                            o.x);
+      }
+      const Real* t = occlusion ? occlusion->transmittance.data() + kGuard +
+                                      std::size_t(code) * 12 * lattice.plane + rowStart
+                                : nullptr;
+      for (int p = 0; p < width; p += RegisterOf<Real, Bytes>::kLanes) {
+        if (occlusion)
+          stepRegister<N, Bytes, true>(table, code, from, stride, p, t, lattice.plane, width,
+                                       out.data());
+        else
+          stepRegister<N, Bytes, false>(table, code, from, stride, p, t, lattice.plane, width,
+                                        out.data());
+      }
+      for (int i = 0; i < N; ++i) {
+        const std::size_t at = lattice.at(channel, i, code, glm::ivec3(0, y, z));
+        const Real* value = out.data() + std::size_t(i) * width + 1;  // padded x = cell x + 1
+        Real* target = lattice.next.data() + at;
+        Real* sum = lattice.sum.data() + at;
+        for (int x = 0; x < count; ++x) {
+          target[x] = value[x];
+          sum[x] += value[x];
+        }
+      }
+    }
+  }
+}
+
+template <int N, class Real>
+void stepRowsAtLevel(CpuKernelLevel level, const TetrahedralTable<Real>& table,
+                     TetrahedralLattice<Real>& lattice, const TetrahedralOcclusion<Real>* occlusion,
+                     int begin, int end) {
+  switch (level) {
+    case CpuKernelLevel::X86_64_V4:
+      return runAtLevel(level, [&] { stepRows<N, 64>(table, lattice, occlusion, begin, end); });
+    case CpuKernelLevel::X86_64_V3:
+      return runAtLevel(level, [&] { stepRows<N, 32>(table, lattice, occlusion, begin, end); });
+    case CpuKernelLevel::X86_64:
+      return runAtLevel(level, [&] { stepRows<N, 16>(table, lattice, occlusion, begin, end); });
+  }
+}
+
+}  // namespace
+
+template <class Real>
+void tetrahedralStepCpu(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
+                        const TetrahedralOcclusion<Real>* occlusion, CpuKernelLevel level,
+                        int threads) {
+  if (table.coefficients != lattice.coefficients)
+    throw Error("tetrahedral propagation (CPU): the table's SH order is not the lattice's");
+  if (occlusion && occlusion->resolution != lattice.resolution)
+    throw Error(
+        "tetrahedral propagation (CPU): the geometry volume's faces were made for another grid");
+  const glm::ivec3 res = lattice.resolution;
+  const int tasks = kCodes * res.y * res.z;
+  const auto work = [&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, tasks), [&](const tbb::blocked_range<int>& r) {
+      if (table.coefficients == 4)
+        stepRowsAtLevel<4>(level, table, lattice, occlusion, r.begin(), r.end());
+      else if (table.coefficients == 9)
+        stepRowsAtLevel<9>(level, table, lattice, occlusion, r.begin(), r.end());
+      else
+        stepRowsAtLevel<16>(level, table, lattice, occlusion, r.begin(), r.end());
+    });
+  };
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute(work);
+  } else {
+    work();
+  }
+  lattice.current.swap(lattice.next);
+}
+
+template void tetrahedralStepCpu<float>(const TetrahedralTable<float>&, TetrahedralLattice<float>&,
+                                        const TetrahedralOcclusion<float>*, CpuKernelLevel, int);
+template void tetrahedralStepCpu<double>(const TetrahedralTable<double>&,
+                                         TetrahedralLattice<double>&,
+                                         const TetrahedralOcclusion<double>*, CpuKernelLevel, int);
+
+}  // namespace lpvlab
