@@ -27,7 +27,7 @@ public:
   // (`glKernel` false) or by the GL kernel whatever the backend (true).
   WorkCount work(double pixels, int lights, bool glKernel = false) const;
 
- private:
+private:
   void renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                    HostReadback& host);
 

@@ -2,12 +2,12 @@
 //   build/tests/bench_cpu_kernels [--benchmark_filter=...]
 // Standard gathering at SH orders 1-3, grids 32^3 and 64^3, on every CPU instruction set this
 // machine has, all cores, iterations paired as the strategy runs them (the accumulated grid
-// updated every other iteration, StandardAccumulation). Reported per configuration: the median of 5 repetitions (after one
-// untimed warm-up iteration) of cell-iterations/s and of multiply-adds/s, counting the kernel's
-// own arithmetic (standardGatherMultiplyAdds per channel: the skipped zeros not counted).
-// Standard propagation at order 1 by gathering and scattering, without a GV, with a GV and with
-// its bounces (standard_variants/auto: a GV of four walls, as a box's, the kind of scene LPV
-// blocks in), and the per-frame cost of finding what that GV does to every face
+// updated every other iteration, StepAccumulation). Reported per configuration: the median of 5
+// repetitions (after one untimed warm-up iteration) of cell-iterations/s and of multiply-adds/s,
+// counting the kernel's own arithmetic (standardGatherMultiplyAdds per channel: the skipped zeros
+// not counted). Standard propagation at order 1 by gathering and scattering, without a GV, with a
+// GV and with its bounces (standard_variants/auto: a GV of four walls, as a box's, the kind of
+// scene LPV blocks in), and the per-frame cost of finding what that GV does to every face
 // (standard_occlusion_setup: makeStandardOcclusion, once per frame).
 // And the machine's multiply-add peak per instruction set (fma_peak/...), all cores running
 // independent chains of vector multiply-adds, so a kernel's figure can be read as a fraction of
@@ -40,7 +40,7 @@ void standardGather(benchmark::State& state, const std::string& isa) {
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
   for (float& v : current) v = value(random);
   standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa);  // warm-up
-  // Iterations paired as the strategy runs them (StandardAccumulation).
+  // Iterations paired as the strategy runs them (StepAccumulation).
   int iteration = 0;
   for (auto _ : state) {
     standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa, 0,
@@ -96,7 +96,7 @@ void standardVariants(benchmark::State& state) {
   const StandardOcclusion<float>* used = occlusion > 0 ? &faces : nullptr;
   standardIterationCpu(scatter, table, res, current.data(), next.data(), accumulated.data(), "auto",
                        0, used,
-                       StandardAccumulation::Target);  // warm-up
+                       StepAccumulation::Target);  // warm-up
   int iteration = 0;
   for (auto _ : state) {
     standardIterationCpu(scatter, table, res, current.data(), next.data(), accumulated.data(),

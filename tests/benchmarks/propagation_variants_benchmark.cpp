@@ -60,7 +60,7 @@ void directedGather(benchmark::State& state) {
                      accumulated(floats);
   const StandardOcclusion<float>* used = state.range(2) ? &occlusion : nullptr;
   standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,
-                    StandardAccumulation::Target, &reprojected, 0);  // warm-up
+                    StepAccumulation::Target, &reprojected, 0);  // warm-up
   int iteration = 0;
   for (auto _ : state) {
     standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), "auto", 0, used,

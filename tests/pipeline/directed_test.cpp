@@ -146,7 +146,7 @@ void twoIterationsMatchTheCpp(int order, ComputeBackend backend, bool withGv) {
 class DirectedOrder : public ::testing::TestWithParam<int> {};
 // The kernels' tests: per SH order and backend.
 class DirectedKernel : public ::testing::TestWithParam<std::tuple<int, ComputeBackend>> {
- protected:
+protected:
   int order() const { return std::get<0>(GetParam()); }
   ComputeBackend backend() const { return std::get<1>(GetParam()); }
 };

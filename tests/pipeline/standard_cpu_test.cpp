@@ -111,7 +111,7 @@ TEST(StandardCpu, ScatterMatchesTheGlslScatterKernelAndTheGather) {
   }
 }
 
-// Pairing iterations (the accumulated grid updated every other one, StandardAccumulation) gives
+// Pairing iterations (the accumulated grid updated every other one, StepAccumulation) gives
 // the sum of adding every iteration, for an even and an odd count, gathering and scattering.
 TEST(StandardCpu, PairedIterationsAccumulateTheSameSum) {
   const glm::ivec3 res(11, 7, 9);
@@ -127,7 +127,7 @@ TEST(StandardCpu, PairedIterationsAccumulateTheSameSum) {
         for (int i = 0; i < iterations; ++i) {
           standardIterationCpu(
               scatter, table, res, current.data(), next.data(), accumulated.data(), "auto", 0,
-              nullptr, paired ? pairedAccumulation(i, iterations) : StandardAccumulation::Target);
+              nullptr, paired ? pairedAccumulation(i, iterations) : StepAccumulation::Target);
           std::swap(current, next);
         }
         sums[paired] = accumulated;

@@ -47,7 +47,7 @@ Propagated cpuPropagate(const Grid& current, const Grid& accumulated, const glm:
   const int firstOccluded = shared::tetFirstOccludedStep(1);
   for (int i = 0; i < steps; ++i)
     tetrahedralStepCpu(table, lattice, gv && i >= firstOccluded ? &occlusion : nullptr, level,
-                       threads);
+                       pairedAccumulation(i, steps), threads);
   tetrahedralMergeCpu(lattice, cubes.data(), sum.data());
   return {std::vector<double>(cubes.begin(), cubes.end()),
           std::vector<double>(sum.begin(), sum.end())};

@@ -188,13 +188,13 @@ double maxStepGain(int order, FaceFlux rule) {
 }
 
 class TetrahedralOrder : public ::testing::TestWithParam<std::tuple<int, ComputeBackend>> {
- protected:
+protected:
   int order() const { return std::get<0>(GetParam()); }
   ComputeBackend backend() const { return std::get<1>(GetParam()); }
 };
 // Order and face-flux rule.
 class TetrahedralRule : public ::testing::TestWithParam<std::tuple<int, FaceFlux, ComputeBackend>> {
- protected:
+protected:
   int order() const { return std::get<0>(GetParam()); }
   FaceFlux rule() const { return std::get<1>(GetParam()); }
   ComputeBackend backend() const { return std::get<2>(GetParam()); }

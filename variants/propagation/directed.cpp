@@ -153,21 +153,21 @@ public:
   }
 
 private:
- // The reprojected cells of this level are found again only when its injected normals (or its
- // grid) changed; in a static scene the warm-up frame pays for them.
- void propagateOnCpu(Frame& frame) {
-   const LightGrid& grid = frame.lightGrid;
-   downloadFloats(frame.get(kNormalGrid).normals, std::size_t(4) * grid.geometry.cellCount(),
-                  cpuNormals_);
-   CellsCache& cache = cpuCells_[&grid];
-   if (cache.cells.resolution != grid.geometry.resolution || cache.normals != cpuNormals_) {
-     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
-     cache.cells = makeDirectedCells(cpu_.table(), grid.geometry.resolution, cpuNormals_,
-                                     iterations_, dilation_, angles.farFace, angles.sideFace);
-     cache.normals = cpuNormals_;
-   }
-   cpu_.propagate(frame, {.count = iterations_, .reprojected = &cache.cells});
- }
+  // The reprojected cells of this level are found again only when its injected normals (or its
+  // grid) changed; in a static scene the warm-up frame pays for them.
+  void propagateOnCpu(Frame& frame) {
+    const LightGrid& grid = frame.lightGrid;
+    downloadFloats(frame.get(kNormalGrid).normals, std::size_t(4) * grid.geometry.cellCount(),
+                   cpuNormals_);
+    CellsCache& cache = cpuCells_[&grid];
+    if (cache.cells.resolution != grid.geometry.resolution || cache.normals != cpuNormals_) {
+      const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+      cache.cells = makeDirectedCells(cpu_.table(), grid.geometry.resolution, cpuNormals_,
+                                      iterations_, dilation_, angles.farFace, angles.sideFace);
+      cache.normals = cpuNormals_;
+    }
+    cpu_.propagate(frame, {.count = iterations_, .reprojected = &cache.cells});
+  }
 
   int iterations_;
   bool dilation_;

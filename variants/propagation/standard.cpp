@@ -141,7 +141,7 @@ public:
 
   std::size_t memoryBytes() const override { return scratch_.size() + cpu_.memoryBytes(); }
 
- private:
+private:
   int iterations_;
   bool scatter_;
   bool bounces_;

@@ -13,6 +13,7 @@
 #include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
+#include "variants/propagation/cpu_rows.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/standard_faces.glsl"
@@ -241,16 +242,8 @@ template StandardOcclusion<double> makeStandardOcclusion<double>(const StandardF
 
 namespace {
 
-// Cells along x are computed a register at a time: a GCC vector (vector_size) of `Bytes`, the
-// width of the instruction set's registers (16 SSE, 32 AVX2, 64 AVX-512), so every cell is
-// computed with vector instructions. Rows are staged padded to a multiple of kRowPadding cells,
-// a whole number of registers at every width, so no cell falls to a scalar remainder loop
-// (kRowPadding).
-template <class Real, int Bytes>
-struct RegisterOf {
-  typedef Real type __attribute__((vector_size(Bytes)));
-  static constexpr int kLanes = Bytes / int(sizeof(Real));
-};
+using cpu_rows::copyShortRun;
+using cpu_rows::RegisterOf;
 
 // What the cells of one register of a target row, starting at x, receive, one channel: from each
 // of the six neighbours (their rows, from[d][k * stride[d] + x]), through the five faces of a
@@ -358,21 +351,6 @@ inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclu
     const Real* lobe = o.bounceLobes.data() + i * N;
     for (int k = 0; k < N; ++k) out[std::size_t(k) * width + b.x] += reemitted * lobe[k];
   }
-}
-
-// Copies `count` values (a row of the grid, short) without a call: runs of 8 values as fixed-size
-// copies the compiler inlines, the last run ending at `count` (overlapping the one before, which
-// writes the same values again). A row of 32 cells per coefficient and neighbour direction made
-// std::copy's memmove calls a tenth of the propagation's time.
-template <class Real>
-[[gnu::always_inline]] inline void copyShortRun(const Real* from, Real* to, int count) {
-  constexpr int kRun = 8;
-  if (count < kRun) {
-    for (int i = 0; i < count; ++i) to[i] = from[i];
-    return;
-  }
-  for (int i = 0; i + kRun <= count; i += kRun) std::memcpy(to + i, from + i, kRun * sizeof(Real));
-  std::memcpy(to + count - kRun, from + count - kRun, kRun * sizeof(Real));
 }
 
 // How a row pass writes what it computed: gathering stores it and adds it to the accumulated
@@ -629,7 +607,7 @@ template <class Real>
 void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                   const Real* source, Real* target, Real* accumulated, const std::string& isa,
                   int threads, const StandardOcclusion<Real>* occlusion,
-                  StandardAccumulation accumulation, bool scatter,
+                  StepAccumulation accumulation, bool scatter,
                   const ReprojectedCells<Real>* reprojected, int iteration) {
   if (glm::any(glm::lessThan(resolution, glm::ivec3(1))))
     throw Error("standard propagation (CPU): grid resolution must be at least 1 per axis");
@@ -651,14 +629,14 @@ void propagateCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolu
   };
   auto work = [&] {
     if (!scatter)
-      return pass(-1, accumulation == StandardAccumulation::Target ? RowOutput::StoreAndAccumulate
-                      : accumulation == StandardAccumulation::Deferred
+      return pass(-1, accumulation == StepAccumulation::Target ? RowOutput::StoreAndAccumulate
+                      : accumulation == StepAccumulation::Deferred
                           ? RowOutput::Store
                           : RowOutput::StoreAndAccumulateWithSource);
     for (int direction = 0; direction < 6; ++direction)
       pass(direction, direction == 0 ? RowOutput::Store : RowOutput::Add);
-    if (accumulation == StandardAccumulation::Deferred) return;
-    const bool withSource = accumulation == StandardAccumulation::SourceAndTarget;
+    if (accumulation == StepAccumulation::Deferred) return;
+    const bool withSource = accumulation == StepAccumulation::SourceAndTarget;
     const std::size_t floats = std::size_t(3) * table.coefficients * rowCount * resolution.x;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, floats),
                       [&](const tbb::blocked_range<std::size_t>& r) {
@@ -685,7 +663,7 @@ template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated, const std::string& isa,
                        int threads, const StandardOcclusion<Real>* occlusion,
-                       StandardAccumulation accumulation, const ReprojectedCells<Real>* reprojected,
+                       StepAccumulation accumulation, const ReprojectedCells<Real>* reprojected,
                        int iteration) {
   propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
                accumulation, false, reprojected, iteration);
@@ -696,24 +674,24 @@ void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& 
                         const Real* source, Real* target, Real* accumulated,
                         const std::string& isa, int threads,
                         const StandardOcclusion<Real>* occlusion,
-                        StandardAccumulation accumulation) {
+                        StepAccumulation accumulation) {
   propagateCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
                accumulation, true, static_cast<const ReprojectedCells<Real>*>(nullptr), 0);
 }
 
 template void standardScatterCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                         const float*, float*, float*, const std::string&, int,
-                                        const StandardOcclusion<float>*, StandardAccumulation);
+                                        const StandardOcclusion<float>*, StepAccumulation);
 template void standardScatterCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
                                          const double*, double*, double*, const std::string&, int,
-                                         const StandardOcclusion<double>*, StandardAccumulation);
+                                         const StandardOcclusion<double>*, StepAccumulation);
 template void standardGatherCpu<float>(const StandardFaceTable<float>&, const glm::ivec3&,
                                        const float*, float*, float*, const std::string&, int,
-                                       const StandardOcclusion<float>*, StandardAccumulation,
+                                       const StandardOcclusion<float>*, StepAccumulation,
                                        const ReprojectedCells<float>*, int);
 template void standardGatherCpu<double>(const StandardFaceTable<double>&, const glm::ivec3&,
                                         const double*, double*, double*, const std::string&, int,
-                                        const StandardOcclusion<double>*, StandardAccumulation,
+                                        const StandardOcclusion<double>*, StepAccumulation,
                                         const ReprojectedCells<double>*, int);
 
 }  // namespace lpvlab

@@ -45,11 +45,12 @@
 // Threads: rows are shared out by oneTBB. Each target cell is written by exactly one task, in a
 // fixed order of additions, so the result does not depend on the thread count (no atomics).
 
+#include <glm/glm.hpp>
 #include <string>
 #include <type_traits>
 #include <vector>
 
-#include <glm/glm.hpp>
+#include "variants/propagation/step_accumulation.h"
 
 namespace lpvlab {
 
@@ -143,32 +144,19 @@ const std::vector<std::string>& cpuKernelInstructionSets();
 // Those this CPU can run.
 std::vector<std::string> supportedCpuKernelInstructionSets();
 
-// What an iteration adds to the accumulated grid: its result (Target); nothing, leaving it to the
-// next iteration (Deferred); or the previous iteration's deferred result, which is this one's
-// source, and its own (SourceAndTarget). Pairing iterations (Deferred, SourceAndTarget, ...,
-// Target for an odd last one) reads and writes the accumulated grid every other iteration, the
-// largest stream of the kernel's memory traffic, with the same sum up to float rounding.
-enum class StandardAccumulation { Target, Deferred, SourceAndTarget };
-
-// How iteration `iteration` of `iterations` accumulates when iterations are paired.
-inline StandardAccumulation pairedAccumulation(int iteration, int iterations) {
-  if (iteration % 2 == 1) return StandardAccumulation::SourceAndTarget;
-  return iteration + 1 == iterations ? StandardAccumulation::Target : StandardAccumulation::Deferred;
-}
-
 // One gathering iteration: target = what every cell receives from its six neighbours' `source`,
 // accumulated += target. Grids in grid.glsl's layout (3 channels x coefficients x cells).
 // `occlusion`: the GV's faces, made for this table and resolution, or null (no GV, or an
-// iteration before the GV's first occluded one). `accumulation`: see StandardAccumulation.
-// `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for an unknown one or one
-// this CPU lacks. `threads`: 0 for oneTBB's default (all cores). `reprojected`: the cells that
-// reproject their light in this iteration (`iteration`), or null.
+// iteration before the GV's first occluded one). `accumulation`: see StepAccumulation
+// (step_accumulation.h). `isa`: "auto" or one of cpuKernelInstructionSets(); throws an Error for
+// an unknown one or one this CPU lacks. `threads`: 0 for oneTBB's default (all cores).
+// `reprojected`: the cells that reproject their light in this iteration (`iteration`), or null.
 template <class Real>
 void standardGatherCpu(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                        const Real* source, Real* target, Real* accumulated,
                        const std::string& isa = "auto", int threads = 0,
                        const StandardOcclusion<Real>* occlusion = nullptr,
-                       StandardAccumulation accumulation = StandardAccumulation::Target,
+                       StepAccumulation accumulation = StepAccumulation::Target,
                        const ReprojectedCells<Real>* reprojected = nullptr, int iteration = 0);
 
 // The same iteration by scattering (see above): the same result, scattering's work.
@@ -177,7 +165,7 @@ void standardScatterCpu(const StandardFaceTable<Real>& table, const glm::ivec3& 
                         const Real* source, Real* target, Real* accumulated,
                         const std::string& isa = "auto", int threads = 0,
                         const StandardOcclusion<Real>* occlusion = nullptr,
-                        StandardAccumulation accumulation = StandardAccumulation::Target);
+                        StepAccumulation accumulation = StepAccumulation::Target);
 
 // One iteration by scattering or gathering, as `scatter` says.
 template <class Real>
@@ -185,7 +173,7 @@ void standardIterationCpu(bool scatter, const StandardFaceTable<Real>& table,
                           const glm::ivec3& resolution, const Real* source, Real* target,
                           Real* accumulated, const std::string& isa = "auto", int threads = 0,
                           std::type_identity_t<const StandardOcclusion<Real>*> occlusion = nullptr,
-                          StandardAccumulation accumulation = StandardAccumulation::Target) {
+                          StepAccumulation accumulation = StepAccumulation::Target) {
   if (scatter)
     standardScatterCpu(table, resolution, source, target, accumulated, isa, threads, occlusion,
                        accumulation);

@@ -46,7 +46,7 @@ void StandardCpuFrame::propagate(Frame& frame, const Iterations& iterations) {
   for (int i = 0; i < iterations.count; ++i) {
     const StandardOcclusion<float>* faces =
         gv && i >= gv->firstOccludedIteration ? occlusion : nullptr;
-    const StandardAccumulation accumulation = pairedAccumulation(i, iterations.count);
+    const StepAccumulation accumulation = pairedAccumulation(i, iterations.count);
     if (iterations.reprojected)
       standardGatherCpu<float>(table_, grid.geometry.resolution, current.data(), next_.data(),
                                accumulated.data(), "auto", 0, faces, accumulation,

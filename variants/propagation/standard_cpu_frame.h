@@ -17,7 +17,7 @@ struct Frame;
 struct GeometryVolume;
 
 class StandardCpuFrame {
- public:
+public:
   StandardCpuFrame() = default;
   // The transfer's face solid angles (already scaled by any damping; an Error for a bad one) and
   // the light grid's floats (LightGrid::floatsPerGrid).
@@ -40,7 +40,7 @@ class StandardCpuFrame {
   const StandardFaceTable<float>& table() const { return table_; }
   std::size_t memoryBytes() const;
 
- private:
+private:
   // What a level's GV does to the faces, and the GV and albedo it was found from.
   struct OcclusionCache {
     StandardOcclusion<float> faces;

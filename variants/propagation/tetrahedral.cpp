@@ -186,37 +186,38 @@ public:
   }
 
 private:
- // Per cascade level: its lattice, and what its GV does to the faces with the GV it was found from.
- struct CpuLevel {
-   TetrahedralLattice<float> lattice;
-   TetrahedralOcclusion<float> occlusion;
-   std::vector<float> gv;
- };
+  // Per cascade level: its lattice, and what its GV does to the faces with the GV it was found from.
+  struct CpuLevel {
+    TetrahedralLattice<float> lattice;
+    TetrahedralOcclusion<float> occlusion;
+    std::vector<float> gv;
+  };
 
- void propagateOnCpu(Frame& frame) {
-   LightGrid& grid = frame.lightGrid;
-   const glm::ivec3 res = grid.geometry.resolution;
-   CpuLevel& level = cpuLevels_[&grid];
-   if (level.lattice.resolution != res)
-     level.lattice = TetrahedralLattice<float>(res, cpuTable_.coefficients);
-   const GeometryVolume* gv = frame.find(kGeometryVolume);
-   if (gv) {
-     downloadFloats(gv->blocking,
-                    std::size_t(gv->geometry.cellCount()) * GeometryVolume::kCoefficients, cpuGv_);
-     if (level.occlusion.resolution != res || cpuGv_ != level.gv) {
-       level.occlusion = makeTetrahedralOcclusion(level.lattice, cpuGv_.data());
-       level.gv = cpuGv_;
-     }
-   }
-   std::vector<float>& current = grid.current.host();
-   tetrahedralSplitCpu(current.data(), level.lattice);
-   const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
-   const CpuKernelLevel instructions = widestCpuKernelLevel();
-   for (int i = 0; i < iterations_; ++i)
-     tetrahedralStepCpu(cpuTable_, level.lattice,
-                        gv && i >= firstOccluded ? &level.occlusion : nullptr, instructions);
-   tetrahedralMergeCpu(level.lattice, current.data(), grid.accumulated.host().data());
- }
+  void propagateOnCpu(Frame& frame) {
+    LightGrid& grid = frame.lightGrid;
+    const glm::ivec3 res = grid.geometry.resolution;
+    CpuLevel& level = cpuLevels_[&grid];
+    if (level.lattice.resolution != res)
+      level.lattice = TetrahedralLattice<float>(res, cpuTable_.coefficients);
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
+    if (gv) {
+      downloadFloats(gv->blocking,
+                     std::size_t(gv->geometry.cellCount()) * GeometryVolume::kCoefficients, cpuGv_);
+      if (level.occlusion.resolution != res || cpuGv_ != level.gv) {
+        level.occlusion = makeTetrahedralOcclusion(level.lattice, cpuGv_.data());
+        level.gv = cpuGv_;
+      }
+    }
+    std::vector<float>& current = grid.current.host();
+    tetrahedralSplitCpu(current.data(), level.lattice);
+    const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
+    const CpuKernelLevel instructions = widestCpuKernelLevel();
+    for (int i = 0; i < iterations_; ++i)
+      tetrahedralStepCpu(cpuTable_, level.lattice,
+                         gv && i >= firstOccluded ? &level.occlusion : nullptr, instructions,
+                         pairedAccumulation(i, iterations_));
+    tetrahedralMergeCpu(level.lattice, current.data(), grid.accumulated.host().data());
+  }
 
   int iterations_;
   bool faceIntegrals_;

@@ -12,6 +12,7 @@
 #include "framework/math/shared.h"
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
+#include "variants/propagation/cpu_rows.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"
@@ -29,10 +30,6 @@ namespace {
 
 constexpr int kCodes = 12, kFaces = 4;
 constexpr int kRowPadding = 16;  // rows are a whole number of registers at every width
-// Values before the first and after the last plane, so that the neighbour reads a cell to the
-// left of the first row or right of the last (border cells: their results are dropped) stay
-// inside the buffer.
-constexpr std::size_t kGuard = 16;
 
 }  // namespace
 
@@ -75,9 +72,9 @@ template TetrahedralTable<double> makeTetrahedralTable<double>(int, bool);
 template <class Real>
 TetrahedralLattice<Real>::TetrahedralLattice(const glm::ivec3& res, int n)
     : resolution(res), coefficients(n) {
-  width = (res.x + 2 + kRowPadding - 1) / kRowPadding * kRowPadding;
+  width = (res.x + kRowPadding - 1) / kRowPadding * kRowPadding;
   plane = std::size_t(width) * (res.y + 2) * (res.z + 2);
-  const std::size_t values = 3 * std::size_t(n) * kCodes * plane + 2 * kGuard;
+  const std::size_t values = 3 * std::size_t(n) * kCodes * plane;
   current.assign(values, Real(0));
   next.assign(values, Real(0));
   sum.assign(values, Real(0));
@@ -85,8 +82,8 @@ TetrahedralLattice<Real>::TetrahedralLattice(const glm::ivec3& res, int n)
 
 template <class Real>
 std::size_t TetrahedralLattice<Real>::at(int channel, int i, int code, const glm::ivec3& c) const {
-  return kGuard + (std::size_t(channel * coefficients + i) * kCodes + code) * plane +
-         (std::size_t(c.z + 1) * (resolution.y + 2) + (c.y + 1)) * width + (c.x + 1);
+  return (std::size_t(channel * coefficients + i) * kCodes + code) * plane +
+         (std::size_t(c.z + 1) * (resolution.y + 2) + (c.y + 1)) * width + c.x;
 }
 
 template struct TetrahedralLattice<float>;
@@ -112,7 +109,7 @@ TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Rea
   TetrahedralOcclusion<Real> o;
   const glm::ivec3 res = lattice.resolution;
   o.resolution = res;
-  o.transmittance.assign(std::size_t(kCodes) * 12 * lattice.plane + 2 * kGuard, Real(1));
+  o.transmittance.assign(std::size_t(kCodes) * 12 * lattice.plane, Real(1));
   const shared::TetGvLookup blocking{gvBlocking};
   // A lattice cell lies within its two cubes' centres' span along its axis and within its cube
   // across it, so every crossing on its faces interpolates GV cells within [cube, cube + 2]: where
@@ -147,15 +144,14 @@ TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Rea
               !blocks[std::size_t(shared::cellIndex(glm::ivec3(x, y, z), res))])
             continue;
           // The cell's index in a plane (at() without the channel, coefficient and code).
-          const std::size_t cell = lattice.at(0, 0, 0, glm::ivec3(x, y, z)) - kGuard;
+          const std::size_t cell = lattice.at(0, 0, 0, glm::ivec3(x, y, z));
           for (int j = 0; j < kFaces; ++j)
             for (int k = 0; k < kFaces; ++k) {
               if (k == j) continue;
               const double t = shared::gvTransmittance(
                   lookup.gvBlockingAt(shared::tetFarFaceCrossing(tet, j, k), res + 1),
                   shared::tetFarFaceDirection(code, j, k));
-              o.transmittance[kGuard +
-                              std::size_t(code * 12 + tetrahedralFaceSlot(j, k)) * lattice.plane +
+              o.transmittance[std::size_t(code * 12 + tetrahedralFaceSlot(j, k)) * lattice.plane +
                               cell] = Real(t);
             }
         }
@@ -230,27 +226,25 @@ template void tetrahedralMergeCpu<double>(const TetrahedralLattice<double>&, dou
 
 namespace {
 
-template <class Real, int Bytes>
-struct RegisterOf {
-  typedef Real type __attribute__((vector_size(Bytes)));
-  static constexpr int kLanes = Bytes / int(sizeof(Real));
-};
+using cpu_rows::copyShortRun;
+using cpu_rows::RegisterOf;
 
 // One register of cells of one code along a row, one channel: from the four neighbour rows
-// (from[j], coefficient i at from[j][i * stride + p]) through the three far faces each, the
+// (from[j], coefficient i at from[j][i * stride[j] + p]) through the three far faces each, the
 // fluxes summed per face k, then the four lobes added into out[i * width + p].
 template <int N, int Bytes, bool Occluded, class Real>
 [[gnu::always_inline]] inline void stepRegister(const TetrahedralTable<Real>& table, int code,
                                                 const Real* const (&from)[kFaces],
-                                                std::size_t stride, int p, const Real* t,
-                                                std::size_t tStride, int width, Real* out) {
+                                                const std::size_t (&stride)[kFaces], int p,
+                                                const Real* t, std::size_t tStride, int width,
+                                                Real* out) {
   using V = typename RegisterOf<Real, Bytes>::type;
   V flux[kFaces] = {};
 #pragma GCC unroll 4
   for (int j = 0; j < kFaces; ++j) {
     V s[N];
 #pragma GCC unroll 16
-    for (int i = 0; i < N; ++i) std::memcpy(&s[i], from[j] + i * stride + p, sizeof(V));
+    for (int i = 0; i < N; ++i) std::memcpy(&s[i], from[j] + i * stride[j] + p, sizeof(V));
 #pragma GCC unroll 4
     for (int k = 0; k < kFaces; ++k) {
       if (k == j) continue;
@@ -280,26 +274,45 @@ template <int N, int Bytes, bool Occluded, class Real>
   }
 }
 
-// target = value and sum += value over a row's cells: three distinct buffers, a loop the compiler
-// must be told to vectorise (at -O2 it would not, and the scalar loop was a third of the step).
+// A row's `count` values written as `accumulation` says: target = value, and the sum gets the
+// value (Target), nothing (Deferred) or the value and the previous step's deferred one, this
+// step's source at the same cell (SourceAndTarget). Distinct buffers, in loops the compiler must
+// be told to vectorise (at -O2 it would not, and the scalar loop was a third of the step).
 template <class Real>
-[[gnu::always_inline]] inline void storeAndAdd(const Real* __restrict value, Real* __restrict target,
-                                               Real* __restrict sum, int count) {
+[[gnu::always_inline]] inline void storeRow(const Real* __restrict value, Real* __restrict target,
+                                            Real* __restrict sum, const Real* __restrict previous,
+                                            int count, StepAccumulation accumulation) {
+  if (accumulation == StepAccumulation::Deferred) {
 #pragma omp simd
-  for (int x = 0; x < count; ++x) {
-    target[x] = value[x];
-    sum[x] += value[x];
+    for (int x = 0; x < count; ++x) target[x] = value[x];
+  } else if (accumulation == StepAccumulation::Target) {
+#pragma omp simd
+    for (int x = 0; x < count; ++x) {
+      target[x] = value[x];
+      sum[x] += value[x];
+    }
+  } else {
+#pragma omp simd
+    for (int x = 0; x < count; ++x) {
+      target[x] = value[x];
+      sum[x] += value[x] + previous[x];
+    }
   }
 }
 
 // The rows of tasks [begin, end) (task = code * rows + row, row = y + res.y z), every channel.
+// A neighbour row at the same x (offset 0) is read where it lies (its cells past the row's end
+// are zeros); one a cube along x is staged, shifted, with a zero where the shift leaves the grid.
+// Neighbour rows outside the grid along y or z are the layout's zero border rows.
 template <int N, int Bytes, class Real>
 void stepRows(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
-              const TetrahedralOcclusion<Real>* occlusion, int begin, int end) {
+              const TetrahedralOcclusion<Real>* occlusion, StepAccumulation accumulation, int begin,
+              int end) {
   const glm::ivec3 res = lattice.resolution;
   const int rows = res.y * res.z, width = lattice.width;
-  const std::size_t stride = std::size_t(kCodes) * lattice.plane;  // one coefficient to the next
+  const std::size_t coefficientStride = std::size_t(kCodes) * lattice.plane;
   std::vector<Real> out(static_cast<std::size_t>(N) * width);
+  std::vector<Real> stage(static_cast<std::size_t>(kFaces) * N * width, Real(0));
   for (int task = begin; task < end; ++task) {
     const int code = task / rows, row = task % rows, y = row % res.y, z = row / res.y;
     const glm::ivec3 upper = glm::ivec3(0, y, z) + shared::tetUnitOffset(shared::tetAxis(code));
@@ -307,19 +320,34 @@ void stepRows(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lat
     // Cells x in [0, count) exist (a cell of axis x needs the cube at x + 1).
     const int count = res.x - (shared::tetAxis(code) == 0 ? 1 : 0);
     if (count <= 0) continue;
-    const std::size_t rowStart = lattice.at(0, 0, code, glm::ivec3(-1, y, z)) - kGuard -
+    const std::size_t rowStart = lattice.at(0, 0, code, glm::ivec3(0, y, z)) -
                                  std::size_t(code) * lattice.plane;  // within a plane
     for (int channel = 0; channel < 3; ++channel) {
       const Real* from[kFaces];
+      std::size_t stride[kFaces];
       for (int j = 0; j < kFaces; ++j) {
         const glm::ivec3 o = table.neighbourOffset[code][j];
-        // The neighbour row, shifted by its x offset: register p of the target row reads the
-        // neighbours of the same cells (border cells are zeros; the guard keeps the reads in).
-        from[j] = lattice.current.data() + (lattice.at(channel, 0, table.neighbourCode[code][j],
-                                                       glm::ivec3(-1, y + o.y, z + o.z)) +
-                                            o.x);
+        const Real* neighbourRow =
+            lattice.current.data() +
+            lattice.at(channel, 0, table.neighbourCode[code][j], glm::ivec3(0, y + o.y, z + o.z));
+        if (o.x == 0) {
+          from[j] = neighbourRow;
+          stride[j] = coefficientStride;
+          continue;
+        }
+        // Staged cell x is the neighbour row's x + o.x where that lies in the row, else zero.
+        Real* staged = stage.data() + std::size_t(j) * N * width;
+        const int first = std::max(0, -o.x), last = std::min(res.x, res.x - o.x);  // [first, last)
+        for (int i = 0; i < N; ++i) {
+          Real* to = staged + std::size_t(i) * width;
+          const Real* in = neighbourRow + i * coefficientStride + o.x;
+          to[0] = to[res.x - 1] = Real(0);  // the cell the shift leaves empty (else overwritten)
+          copyShortRun(in + first, to + first, last - first);
+        }
+        from[j] = staged;
+        stride[j] = std::size_t(width);
       }
-      const Real* t = occlusion ? occlusion->transmittance.data() + kGuard +
+      const Real* t = occlusion ? occlusion->transmittance.data() +
                                       std::size_t(code) * 12 * lattice.plane + rowStart
                                 : nullptr;
       for (int p = 0; p < width; p += RegisterOf<Real, Bytes>::kLanes) {
@@ -332,8 +360,8 @@ void stepRows(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lat
       }
       for (int i = 0; i < N; ++i) {
         const std::size_t at = lattice.at(channel, i, code, glm::ivec3(0, y, z));
-        storeAndAdd(out.data() + std::size_t(i) * width + 1,  // padded x = cell x + 1
-                    lattice.next.data() + at, lattice.sum.data() + at, count);
+        storeRow(out.data() + std::size_t(i) * width, lattice.next.data() + at,
+                 lattice.sum.data() + at, lattice.current.data() + at, count, accumulation);
       }
     }
   }
@@ -342,14 +370,17 @@ void stepRows(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lat
 template <int N, class Real>
 void stepRowsAtLevel(CpuKernelLevel level, const TetrahedralTable<Real>& table,
                      TetrahedralLattice<Real>& lattice, const TetrahedralOcclusion<Real>* occlusion,
-                     int begin, int end) {
+                     StepAccumulation accumulation, int begin, int end) {
   switch (level) {
     case CpuKernelLevel::X86_64_V4:
-      return runAtLevel(level, [&] { stepRows<N, 64>(table, lattice, occlusion, begin, end); });
+      return runAtLevel(
+          level, [&] { stepRows<N, 64>(table, lattice, occlusion, accumulation, begin, end); });
     case CpuKernelLevel::X86_64_V3:
-      return runAtLevel(level, [&] { stepRows<N, 32>(table, lattice, occlusion, begin, end); });
+      return runAtLevel(
+          level, [&] { stepRows<N, 32>(table, lattice, occlusion, accumulation, begin, end); });
     case CpuKernelLevel::X86_64:
-      return runAtLevel(level, [&] { stepRows<N, 16>(table, lattice, occlusion, begin, end); });
+      return runAtLevel(
+          level, [&] { stepRows<N, 16>(table, lattice, occlusion, accumulation, begin, end); });
   }
 }
 
@@ -358,7 +389,7 @@ void stepRowsAtLevel(CpuKernelLevel level, const TetrahedralTable<Real>& table,
 template <class Real>
 void tetrahedralStepCpu(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
                         const TetrahedralOcclusion<Real>* occlusion, CpuKernelLevel level,
-                        int threads) {
+                        StepAccumulation accumulation, int threads) {
   if (table.coefficients != lattice.coefficients)
     throw Error("tetrahedral propagation (CPU): the table's SH order is not the lattice's");
   if (occlusion && occlusion->resolution != lattice.resolution)
@@ -369,11 +400,11 @@ void tetrahedralStepCpu(const TetrahedralTable<Real>& table, TetrahedralLattice<
   const auto work = [&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, tasks), [&](const tbb::blocked_range<int>& r) {
       if (table.coefficients == 4)
-        stepRowsAtLevel<4>(level, table, lattice, occlusion, r.begin(), r.end());
+        stepRowsAtLevel<4>(level, table, lattice, occlusion, accumulation, r.begin(), r.end());
       else if (table.coefficients == 9)
-        stepRowsAtLevel<9>(level, table, lattice, occlusion, r.begin(), r.end());
+        stepRowsAtLevel<9>(level, table, lattice, occlusion, accumulation, r.begin(), r.end());
       else
-        stepRowsAtLevel<16>(level, table, lattice, occlusion, r.begin(), r.end());
+        stepRowsAtLevel<16>(level, table, lattice, occlusion, accumulation, r.begin(), r.end());
     });
   };
   if (threads > 0) {
@@ -386,9 +417,11 @@ void tetrahedralStepCpu(const TetrahedralTable<Real>& table, TetrahedralLattice<
 }
 
 template void tetrahedralStepCpu<float>(const TetrahedralTable<float>&, TetrahedralLattice<float>&,
-                                        const TetrahedralOcclusion<float>*, CpuKernelLevel, int);
+                                        const TetrahedralOcclusion<float>*, CpuKernelLevel,
+                                        StepAccumulation, int);
 template void tetrahedralStepCpu<double>(const TetrahedralTable<double>&,
                                          TetrahedralLattice<double>&,
-                                         const TetrahedralOcclusion<double>*, CpuKernelLevel, int);
+                                         const TetrahedralOcclusion<double>*, CpuKernelLevel,
+                                         StepAccumulation, int);
 
 }  // namespace lpvlab

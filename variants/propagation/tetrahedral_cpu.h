@@ -11,13 +11,15 @@
 // have four normals (the cell's own faces), so the fluxes are summed per face first and the four
 // lobes added once.
 //
-// The lattice lives on the CPU in a layout of its own, never seen outside the strategy:
-// per channel and coefficient, per code (the cell's position in its cube,
-// tetrahedral_lattice.glsl), the cubes' values in rows along x padded with a border of zero cells.
-// For a given code, the neighbour across each face is the same code at the same cube offset for
-// every cube, so a row of cells of one code is computed a vector register at a time from four
-// neighbour rows, with no edge tests: a neighbour that does not exist (past the grid) is a zero
-// cell, and sends nothing, as on GL.
+// The lattice lives on the CPU in a layout of its own, never seen outside the strategy: per
+// channel and coefficient, per code (the cell's position in its cube, tetrahedral_lattice.glsl),
+// the cubes' values in rows along x, padded to a multiple of 16 cells, with a border of zero rows
+// along y and z. For a given code, the neighbour across each face is the same code at the same
+// cube offset for every cube, so a row of cells of one code is computed a vector register at a
+// time from four neighbour rows, with no edge tests: a neighbour row one cube along x is staged
+// shifted, with a zero where the shift leaves the grid, and a neighbour that does not exist (past
+// the grid) is a zero cell, which sends nothing, as on GL. Steps are paired as standard
+// propagation's are (step_accumulation.h), so the sum is read and written every other step.
 //
 // The geometry volume does not change during a frame, so the transmittance of every face (12 per
 // cell) is found once per GV (TetrahedralOcclusion), from the shared GLSL in double precision.
@@ -28,6 +30,7 @@
 #include <vector>
 
 #include "framework/core/cpu_dispatch.h"
+#include "variants/propagation/step_accumulation.h"
 
 namespace lpvlab {
 
@@ -86,11 +89,13 @@ template <class Real>
 void tetrahedralSplitCpu(const Real* cubes, TetrahedralLattice<Real>& lattice);
 
 // One gather step (tetrahedral_gather.comp): next := what every cell receives from its four
-// neighbours in current, sum += next, then current and next swap. `occlusion`: null, or the GV's
-// faces for this lattice's grid. `threads`: 0 for oneTBB's default.
+// neighbours in current, added to the sum as `accumulation` says (pairedAccumulation(step,
+// steps) for a frame's steps), then current and next swap. `occlusion`: null, or the GV's faces
+// for this lattice's grid. `threads`: 0 for oneTBB's default.
 template <class Real>
 void tetrahedralStepCpu(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
                         const TetrahedralOcclusion<Real>* occlusion, CpuKernelLevel level,
+                        StepAccumulation accumulation = StepAccumulation::Target,
                         int threads = 0);
 
 // Lattice -> cubic grids (tetrahedral_merge.comp): current := the last step, merged;
