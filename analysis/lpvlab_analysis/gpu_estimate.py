@@ -147,10 +147,19 @@ def thesis_comparison(agg, gpus):
         units_col = f"gpu_work.{table.stage}.{unit}"
         if units_col not in matching.columns:
             continue
-        methods = (matching["param.propagation.method"].astype(str)
-                   if "param.propagation.method" in matching.columns
-                   else pd.Series(["gather"] * len(matching), index=matching.index))
-        for (variant, method), group in matching.groupby([matching["variant"], methods], sort=True):
+        # Propagation: per lpvlab variant and method (the thesis's gather and scatter columns);
+        # injection: per injection strategy (its counts depend on nothing else).
+        if table.stage == "propagation":
+            methods = (matching["param.propagation.method"].astype(str)
+                       if "param.propagation.method" in matching.columns
+                       else pd.Series(["gather"] * len(matching), index=matching.index))
+            keys = [matching["variant"], methods]
+        else:
+            injection = (matching["param.injection.type"].astype(str)
+                         if "param.injection.type" in matching.columns
+                         else pd.Series(["injection"] * len(matching), index=matching.index))
+            keys = [injection, pd.Series([""] * len(matching), index=matching.index)]
+        for (variant, method), group in matching.groupby(keys, sort=True):
             units = _column(group, units_col)
             madds = _column(group, f"gpu_work.{table.stage}.multiply_adds") / units
             nbytes = _column(group, f"gpu_work.{table.stage}.bytes") / units

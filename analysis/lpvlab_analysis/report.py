@@ -152,15 +152,16 @@ def _thesis_estimate_table(rows):
          "<table><thead><tr><th>table</th><th>lpvlab variant</th><th>GPU (thesis column)</th><th>x</th>"
          "<th>thesis ms</th><th>estimate ms</th><th>ratio</th></tr></thead><tbody>"]
     for r in rows:
+        name = html.escape(r["variant"] + (f" ({r['method']})" if r["method"] else ""))
         for i, x in enumerate(r["x"]):
-            h.append(f"<tr><td>{r['table']}</td><td>{html.escape(r['variant'])} ({html.escape(r['method'])})</td>"
+            h.append(f"<tr><td>{r['table']}</td><td>{name}</td>"
                      f"<td>{html.escape(r['gpu'])} ({html.escape(r['thesis_column'])})</td><td class='num'>{x:g}</td>"
                      f"<td class='num'>{tables.fmt(r['thesis_ms'][i])}</td>"
                      f"<td class='num'>{tables.fmt(r['estimate_ms'][i])}</td>"
                      f"<td class='num'>{tables.fmt(r['ratio'][i])}</td></tr>")
         ratio = r["thesis_slope_ms"] / r["estimate_slope_ms"] if r["estimate_slope_ms"] > 0 else float("nan")
-        h.append(f"<tr style='font-weight:bold'><td>{r['table']}</td><td>{html.escape(r['variant'])} "
-                 f"({html.escape(r['method'])})</td><td>{html.escape(r['gpu'])}</td><td>increment</td>"
+        h.append(f"<tr style='font-weight:bold'><td>{r['table']}</td><td>{name}</td>"
+                 f"<td>{html.escape(r['gpu'])}</td><td>increment</td>"
                  f"<td class='num'>{tables.fmt(r['thesis_slope_ms'])}</td>"
                  f"<td class='num'>{tables.fmt(r['estimate_slope_ms'])}</td>"
                  f"<td class='num'>{tables.fmt(ratio)}</td></tr>")

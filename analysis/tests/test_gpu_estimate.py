@@ -131,6 +131,35 @@ class ThesisComparisonTest(unittest.TestCase):
         self.assertAlmostEqual(fury["estimate_slope_ms"], 1e3 * per_byte * 4 * 32 ** 3 / 512e9)
 
 
+    def test_injection_is_compared_once_per_gpu_whatever_else_varies(self):
+        # An RSM-size sweep (tables 8.3-8.4) with two propagation methods: the injection's counts
+        # do not depend on them, so one comparison per thesis GPU, per VPL at 4 levels x side^2.
+        rows = []
+        for i, side in enumerate((32, 64, 128)):
+            for method in ("gather", "scatter"):
+                units = side * side
+                rows.append({"config_id": f"c{i}{method}", "config_name": f"{side}-{method}",
+                             "variant": f"rsm_vpl/none/standard ({method})",
+                             "param.injection.type": "rsm_vpl", "param.propagation.type": "standard",
+                             "param.propagation.method": method,
+                             "param.light_maps.rsm_resolution": side, "gpu_ms.injection": 1.0,
+                             "gpu_work.injection.VPLs": units,
+                             "gpu_work.injection.multiply_adds": 26.0 * units,
+                             "gpu_work.injection.bytes": 176.0 * units})
+        result = G.thesis_comparison(pd.DataFrame(rows), G.load_gpus())
+        by_table = {}
+        for r in result:
+            by_table.setdefault(r["table"], []).append(r)
+        self.assertEqual(sorted(by_table), ["8.3", "8.4"])
+        for table, entries in by_table.items():
+            self.assertEqual(len(entries), 1, table)
+            r = entries[0]
+            self.assertEqual((r["variant"], r["method"]), ("rsm_vpl", ""))
+            i = r["x"].index(256)
+            gpu = next(g for g in G.load_gpus() if g.name == r["gpu"])
+            self.assertAlmostEqual(r["estimate_ms"][i], G.stage_ms(26.0 * 4 * 256 ** 2, 176.0 * 4 * 256 ** 2, gpu))
+
+
 class ReportSectionTest(unittest.TestCase):
     def test_the_report_labels_the_estimate(self):
         from lpvlab_analysis import report
