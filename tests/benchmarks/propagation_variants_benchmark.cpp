@@ -11,11 +11,11 @@
 //   tetrahedral_occlusion_setup: what a GV does to every lattice face, once per GV.
 // Medians of 5 repetitions after an untimed warm-up (benchmark_support.h).
 
-#include <benchmark/benchmark.h>
-
 #include <random>
 #include <string>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "benchmark_support.h"
 #include "framework/core/cpu_features.h"

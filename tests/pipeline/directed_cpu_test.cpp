@@ -12,18 +12,17 @@
 // The tests of both backends' kernels against the C++ model, flux and the floor are in
 // directed_test.cpp.
 
-#include "variants/propagation/directed_cpu.h"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "directed_model.h"
 #include "error_support.h"
 #include "framework/math/solid_angle.h"
 #include "propagation_rig.h"
+#include "variants/propagation/directed_cpu.h"
 
 namespace lpvlab {
 namespace {

@@ -9,16 +9,15 @@
 // The kernels' tests against the double-precision C++ model, flux, symmetry and the GV walls run
 // on both backends in tetrahedral_test.cpp.
 
-#include "variants/propagation/tetrahedral_cpu.h"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <random>
 #include <string>
 
+#include <gtest/gtest.h>
+
 #include "framework/core/cpu_features.h"
 #include "propagation_rig.h"
+#include "variants/propagation/tetrahedral_cpu.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"

@@ -1,10 +1,10 @@
 #include "variants/propagation/directed_cpu.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "framework/core/error.h"
 #include "framework/math/shared.h"

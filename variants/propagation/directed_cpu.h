@@ -18,8 +18,9 @@
 // gain G(n) (60 lobe evaluations) is found once per frame, not once per iteration as on GL. The
 // strategy keeps the result while the injected normals stay the same bit for bit.
 
-#include <glm/glm.hpp>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "variants/propagation/standard_cpu.h"
 

@@ -1,12 +1,12 @@
 #include "variants/propagation/tetrahedral_cpu.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <cstring>
 #include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "framework/core/error.h"
 #include "framework/math/shared.h"

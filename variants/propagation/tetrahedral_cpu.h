@@ -25,9 +25,9 @@
 // cell) is found once per GV (TetrahedralOcclusion), from the shared GLSL in double precision.
 
 #include <cstddef>
-#include <glm/glm.hpp>
-#include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "framework/core/cpu_dispatch.h"
 #include "variants/propagation/step_accumulation.h"
