@@ -1,8 +1,8 @@
 // [compute] backend (framework/pipeline/strategy.h, ComputeBackend):
-//   a. the default Cornell box, a cascaded SH order 2 composition and the GV with bounces give
-//      the same images with direct light and the strategies on the CPU ("auto" on llvmpipe) and
-//      on GL, within float rounding (direct light: but for rare shadow comparisons,
-//      backend_comparison.h);
+//   a. the default Cornell box, a cascaded SH order 2 composition, the GV with bounces, and
+//      directed and tetrahedral propagation with a GV in two cascade levels give the same images
+//      with direct light and the strategies on the CPU ("auto" on llvmpipe) and on GL, within
+//      float rounding (direct light: but for rare shadow comparisons, backend_comparison.h);
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
 //      a strategy without a CPU kernel for its composition (here: subsurface rendering) on GL;
 //   c. a CPU frame is the same bit for bit on one thread and on all;
@@ -63,7 +63,11 @@ TEST(ComputeBackend, CpuAndGlPropagationGiveTheSameImages) {
   for (const std::vector<std::string>& composition :
        {std::vector<std::string>{},
         {"grid.sh_order=2", "cascades.levels=2"},
-        {"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}}) {
+        {"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"},
+        // Directed and tetrahedral propagation keep their CPU state per cascade level.
+        {"propagation.type=\"directed\"", "cascades.levels=2", "occlusion.type=\"geometry_volume\""},
+        {"propagation.type=\"tetrahedral\"", "propagation.iterations=12", "cascades.levels=2",
+         "occlusion.type=\"geometry_volume\""}}) {
     const Rendered gl = render([&] {
       auto o = composition;
       o.push_back("compute.backend=gl");
