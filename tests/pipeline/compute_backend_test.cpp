@@ -4,7 +4,8 @@
 //      with direct light and the strategies on the CPU ("auto" on llvmpipe) and on GL, within
 //      float rounding (direct light: but for rare shadow comparisons, backend_comparison.h);
 //   b. "auto" resolves to the CPU where a kernel exists only on a software renderer, and keeps
-//      a strategy without a CPU kernel for its composition (here: subsurface rendering) on GL;
+//      a strategy without a CPU kernel for its composition on GL (every shipped strategy has one
+//      now, so this test registers one that has not, "test_gl_only");
 //   c. a CPU frame is the same bit for bit on one thread and on all;
 //   d. "cpu" runs the default composition and refuses, naming the strategy and saying why, a
 //      composition with a strategy that has no CPU kernel; an unknown backend is an error naming
@@ -18,6 +19,8 @@
 #include <tbb/global_control.h>
 
 #include "error_support.h"
+#include "framework/core/parameters.h"
+#include "framework/core/registry.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "backend_comparison.h"
@@ -25,6 +28,19 @@
 
 namespace lpvlab {
 namespace {
+
+// A rendering strategy without a CPU kernel (Strategy::cpuRefusal's default), registered in this
+// test binary alone: every shipped strategy has a CPU kernel, and what the backend does with one
+// that has not is still to be checked. It adds no light.
+class GlOnlyRendering final : public RenderingStrategy {
+public:
+  explicit GlOnlyRendering(Params&) {}
+  void prepare(const StrategySetup&) override {}
+  void render(Frame&) override {}
+};
+LPVLAB_REGISTER(RenderingStrategy, "test_gl_only",
+                "a rendering strategy without a CPU kernel, for the compute-backend tests",
+                GlOnlyRendering);
 
 struct Rendered {
   std::vector<NamedImage> aovs;
@@ -105,28 +121,29 @@ TEST(ComputeBackend, AutoTakesTheCpuOnlyOnASoftwareRendererAndOnlyWhereAKernelEx
   EXPECT_EQ(resolveBackend("cpu", "NVIDIA H100 PCIe/PCIe/SSE2"), ComputeBackend::Cpu);
   EXPECT_EQ(resolveBackend("gl", "llvmpipe"), ComputeBackend::Gl);
   // Every propagation has a CPU kernel (standard with the GV and by scattering, directed,
-  // tetrahedral); subsurface rendering has none yet: "auto" keeps it on GL.
+  // tetrahedral), and every shipped rendering; "auto" keeps one without a CPU kernel on GL.
   EXPECT_TRUE(render({"occlusion.type=\"geometry_volume\"", "propagation.bounces=true"}).propagationOnCpu);
   EXPECT_TRUE(render({"propagation.method=\"scatter\""}).propagationOnCpu);
   EXPECT_TRUE(render({"propagation.type=\"directed\""}).propagationOnCpu);
   EXPECT_TRUE(render({"propagation.type=\"tetrahedral\"", "propagation.iterations=4"}).propagationOnCpu);
   EXPECT_TRUE(render({}).renderingOnCpu);
-  const Rendered subsurface = render({"rendering.type=\"subsurface\""});
-  EXPECT_FALSE(subsurface.renderingOnCpu);
-  EXPECT_TRUE(subsurface.propagationOnCpu);
+  EXPECT_TRUE(render({"rendering.type=\"subsurface\""}).renderingOnCpu);
+  const Rendered glOnly = render({"rendering.type=\"test_gl_only\""});
+  EXPECT_FALSE(glOnly.renderingOnCpu);
+  EXPECT_TRUE(glOnly.propagationOnCpu);
 }
 
 TEST(ComputeBackend, CpuRefusesStrategiesWithoutACpuKernelByName) {
-  // The default composition, and the GV with bounces, have CPU kernels throughout; subsurface
-  // rendering has none yet.
+  // The default composition, and the GV with bounces, have CPU kernels throughout; the test's
+  // GL-only rendering strategy has none.
   EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\""}));
   EXPECT_NO_THROW(loadExperiment("", {"compute.backend=\"cpu\"", "occlusion.type=\"geometry_volume\"",
                                       "propagation.bounces=true"}));
   const std::string message = test::errorOf([] {
-    loadExperiment("", {"compute.backend=\"cpu\"", "rendering.type=\"subsurface\""});
+    loadExperiment("", {"compute.backend=\"cpu\"", "rendering.type=\"test_gl_only\""});
   });
   EXPECT_TRUE(
-      test::contains(message, "[rendering] type = \"subsurface\" cannot run on the CPU backend"))
+      test::contains(message, "[rendering] type = \"test_gl_only\" cannot run on the CPU backend"))
       << message;
   EXPECT_TRUE(test::contains(message, "no CPU kernel yet")) << message;
   EXPECT_TRUE(test::contains(

@@ -12,6 +12,7 @@
 //      subsurface.glsl) from the downloaded grid and G-buffer;
 //   e. pixels of opaque surfaces (by ray casting, independent of the strategy's camera mask) keep
 //      exactly what the indirect image held; translucent ones gain light.
+// Every test runs on both backends (the CPU: subsurface_cpu.h and the standard CPU kernel).
 
 #include <cmath>
 #include <iostream>
@@ -108,7 +109,8 @@ Grid download(const Buffer& buffer, std::size_t floats) {
 // The strategy created as an experiment creates it, with the raster passes it stands on.
 class SubsurfaceRig {
 public:
-  explicit SubsurfaceRig(const Scene& scene, int rsmResolution = 256, int iterations = 8)
+  explicit SubsurfaceRig(const Scene& scene, int rsmResolution = 256, int iterations = 8,
+                         ComputeBackend backend = ComputeBackend::Gl)
       : scene_(scene),
         camera_(scene.cameras.front()),
         gbuffer_(shaders_, kWidth, kHeight),
@@ -123,7 +125,8 @@ public:
     params.finish();
     sub_ = dynamic_cast<SubsurfaceRendering*>(strategy_.get());
     // Prepared as a run prepares it: with the scene, its light views and the image size.
-    const Requirements requirements;
+    Requirements requirements;
+    requirements.backend = backend;
     const GridGeometry mainGrid;
     strategy_->prepare({.shaders = shaders_,
                         .grid = mainGrid,
@@ -131,15 +134,18 @@ public:
                         .scene = &scene_.gpu,
                         .lightMaps = &maps_.lightMaps(),
                         .imageSize = {kWidth, kHeight}});
+    EXPECT_EQ(sub_->onCpu(), backend == ComputeBackend::Cpu) << "the kernels run where asked";
     gbuffer_.render(scene_.gpu, camera_);
     for (glm::vec4& texel : indirect_.host().texels) texel = glm::vec4(kPrefill);
   }
 
   Frame frame() {
     return Frame{.scene = &scene_.gpu, .camera = &camera_, .gbuffer = gbuffer_.gbuffer(),
-                 .lightMaps = maps_.lightMaps(), .lightGrid = mainGrid_, .indirect = indirect_};
+                 .lightMaps = maps_.lightMaps(), .lightGrid = mainGrid_, .indirect = indirect_,
+                 .host = &host_};
   }
   void render() {
+    host_.newFrame();
     Frame f = frame();
     strategy_->render(f);
     checkGl("subsurface test");
@@ -163,6 +169,7 @@ private:
   LightMapsPass maps_;
   LightGrid mainGrid_;
   DualImage indirect_;
+  HostReadback host_;  // the raster passes' images for the CPU backend
   toml::table table_;
   std::unique_ptr<RenderingStrategy> strategy_;
   SubsurfaceRendering* sub_ = nullptr;
@@ -170,8 +177,13 @@ private:
 
 // ---- a. nothing translucent, nothing added --------------------------------------------------------
 
-TEST(Subsurface, SceneWithoutTranslucentMaterialsGetsExactlyNothing) {
-  SubsurfaceRig rig(boxScene(false));
+class Subsurface : public ::testing::TestWithParam<ComputeBackend> {
+protected:
+  ComputeBackend backend() const { return GetParam(); }
+};
+
+TEST_P(Subsurface, SceneWithoutTranslucentMaterialsGetsExactlyNothing) {
+  SubsurfaceRig rig(boxScene(false), 256, 8, backend());
   rig.render();
   for (float v : rig.indirect()) ASSERT_EQ(v, kPrefill);
   EXPECT_EQ(rig.sub().memoryBytes(), 0u);  // nothing was even allocated
@@ -179,8 +191,8 @@ TEST(Subsurface, SceneWithoutTranslucentMaterialsGetsExactlyNothing) {
 
 // ---- b. injection ---------------------------------------------------------------------------------
 
-TEST(Subsurface, OnlyTranslucentSurfacesInjectTheirTransmittedFluxIntoTheObject) {
-  SubsurfaceRig rig(boxScene(true), 512);
+TEST_P(Subsurface, OnlyTranslucentSurfacesInjectTheirTransmittedFluxIntoTheObject) {
+  SubsurfaceRig rig(boxScene(true), 512, 8, backend());
   Frame frame = rig.frame();
   rig.sub().renderRsm(frame);
   rig.sub().inject(frame);
@@ -226,10 +238,10 @@ TEST(Subsurface, OnlyTranslucentSurfacesInjectTheirTransmittedFluxIntoTheObject)
 
 // ---- c. attenuation -------------------------------------------------------------------------------
 
-TEST(Subsurface, AttenuatedPropagationIsTheStandardTimesAToTheK) {
+TEST_P(Subsurface, AttenuatedPropagationIsTheStandardTimesAToTheK) {
   const glm::ivec3 res{9, 9, 9};
   const GridGeometry geometry{glm::vec3(0.0f), 0.1f, res};
-  SubsurfaceRig rig(boxScene(true), 8, 1);
+  SubsurfaceRig rig(boxScene(true), 8, 1, backend());
   rig.sub().allocateGrid(geometry, 3.0f);
   const double a = std::exp(-3.0 * 0.1);
   EXPECT_NEAR(rig.sub().attenuation(), a, 1e-7);
@@ -264,10 +276,10 @@ TEST(Subsurface, AttenuatedPropagationIsTheStandardTimesAToTheK) {
 
 // ---- d. GPU against double-precision C++ --------------------------------------------------------
 
-TEST(Subsurface, AttenuatedStepMatchesTheDoublePrecisionTransfer) {
+TEST_P(Subsurface, AttenuatedStepMatchesTheDoublePrecisionTransfer) {
   const glm::ivec3 res{6, 5, 7};
   const GridGeometry geometry{glm::vec3(0.0f), 0.05f, res};
-  SubsurfaceRig rig(boxScene(true), 8, 1);
+  SubsurfaceRig rig(boxScene(true), 8, 1, backend());
   rig.sub().allocateGrid(geometry, 7.0f);
   const double a = rig.sub().attenuation();
   std::mt19937 random(42);
@@ -303,9 +315,9 @@ TEST(Subsurface, AttenuatedStepMatchesTheDoublePrecisionTransfer) {
 
 // ---- d, e. shading ----------------------------------------------------------------------------------
 
-TEST(Subsurface, TranslucentPixelsGainTheExitingLightAndOpaquePixelsNothing) {
+TEST_P(Subsurface, TranslucentPixelsGainTheExitingLightAndOpaquePixelsNothing) {
   const Scene scene = boxScene(true);
-  SubsurfaceRig rig(scene, 256, 12);
+  SubsurfaceRig rig(scene, 256, 12, backend());
   rig.render();
   const std::vector<float> out = rig.indirect();
   const std::vector<float> position = readRgba(rig.gbuffer().position);
@@ -379,6 +391,12 @@ TEST(Subsurface, TranslucentPixelsGainTheExitingLightAndOpaquePixelsNothing) {
   EXPECT_GT(largest, 0.0);
   EXPECT_LT(worst, 1e-5 * largest + 1e-7);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, Subsurface,
+                         ::testing::Values(ComputeBackend::Gl, ComputeBackend::Cpu),
+                         [](const auto& info) {
+                           return info.param == ComputeBackend::Cpu ? "cpu" : "gl";
+                         });
 
 }  // namespace
 }  // namespace lpvlab

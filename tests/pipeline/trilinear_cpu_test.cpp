@@ -160,6 +160,7 @@ TEST(TrilinearCpu, EveryRenderingOptionHasACpuKernel) {
   EXPECT_EQ(refusal("trilinear", {}), "");
   EXPECT_EQ(refusal("glossy", {}), "");
   EXPECT_EQ(refusal("glossy", toml::table{{"specular_albedo", 0.5}}), "");
+  EXPECT_EQ(refusal("subsurface", {}), "");
 }
 
 }  // namespace

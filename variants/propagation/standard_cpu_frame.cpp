@@ -36,13 +36,21 @@ const StandardOcclusion<float>& StandardCpuFrame::occlusionOf(Frame& frame,
 }
 
 void StandardCpuFrame::propagate(Frame& frame, const Iterations& iterations) {
-  LightGrid& grid = frame.lightGrid;
+  const GeometryVolume* gv = frame.find(kGeometryVolume);
+  iterate(frame.lightGrid, gv, gv ? &occlusionOf(frame, *gv, iterations.bounces) : nullptr,
+          iterations);
+}
+
+void StandardCpuFrame::propagate(LightGrid& grid, const Iterations& iterations) {
+  iterate(grid, nullptr, nullptr, iterations);
+}
+
+void StandardCpuFrame::iterate(LightGrid& grid, const GeometryVolume* gv,
+                               const StandardOcclusion<float>* occlusion,
+                               const Iterations& iterations) {
   std::vector<float>& current = grid.current.host();
   std::vector<float>& accumulated = grid.accumulated.host();
   next_.resize(current.size());
-  const GeometryVolume* gv = frame.find(kGeometryVolume);
-  const StandardOcclusion<float>* occlusion =
-      gv ? &occlusionOf(frame, *gv, iterations.bounces) : nullptr;
   for (int i = 0; i < iterations.count; ++i) {
     const StandardOcclusion<float>* faces =
         gv && i >= gv->firstOccludedIteration ? occlusion : nullptr;

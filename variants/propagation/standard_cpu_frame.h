@@ -15,6 +15,7 @@ namespace lpvlab {
 
 struct Frame;
 struct GeometryVolume;
+struct LightGrid;
 
 class StandardCpuFrame {
 public:
@@ -36,6 +37,8 @@ public:
   // summing), as the GL kernels add to it. The GV, if the frame has one, attenuates from its
   // first occluded iteration on.
   void propagate(Frame& frame, const Iterations& iterations);
+  // The same on a grid of a strategy's own (the subsurface LPV's), without a GV.
+  void propagate(LightGrid& grid, const Iterations& iterations);
 
   const StandardFaceTable<float>& table() const { return table_; }
   std::size_t memoryBytes() const;
@@ -48,6 +51,8 @@ private:
     std::size_t bytes() const;
   };
   const StandardOcclusion<float>& occlusionOf(Frame& frame, const GeometryVolume& gv, bool bounces);
+  void iterate(LightGrid& grid, const GeometryVolume* gv, const StandardOcclusion<float>* occlusion,
+               const Iterations& iterations);
 
   StandardFaceTable<float> table_{};
   std::vector<float> next_;         // the host side's ping-pong partner

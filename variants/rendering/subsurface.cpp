@@ -21,6 +21,7 @@
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
 #include "framework/scene/scene.h"
+#include "variants/rendering/subsurface_cpu.h"
 
 namespace lpvlab {
 
@@ -77,6 +78,8 @@ float SubsurfaceRendering::stepAttenuation(float extinction, float cellSize) {
 void SubsurfaceRendering::prepare(const StrategySetup& setup) {
   ShaderCompiler& shaders = setup.shaders;
   shOrder_ = setup.requirements.shOrder;
+  backend_ = setup.requirements.backend;
+  onCpu_ = runsOnCpu(setup.requirements);
   const int coefficients = shared::shCoefficientCount(shOrder_);
   const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
   rsmProgram_ = shaders.graphics("raster/scene.vert", "subsurface/rsm.frag");
@@ -89,6 +92,7 @@ void SubsurfaceRendering::prepare(const StrategySetup& setup) {
   // The SSLPV has no normal grid, GV or cascade of its own, whatever the main LPV has.
   Requirements own;
   own.shOrder = shOrder_;
+  own.backend = backend_;  // its injection runs where the run's strategies do
   injection_ = unshiftedRsmInjection();
   injection_->prepare({.shaders = shaders, .grid = setup.grid, .requirements = own});
   if (setup.scene && setup.lightMaps) setUp(*setup.scene, *setup.lightMaps, setup.imageSize);
@@ -96,8 +100,14 @@ void SubsurfaceRendering::prepare(const StrategySetup& setup) {
 
 void SubsurfaceRendering::allocateGrid(const GridGeometry& geometry, float extinction) {
   grid_ = LightGrid(geometry, shOrder_);
-  scratch_ = DualBuffer(grid_.bytesPerGrid(), "subsurface LPV (propagation scratch)");
   attenuation_ = stepAttenuation(extinction, geometry.cellSize);
+  if (onCpu_) {
+    const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    cpu_ = StandardCpuFrame(shOrder_, attenuation_ * angles.farFace, attenuation_ * angles.sideFace,
+                            grid_.floatsPerGrid());
+  } else {
+    scratch_ = DualBuffer(grid_.bytesPerGrid(), "subsurface LPV (propagation scratch)");
+  }
 }
 
 bool SubsurfaceRendering::setUp(const SceneGpu& scene, const LightMaps& lightMaps,
@@ -171,15 +181,18 @@ void SubsurfaceRendering::inject(const Frame& frame) {
             .gbuffer = frame.gbuffer,
             .lightMaps = rsm_,
             .lightGrid = grid_,
-            .indirect = frame.indirect};
+            .indirect = frame.indirect,
+            .host = frame.host};
   injection_->inject(own);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  // The accumulated light starts as the injected light, as in the main LPV.
+  // The accumulated light starts as the injected light, as in the main LPV (on the side the
+  // injection wrote).
   grid_.accumulated.copyFrom(grid_.current);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void SubsurfaceRendering::propagate() {
+  if (onCpu_) return cpu_.propagate(grid_, {.count = iterations_});
   using namespace propagate_kernel;
   propagateProgram_.use();
   glUniform3iv(LOCATION_RESOLUTION, 1, &grid_.geometry.resolution[0]);
@@ -205,6 +218,18 @@ void SubsurfaceRendering::shade(Frame& frame) {
   frame.scene->draw();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
+  if (onCpu_) {
+    if (!frame.host) throw Error("rendering \"subsurface\" (CPU): the frame has no host images");
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the mask, before reading it back
+    addSubsurfaceLightCpu({.position = &frame.host->image(frame.gbuffer.position),
+                           .normal = &frame.host->image(frame.gbuffer.normal),
+                           .mask = &frame.host->image(mask_),
+                           .accumulated = grid_.accumulated.hostRead().data(),
+                           .geometry = grid_.geometry,
+                           .coefficients = shared::shCoefficientCount(shOrder_)},
+                          frame.indirect.host());
+    return;
+  }
   using namespace render_kernel;
   const GridGeometry& g = grid_.geometry;
   renderProgram_.use();
@@ -229,8 +254,8 @@ void SubsurfaceRendering::render(Frame& frame) {
 
 std::size_t SubsurfaceRendering::memoryBytes() const {
   if (!active_) return 0;
-  return grid_.memoryBytes() + scratch_.size() + translucency_.size() + rsm_.memoryBytes() +
-         mask_.bytes() + maskDepth_.bytes();
+  return grid_.memoryBytes() + scratch_.size() + cpu_.memoryBytes() + translucency_.size() +
+         rsm_.memoryBytes() + mask_.bytes() + maskDepth_.bytes();
 }
 
 LPVLAB_REGISTER(RenderingStrategy, "subsurface",

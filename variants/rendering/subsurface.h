@@ -13,6 +13,10 @@
 //      shaders/subsurface/mask.frag), the light leaving that surface, L_o = <I, cosLobe(n)> /
 //      (pi s^2), ADDED to the indirect image (shaders/subsurface/render.comp); other pixels keep
 //      exactly what they had.
+// On the CPU backend steps 2-4 run on the CPU (its RSM and camera mask are still rasterised on
+// GL and read back): the RSM injection's CPU kernel, the standard CPU kernel with a transfer
+// scaled by a (linear in it: a max(0, Omega I) = max(0, a Omega I)), and the shading's
+// (subsurface_cpu.h, the same shared GLSL as render.comp).
 // Its grid is fitted to the translucent materials' triangles. One grid has one attenuation, so
 // all translucent materials of a scene must share one extinction. The grid, RSM and mask are
 // made in prepare(), which sees the scene, its light views and the image size.
@@ -26,6 +30,7 @@
 // | rsm_resolution | int   | 128     | SSLPV RSM texels per side per light view (1..4096)       |
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -35,6 +40,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/light_grid.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/propagation/standard_cpu_frame.h"
 
 namespace lpvlab {
 
@@ -48,6 +54,7 @@ public:
   ~SubsurfaceRendering() override;
 
   int maxShOrder() const override { return 3; }
+  std::string cpuRefusal(const Requirements&) const override { return {}; }
   void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
   std::size_t memoryBytes() const override;
@@ -66,6 +73,7 @@ public:
   void inject(const Frame& frame);  // into grid().current and grid().accumulated
   void propagate();                 // iterations() steps
   void shade(Frame& frame);         // the camera mask, then the light added to frame.indirect
+  bool onCpu() const { return onCpu_; }
 
   int iterations() const { return iterations_; }
   const LightGrid& grid() const { return grid_; }
@@ -78,6 +86,9 @@ private:
   int resolution_, iterations_, rsmResolution_;
   float marginCells_;
   int shOrder_ = 1;
+  ComputeBackend backend_ = ComputeBackend::Gl;
+  bool onCpu_ = false;
+  StandardCpuFrame cpu_;  // on the CPU backend: the attenuated transfer
   Program rsmProgram_, maskProgram_, propagateProgram_, renderProgram_;
   std::unique_ptr<InjectionStrategy> injection_;  // "rsm_vpl", shift 0, on rsm_ and grid_
   bool active_ = false;              // the scene has translucent surfaces
