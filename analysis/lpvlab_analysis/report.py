@@ -201,10 +201,13 @@ def _thesis_section(agg, img_dir, out_dir):
     return parts
 
 
-def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True):
-    """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path."""
+def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
+                 gpu_table=G.DEFAULT_TABLE):
+    """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. The inputs
+    (the summary, the GPU table) are read before anything is written."""
     if not os.path.isdir(sweep_dir):
         raise S.SummaryError(f"{sweep_dir}: no such sweep directory")
+    gpus = G.load_gpus(gpu_table)
     summary_path = os.path.join(sweep_dir, "summary.csv")
     df = S.load_summary(summary_path)
     out_dir = out_dir or os.path.join(sweep_dir, "report")
@@ -271,7 +274,6 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True)
             if p:
                 body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
 
-    gpus = G.load_gpus()
     estimate, estimate_md = _gpu_estimate_section(agg, gpus)
     if estimate:
         body.append("<h2>Estimated GPU time (an estimate, not a measurement)</h2>")
@@ -333,7 +335,7 @@ def main(argv=None):
     a = ap.parse_args(argv)
     try:
         idx = build_report(a.dir, a.out, a.metric, use_exr=not a.no_exr)
-    except S.SummaryError as exc:
+    except (S.SummaryError, G.GpuTableError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     print(idx)

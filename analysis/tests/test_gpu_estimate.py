@@ -161,6 +161,20 @@ class ThesisComparisonTest(unittest.TestCase):
 
 
 class ReportSectionTest(unittest.TestCase):
+    def test_a_malformed_gpu_table_is_an_error_before_anything_is_written(self):
+        from lpvlab_analysis import report
+        from tests.fixtures import make_sweep
+        root = tempfile.mkdtemp()
+        sweep = make_sweep(os.path.join(root, "sweep"), with_exr=False)
+        out = os.path.join(root, "report")
+        table = _table("[x]\nname = 'X'\nfma_per_s = 0\nbytes_per_s = 1e9\n")
+        with self.assertRaises(G.GpuTableError) as ctx:
+            report.build_report(sweep, out, use_exr=False, gpu_table=table)
+        self.assertIn(table, str(ctx.exception))
+        self.assertIn("fma_per_s", str(ctx.exception))
+        self.assertFalse(os.path.exists(out))
+
+
     def test_the_report_labels_the_estimate(self):
         from lpvlab_analysis import report
         df = pd.DataFrame([{"config_name": "a", "gpu_ms.propagation": 12.5,

@@ -12,22 +12,26 @@
 // The tests of both backends' kernels against the C++ model, flux and the floor are in
 // directed_test.cpp.
 
+#include "variants/propagation/directed_cpu.h"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <string>
 
-#include <gtest/gtest.h>
-
+#include "cpu_comparison.h"
 #include "directed_model.h"
 #include "error_support.h"
 #include "framework/math/solid_angle.h"
 #include "propagation_rig.h"
-#include "variants/propagation/directed_cpu.h"
 
 namespace lpvlab {
 namespace {
 
 using test::Grid;
+using test::maxRelativeDifference;
+using test::Propagated;
 
 const double kFar = cubeFaceSolidAngles().farFace;
 const double kSide = cubeFaceSolidAngles().sideFace;
@@ -94,17 +98,16 @@ TEST(DirectedCpu, CellsReprojectFromTheIterationTheDilationGivesThemANormal) {
     // Without dilation the five injected cells reproject from the start; with it, many more, and
     // some are never reached in six steps.
     EXPECT_EQ(reached, dilation ? reached : 5);
-    if (dilation) EXPECT_GT(reached, 100);
+    if (dilation) {
+      EXPECT_GT(reached, 100);
+    }
     EXPECT_GT(never, 5) << dilation;
-    if (dilation)
+    if (dilation) {
       EXPECT_EQ(cells.since[std::size_t(0) * cells.width + 7], ReprojectedCells<double>::kNever)
           << "the cell between opposite normals has none at the first step";
+    }
   }
 }
-
-struct Propagated {
-  std::vector<double> current, accumulated;
-};
 
 // `iterations` CPU steps from `injected` with `normals`, the GV (if any) from iteration 1 on.
 template <class Real>
@@ -126,15 +129,6 @@ Propagated cpuPropagate(const Grid& injected, const std::vector<float>& normals,
   }
   return {std::vector<double>(current.begin(), current.end()),
           std::vector<double>(accumulated.begin(), accumulated.end())};
-}
-
-double maxRelativeDifference(const std::vector<double>& a, const Grid& b) {
-  double largest = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    largest = std::max(largest, std::abs(a[i] - double(b[i])));
-    scale = std::max(scale, std::abs(double(b[i])));
-  }
-  return largest / scale;
 }
 
 void matchesGlsl(bool withGv) {
@@ -188,26 +182,14 @@ TEST(DirectedCpu, TheStrategyFindsItsCellsAgainWhenTheNormalsChange) {
   test::PropagationRig cpu("directed", res, test::iterationsTable(4), 2, false,
                            ComputeBackend::Cpu);
   const Grid injected = test::randomFloats(gl.floatsPerGrid(), random);
-  Grid previous;
-  for (int frame = 0; frame < 2; ++frame) {
-    const std::vector<float> normals = sparseNormals(res, random);
-    for (test::PropagationRig* rig : {&gl, &cpu}) {
-      rig->load(injected);
-      rig->loadNormals(normals);
-      rig->propagate();
-    }
-    const Grid glCurrent = gl.current(), cpuCurrent = cpu.current();
-    EXPECT_LT(
-        maxRelativeDifference(std::vector<double>(cpuCurrent.begin(), cpuCurrent.end()), glCurrent),
-        2e-5)
-        << "frame " << frame;
-    if (frame == 1)
-      EXPECT_GT(
-          maxRelativeDifference(std::vector<double>(previous.begin(), previous.end()), glCurrent),
-          1e-2)
-          << "the second frame's normals changed the light";
-    previous = cpuCurrent;
-  }
+  const std::vector<float> normals[2] = {sparseNormals(res, random), sparseNormals(res, random)};
+  test::expectCpuFollowsGlAcrossFrames(
+      gl, cpu,
+      [&](test::PropagationRig& rig, int frame) {
+        rig.load(injected);
+        rig.loadNormals(normals[frame]);
+      },
+      1e-2, "normals");
 }
 
 TEST(DirectedCpu, ResultsDoNotDependOnTheThreadCountAndBadNormalsAreErrors) {

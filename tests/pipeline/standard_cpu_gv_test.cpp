@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/math/solid_angle.h"
+#include "cpu_comparison.h"
 #include "propagation_rig.h"
 #include "variants/propagation/standard_cpu.h"
 
@@ -23,13 +24,11 @@ namespace lpvlab {
 namespace {
 
 using test::Grid;
+using test::maxRelativeDifference;
+using test::Propagated;
 
 const double kFar = cubeFaceSolidAngles().farFace;
 const double kSide = cubeFaceSolidAngles().sideFace;
-
-struct Propagated {
-  std::vector<double> current, accumulated;
-};
 
 // `iterations` CPU steps from `injected` with the GV (and, with `albedo`, its bounces) from
 // iteration `firstOccluded` on, by `method`, iterations paired as the strategy runs them.
@@ -51,15 +50,6 @@ Propagated cpuPropagate(const Grid& injected, const glm::ivec3& res, int order, 
   }
   return {std::vector<double>(current.begin(), current.end()),
           std::vector<double>(accumulated.begin(), accumulated.end())};
-}
-
-double maxRelativeDifference(const std::vector<double>& a, const Grid& b) {
-  double largest = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    largest = std::max(largest, std::abs(a[i] - double(b[i])));
-    scale = std::max(scale, std::abs(double(b[i])));
-  }
-  return largest / scale;
 }
 
 // A random GV with a third of its cells empty.

@@ -19,6 +19,7 @@
 
 #include "error_support.h"
 #include "framework/math/solid_angle.h"
+#include "cpu_comparison.h"
 #include "propagation_rig.h"
 #include "variants/propagation/standard_cpu.h"
 
@@ -30,6 +31,7 @@ namespace lpvlab {
 namespace {
 
 using test::Grid;
+using test::maxRelativeDifference;
 
 const double kFar = cubeFaceSolidAngles().farFace;
 const double kSide = cubeFaceSolidAngles().sideFace;
@@ -53,16 +55,6 @@ std::pair<std::vector<Real>, std::vector<Real>> cpuPropagate(const Grid& injecte
     std::swap(current, next);
   }
   return {current, accumulated};
-}
-
-template <class Real>
-double maxRelativeDifference(const std::vector<Real>& a, const Grid& b) {
-  double largest = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    largest = std::max(largest, std::abs(double(a[i]) - double(b[i])));
-    scale = std::max(scale, std::abs(double(b[i])));
-  }
-  return largest / scale;
 }
 
 TEST(StandardCpu, MatchesTheGlslGatherKernelAtEveryOrderAndInstructionSet) {

@@ -9,15 +9,17 @@
 // The kernels' tests against the double-precision C++ model, flux, symmetry and the GV walls run
 // on both backends in tetrahedral_test.cpp.
 
+#include "variants/propagation/tetrahedral_cpu.h"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <string>
 
-#include <gtest/gtest.h>
-
+#include "cpu_comparison.h"
 #include "framework/core/cpu_features.h"
 #include "propagation_rig.h"
-#include "variants/propagation/tetrahedral_cpu.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"
@@ -27,10 +29,8 @@ namespace lpvlab {
 namespace {
 
 using test::Grid;
-
-struct Propagated {
-  std::vector<double> current, accumulated;
-};
+using test::maxRelativeDifference;
+using test::Propagated;
 
 template <class Real>
 Propagated cpuPropagate(const Grid& current, const Grid& accumulated, const glm::ivec3& res,
@@ -50,15 +50,6 @@ Propagated cpuPropagate(const Grid& current, const Grid& accumulated, const glm:
   tetrahedralMergeCpu(lattice, cubes.data(), sum.data());
   return {std::vector<double>(cubes.begin(), cubes.end()),
           std::vector<double>(sum.begin(), sum.end())};
-}
-
-double maxRelativeDifference(const std::vector<double>& a, const Grid& b) {
-  double largest = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    largest = std::max(largest, std::abs(a[i] - double(b[i])));
-    scale = std::max(scale, std::abs(double(b[i])));
-  }
-  return largest / scale;
 }
 
 // The GV with its cells x < `x` emptied: the cubes x = 0 see only empty GV cells (the kernel
@@ -121,26 +112,15 @@ TEST(TetrahedralCpu, TheStrategyFindsItsGvFacesAgainWhenTheGvChanges) {
   test::PropagationRig cpu("tetrahedral", res, test::iterationsTable(6), 1, true,
                            ComputeBackend::Cpu);
   const Grid injected = test::randomFloats(gl.floatsPerGrid(), random);
-  Grid previous;
-  for (int frame = 0; frame < 2; ++frame) {
-    const Grid gv = test::randomBlocking(shared::cellCount(res + 1), random);
-    for (test::PropagationRig* rig : {&gl, &cpu}) {
-      rig->load(injected);
-      rig->loadGv(gv, 1);
-      rig->propagate();
-    }
-    const Grid glCurrent = gl.current(), cpuCurrent = cpu.current();
-    EXPECT_LT(
-        maxRelativeDifference(std::vector<double>(cpuCurrent.begin(), cpuCurrent.end()), glCurrent),
-        2e-5)
-        << "frame " << frame;
-    if (frame == 1)
-      EXPECT_GT(
-          maxRelativeDifference(std::vector<double>(previous.begin(), previous.end()), glCurrent),
-          1e-3)
-          << "the second frame's GV changed the light";
-    previous = cpuCurrent;
-  }
+  const Grid gvs[2] = {test::randomBlocking(shared::cellCount(res + 1), random),
+                       test::randomBlocking(shared::cellCount(res + 1), random)};
+  test::expectCpuFollowsGlAcrossFrames(
+      gl, cpu,
+      [&](test::PropagationRig& rig, int frame) {
+        rig.load(injected);
+        rig.loadGv(gvs[frame], 1);
+      },
+      1e-3, "GV");
 }
 
 TEST(TetrahedralCpu, ResultsDoNotDependOnTheThreadCount) {

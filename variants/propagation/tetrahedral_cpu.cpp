@@ -28,7 +28,8 @@ namespace lpvlab {
 
 namespace {
 
-constexpr int kCodes = 12, kFaces = 4;
+constexpr int kCodes = shared::TET_PER_CUBE,
+              kFaces = shared::TET_FACES;  // tetrahedral_lattice.glsl
 constexpr int kRowPadding = 16;  // rows are a whole number of registers at every width
 
 }  // namespace
@@ -199,19 +200,25 @@ void tetrahedralMergeCpu(const TetrahedralLattice<Real>& lattice, Real* current,
         for (int x = 0; x < res.x; ++x) {
           const glm::ivec3 cube(x, y, z);
           const int index = shared::cellIndex(cube, res);
+          // The cube's cells (of its 24: the 12 it is the lower cube of and the 12 it is the
+          // upper), found once: where coefficient 0 of channel 0 lies; coefficient k of
+          // `channel` lies (channel n + k) coefficient strides further.
+          std::size_t cells[2 * kCodes];
+          int count = 0;
+          for (int code = 0; code < kCodes; ++code)
+            for (int side = 0; side < 2; ++side) {
+              const glm::ivec3 lower = cube - side * shared::tetUnitOffset(shared::tetAxis(code));
+              if (shared::tetInside(glm::ivec4(lower, code), res))
+                cells[count++] = lattice.at(0, 0, code, lower);
+            }
           for (int channel = 0; channel < 3; ++channel)
             for (int k = 0; k < n; ++k) {
+              const std::size_t offset = std::size_t(channel * n + k) * kCodes * lattice.plane;
               Real last = 0, sum = 0;
-              // The cube's 24 cells: the 12 it is the lower cube of and the 12 it is the upper.
-              for (int code = 0; code < kCodes; ++code)
-                for (int side = 0; side < 2; ++side) {
-                  const glm::ivec3 lower =
-                      cube - side * shared::tetUnitOffset(shared::tetAxis(code));
-                  if (!shared::tetInside(glm::ivec4(lower, code), res)) continue;
-                  const std::size_t at = lattice.at(channel, k, code, lower);
-                  last += lattice.current[at];
-                  sum += lattice.sum[at];
-                }
+              for (int c = 0; c < count; ++c) {
+                last += lattice.current[cells[c] + offset];
+                sum += lattice.sum[cells[c] + offset];
+              }
               const std::size_t i =
                   std::size_t(shared::coefficientIndex(channel, k, n, index, cubeCells));
               current[i] = merge * last;
