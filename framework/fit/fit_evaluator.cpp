@@ -7,6 +7,7 @@
 #include <ceres/loss_function.h>
 
 #include "framework/core/error.h"
+#include "framework/math/dual.h"
 #include "framework/experiment/experiment.h"
 #include "framework/metrics/metrics.h"
 #include "framework/pipeline/pipeline.h"
@@ -80,8 +81,7 @@ FitEvaluator::FitEvaluator(const FitSpec& spec, std::vector<FitView> views, Scen
   if (residualCount_ == 0) throw Error(spec.file + ": key 'fit.views': no views to fit on");
 }
 
-ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& x) {
-  evaluated_.push_back(x);
+std::unique_ptr<Pipeline> FitEvaluator::pipeline(const FitView& view, const std::vector<double>& x) {
   Experiment e;
   try {
     e = loadExperiment(withParameters(spec_, view.table, x), spec_.file, std::ref(scenes_));
@@ -92,9 +92,12 @@ ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& 
     throw Error("view '" + view.name + "': the target is " + std::to_string(view.target.width) +
                 "x" + std::to_string(view.target.height) + ", the run " +
                 std::to_string(e.settings.width) + "x" + std::to_string(e.settings.height));
-  // The pipeline has no state across frames: the first frame is the one `lpvlab run` writes.
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders_);
-  pipeline.renderFrame();
+  return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.strategies), shaders_);
+}
+
+// The last frame's indirect image and coverage; an Error for NaN or Inf.
+ViewRender FitEvaluator::outputs(const FitView& view, const Pipeline& pipeline,
+                                 const std::vector<double>& x) const {
   const std::vector<NamedImage> aovs = pipeline.readOutputs();
   ViewRender out{findAov(aovs, "indirect"), coverage(findAov(aovs, "depth"))};
   for (float v : out.indirect.pixels)
@@ -104,34 +107,119 @@ ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& 
   return out;
 }
 
+ViewRender FitEvaluator::render(const FitView& view, const std::vector<double>& x) {
+  evaluated_.push_back(x);
+  // The pipeline has no state across frames: the first frame is the one `lpvlab run` writes.
+  const std::unique_ptr<Pipeline> p = pipeline(view, x);
+  p->renderFrame();
+  return outputs(view, *p, x);
+}
+
+std::vector<std::string> FitEvaluator::automaticRefusals() {
+  std::vector<std::string> why(spec_.parameters.size());
+  if (spec_.derivatives == DerivativeKind::Central) {
+    why.assign(why.size(), "derivatives = \"central\"");
+    return why;
+  }
+  std::vector<double> x;
+  for (const FitParameter& parameter : spec_.parameters) x.push_back(parameter.initial);
+  for (const FitView& view : views_) {
+    if (view.heldOut) continue;
+    const std::unique_ptr<Pipeline> p = pipeline(view, x);
+    for (std::size_t j = 0; j < why.size(); ++j)
+      if (const std::string refusal = p->derivativeRefusal(spec_.parameters[j].key);
+          why[j].empty() && !refusal.empty())
+        why[j] = "view '" + view.name + "': " + refusal;
+  }
+  return why;
+}
+
+void FitEvaluator::automaticColumns(const std::vector<double>& x,
+                                    const std::vector<std::size_t>& which,
+                                    std::vector<std::vector<double>>& columns) {
+  const std::size_t n = std::size_t(residualCount_);
+  for (std::size_t j : which) columns[j].assign(n, 0.0);
+  const std::unique_ptr<ceres::LossFunction> loss = makeLoss(spec_);
+  std::size_t offset = 0;  // of the view's residuals
+  for (const FitView& view : views_) {
+    if (view.heldOut) continue;
+    // Up to kDualSlots parameters per pass over the frame.
+    for (std::size_t first = 0; first < which.size(); first += std::size_t(kDualSlots)) {
+      const std::size_t count = std::min(which.size() - first, std::size_t(kDualSlots));
+      std::vector<std::string> seeds;
+      for (std::size_t k = 0; k < count; ++k) seeds.push_back(spec_.parameters[which[first + k]].key);
+      evaluated_.push_back(x);
+      const std::unique_ptr<Pipeline> p = pipeline(view, x);
+      const Pipeline::FrameDerivatives d = p->renderDerivatives(seeds);
+      const ViewRender render = outputs(view, *p, x);
+      const double weight = viewWeight(render);
+      for (std::size_t i = 0; i < std::size_t(3) * view.target.width * view.target.height; ++i) {
+        if (render.mask.pixels[i / 3] <= 0.0f) continue;
+        const double slope =
+            residualOf(render.indirect.pixels[i], view.target.pixels[i], weight, loss.get()).slope;
+        for (std::size_t k = 0; k < count; ++k) {
+          const double derivative = d.derivatives[k].pixels[i];
+          if (!std::isfinite(derivative))
+            throw Error("view '" + view.name + "': the derivative of the indirect image by '" +
+                        seeds[k] + "' holds NaN or Inf at parameters " + nlohmann::json(x).dump());
+          columns[which[first + k]][offset + i] = slope * derivative;
+        }
+      }
+    }
+    offset += std::size_t(3) * view.target.width * view.target.height;
+  }
+}
+
+double FitEvaluator::viewWeight(const ViewRender& render) {
+  long long covered = 0;
+  for (float m : render.mask.pixels) covered += m > 0.0f;
+  return covered > 0 ? 1.0 / std::sqrt(3.0 * double(covered)) : 0.0;
+}
+
+FitEvaluator::Residual FitEvaluator::residualOf(double a, double b, double weight,
+                                                const ceres::LossFunction* loss) const {
+  double r = 0.0, slope = 0.0;  // the residual and dr/da, before the weight and the loss
+  switch (spec_.residual) {
+    case ResidualKind::Linear:
+      r = a - b;
+      slope = 1.0;
+      break;
+    case ResidualKind::Relative:
+      r = (a - b) / std::sqrt(b * b + spec_.epsilon);
+      slope = 1.0 / std::sqrt(b * b + spec_.epsilon);
+      break;
+    case ResidualKind::Log:
+      r = std::log(std::max(a, 0.0) + spec_.epsilon) - std::log(std::max(b, 0.0) + spec_.epsilon);
+      slope = a > 0.0 ? 1.0 / (a + spec_.epsilon) : 0.0;
+      break;
+  }
+  r *= weight;
+  slope *= weight;
+  if (loss) {
+    // r' = sign(r) sqrt(rho(r^2)): dr'/dr = rho'(r^2) |r| / sqrt(rho(r^2)), which tends to
+    // sqrt(rho'(0)) = 1 at r = 0 for Huber and Cauchy.
+    double rho[3];
+    loss->Evaluate(r * r, rho);
+    const double root = std::sqrt(rho[0]);
+    slope *= root > 0.0 ? rho[1] * std::abs(r) / root : std::sqrt(rho[1]);
+    r = std::copysign(root, r);
+  }
+  return {r, slope};
+}
+
 long long FitEvaluator::viewResiduals(const FitView& view, const ViewRender& render, double* out) const {
   const std::unique_ptr<ceres::LossFunction> loss = makeLoss(spec_);
   const std::size_t pixels = std::size_t(view.target.width) * view.target.height;
   long long covered = 0;
   for (std::size_t p = 0; p < pixels; ++p) covered += render.mask.pixels[p] > 0.0f;
-  const double weight = covered > 0 ? 1.0 / std::sqrt(3.0 * double(covered)) : 0.0;
+  const double weight = viewWeight(render);
   for (std::size_t p = 0; p < pixels; ++p)
-    for (int c = 0; c < 3; ++c) {
-      double& r = out[3 * p + c];
-      if (render.mask.pixels[p] <= 0.0f) {
-        r = 0.0;
-        continue;
-      }
-      const double a = render.indirect.pixels[3 * p + c], b = view.target.pixels[3 * p + c];
-      switch (spec_.residual) {
-        case ResidualKind::Linear: r = a - b; break;
-        case ResidualKind::Relative: r = (a - b) / std::sqrt(b * b + spec_.epsilon); break;
-        case ResidualKind::Log:
-          r = std::log(std::max(a, 0.0) + spec_.epsilon) - std::log(std::max(b, 0.0) + spec_.epsilon);
-          break;
-      }
-      r *= weight;
-      if (loss) {
-        double rho[3];
-        loss->Evaluate(r * r, rho);
-        r = std::copysign(std::sqrt(rho[0]), r);
-      }
-    }
+    for (int c = 0; c < 3; ++c)
+      out[3 * p + c] = render.mask.pixels[p] <= 0.0f
+                           ? 0.0
+                           : residualOf(render.indirect.pixels[3 * p + c],
+                                        view.target.pixels[3 * p + c], weight, loss.get())
+                                 .value;
   return 3 * covered;
 }
 

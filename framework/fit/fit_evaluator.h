@@ -17,6 +17,7 @@
 // robust cost sum rho(r^2).
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,13 @@
 #include "framework/io/image.h"
 #include "framework/scene/scene.h"
 
+namespace ceres {
+class LossFunction;
+}
+
 namespace lpvlab {
+
+class Pipeline;
 
 // Each scene file read once per fit: every rendering of every view gets a copy of it (the
 // experiment adds its view's lights and material overrides to the copy), so a fit of many
@@ -71,6 +78,15 @@ public:
 
   // The residuals of the fitted views at `x`, residualCount() values (0 at background pixels).
   void residuals(const std::vector<double>& x, double* out);
+  // Automatic derivatives (framework/pipeline/dual_frame.h): per parameter, "" if every fitted
+  // view's composition carries its derivatives, else why not (then the fit takes central
+  // differences for it). FitSpec::derivatives = central refuses every one.
+  std::vector<std::string> automaticRefusals();
+  // The Jacobian columns of residuals() at `x` for the parameters `which` (indices, each one
+  // automaticRefusals accepts) into columns[j], from derivatives through each fitted view's
+  // frame: a pass per view per kDualSlots parameters.
+  void automaticColumns(const std::vector<double>& x, const std::vector<std::size_t>& which,
+                        std::vector<std::vector<double>>& columns);
   int residualCount() const { return residualCount_; }
   // Covered residuals (pixels times channels) of the fitted views at the last evaluation.
   long long coveredResiduals() const { return covered_; }
@@ -88,6 +104,15 @@ public:
 private:
   // Residuals of one view into out[0 .. 3 w h); returns the covered count.
   long long viewResiduals(const FitView& view, const ViewRender& render, double* out) const;
+  // A view's pipeline with the parameter values `x`; the last frame's outputs.
+  std::unique_ptr<Pipeline> pipeline(const FitView& view, const std::vector<double>& x);
+  ViewRender outputs(const FitView& view, const Pipeline& pipeline, const std::vector<double>& x) const;
+  // One covered residual (see above) from indirect a and target b, and its derivative by a.
+  struct Residual {
+    double value, slope;
+  };
+  Residual residualOf(double a, double b, double weight, const ceres::LossFunction* loss) const;
+  static double viewWeight(const ViewRender& render);  // 1 / sqrt(3 covered pixels)
 
   const FitSpec& spec_;
   std::vector<FitView> views_;

@@ -60,6 +60,18 @@ std::string fittedToml(const FitSpec& spec, const FitResult& result) {
   return s.str();
 }
 
+namespace {
+
+// How parameter j's Jacobian column was found, for people and fit.json.
+std::string derivativeMethod(const FitResult& result, std::size_t j) {
+  if (j < result.derivatives.size() && result.derivatives[j].empty())
+    return "automatic (dual numbers through the frames)";
+  return "central differences" +
+         (j < result.derivatives.size() ? " (" + result.derivatives[j] + ")" : std::string());
+}
+
+}  // namespace
+
 nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohmann::json& before,
                        const nlohmann::json& after) {
   nlohmann::json parameters = nlohmann::json::array();
@@ -73,7 +85,8 @@ nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohm
                           {"std_dev", finiteOrNull(result.stdDev[j])},
                           {"std_dev_sandwich", finiteOrNull(result.sandwichStdDev[j])},
                           {"undetermined", bool(result.undetermined[j])},
-                          {"at_bound", bool(result.atBound[j])}});
+                          {"at_bound", bool(result.atBound[j])},
+                          {"derivatives", derivativeMethod(result, j)}});
   }
   nlohmann::json log = nlohmann::json::array();
   for (const FitIteration& it : result.log)
@@ -91,7 +104,7 @@ nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohm
                         {"loss", lossName(spec.loss)}, {"loss_scale", spec.lossScale},
                         {"step", spec.relativeStep}, {"max_iterations", spec.maxIterations},
                         {"rank_tolerance", spec.rankTolerance},
-                        {"derivatives", "central differences through the GL pipeline"},
+                        {"derivatives", derivativeName(spec.derivatives)},
                         {"covariance", "Ceres DENSE_SVD, scaled by 2 cost / (n - p)"},
                         {"sandwich_tile", spec.tile}}},
           {"views", views},
@@ -174,6 +187,9 @@ std::string fitReport(const FitSpec& spec, const FitResult& result, const nlohma
       << (std::abs(z) > 3.0 ? "differs significantly" : "not significantly different")
       << (result.atBound[j] ? " (at a bound of the fit: sigma assumes it inactive)" : "") << " |\n";
   }
+  s << "\n## Derivatives\n\n";
+  for (std::size_t j = 0; j < spec.parameters.size(); ++j)
+    s << "- `" << spec.parameters[j].key << "`: " << derivativeMethod(result, j) << "\n";
   s << "\n## Error of `indirect` against the reference's `indirect1`\n\n"
        "Before: the published values; after: the fitted ones. Gain: the relative drop of the "
        "error (positive: the fit helped).\n";

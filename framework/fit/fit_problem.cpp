@@ -23,12 +23,14 @@ double magnitude(const FitParameter& p, double x) {
 }
 
 // All views' residuals as one block of one-scalar parameter blocks (one per fitted parameter,
-// so each can have bounds and be held constant), differentiated by bounded central differences
-// (fit_problem.h). An Error of the pipeline is kept and rethrown after the solve: Ceres sees a
-// failed evaluation, never an exception.
+// so each can have bounds and be held constant), differentiated through the frames on dual
+// numbers where `automatic[j]`, else by bounded central differences (fit_problem.h). An Error of
+// the pipeline is kept and rethrown after the solve: Ceres sees a failed evaluation, never an
+// exception.
 class ImageCost final : public ceres::CostFunction {
 public:
-  explicit ImageCost(FitEvaluator& evaluator) : evaluator_(evaluator) {
+  ImageCost(FitEvaluator& evaluator, std::vector<bool> automatic)
+      : evaluator_(evaluator), automatic_(std::move(automatic)) {
     set_num_residuals(evaluator.residualCount());
     for (std::size_t i = 0; i < evaluator.spec().parameters.size(); ++i)
       mutable_parameter_block_sizes()->push_back(1);
@@ -67,7 +69,17 @@ private:
     if (!jacobians) return;
     for (std::size_t j = 0; j < x.size(); ++j) {
       if (!jacobians[j]) continue;
-      if (columns_[j].empty()) columns_[j] = column(x, j);
+      if (columns_[j].empty()) {
+        if (automatic_[j]) {
+          // Every automatic column at once: one pass per view carries up to four.
+          std::vector<std::size_t> which;
+          for (std::size_t k = 0; k < x.size(); ++k)
+            if (automatic_[k] && columns_[k].empty()) which.push_back(k);
+          evaluator_.automaticColumns(x, which, columns_);
+        } else {
+          columns_[j] = column(x, j);
+        }
+      }
       std::copy(columns_[j].begin(), columns_[j].end(), jacobians[j]);
     }
   }
@@ -88,6 +100,7 @@ private:
   }
 
   FitEvaluator& evaluator_;
+  const std::vector<bool> automatic_;
   mutable std::exception_ptr error_;
   mutable std::vector<double> x_, r_;               // the last point evaluated, its residuals
   mutable std::vector<std::vector<double>> columns_;  // and its Jacobian columns (empty: not yet)
@@ -204,7 +217,10 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
     result.log = resume->log;
   }
 
-  ImageCost cost(evaluator);
+  result.derivatives = evaluator.automaticRefusals();
+  std::vector<bool> automatic;
+  for (const std::string& why : result.derivatives) automatic.push_back(why.empty());
+  ImageCost cost(evaluator, automatic);
   ceres::Problem::Options problemOptions;
   problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problemOptions);

@@ -1,8 +1,16 @@
 #pragma once
 // The fit: bounded nonlinear least squares over the evaluator's residuals (Ceres Solver 2.1,
-// Levenberg-Marquardt with dense QR), derivatives by central differences through the GL
+// Levenberg-Marquardt with dense QR), derivatives automatic or by central differences through the
 // pipeline, then the parameters' uncertainty from Ceres's covariance (DENSE_SVD).
 //
+// Automatic derivatives (FitSpec::derivatives = automatic, the default): for each parameter whose
+// derivatives every fitted view's composition carries (Pipeline::derivativeRefusal: the strategy
+// lists it in differentiableParameters and every stage after it has a kernel on dual numbers),
+// the Jacobian column is the chain rule of the residual (linear, relative, log, with the loss)
+// times d indirect / d parameter from the frame run again on dual numbers
+// (framework/pipeline/dual_frame.h): exact, no step to choose, one pass per view for up to four
+// parameters. The others (the injection shift, which acts in steps and whose derivative is 0
+// almost everywhere; anything behind a stage without a dual kernel) take central differences:
 // Central differences: the Jacobian column of parameter j is (r(x + h e_j) - r(x - h e_j)) / 2h
 // with h = step * max(|x_j|, |initial_j|) (step * 1 when both are 0; `step` the parameter's own
 // when it gives one, else the fit's); at a bound the difference
@@ -56,6 +64,9 @@ struct FitResult {
   // At a bound, where the standard deviation (which assumes the bound inactive) says little.
   std::vector<bool> atBound;
   std::vector<double> singularValues;  // of the scaled Jacobian, largest first
+  // Per parameter how its Jacobian column was found: "" automatically (dual numbers through the
+  // frames), else why not (central differences: FitEvaluator::automaticRefusals).
+  std::vector<std::string> derivatives;
   double initialCost = 0.0, finalCost = 0.0;
   long long coveredResiduals = 0;
   std::string termination;        // Ceres's message

@@ -107,6 +107,10 @@ const char* lossName(LossKind kind) {
   return kind == LossKind::None ? "none" : kind == LossKind::Huber ? "huber" : "cauchy";
 }
 
+const char* derivativeName(DerivativeKind kind) {
+  return kind == DerivativeKind::Automatic ? "automatic" : "central";
+}
+
 FitSpec readFitSpec(const std::string& path, const std::vector<std::string>& overrides) {
   toml::table root = readExperimentTable(path);
   for (const std::string& o : overrides) applyOverride(root, o);
@@ -145,6 +149,9 @@ FitSpec readFitSpec(toml::table root, const std::string& path) {
   spec.loss = loss == "none" ? LossKind::None : loss == "huber" ? LossKind::Huber : LossKind::Cauchy;
   spec.lossScale = params.get<double>("loss_scale", 1.0, {.min = 1e-12});
   spec.relativeStep = params.get<double>("step", 1e-3, {.min = 1e-7, .max = 0.1});
+  spec.derivatives = params.getChoice("derivatives", "automatic", {"automatic", "central"}) == "central"
+                         ? DerivativeKind::Central
+                         : DerivativeKind::Automatic;
   spec.maxIterations = params.get<int>("max_iterations", 20, {.min = 0, .max = 10000});
   spec.rankTolerance = params.get<double>("rank_tolerance", 1e-3, {.min = 0.0, .max = 1.0});
   spec.tile = params.get<int>("tile", 16, {.min = 1, .max = 16384});

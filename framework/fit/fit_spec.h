@@ -8,6 +8,7 @@
 //   residual = "linear"        # linear | relative | log   (per pixel and channel)
 //   epsilon = 1e-2             # relative and log residuals: radiance added to keep black finite
 //   loss = "none"              # none | huber | cauchy, with loss_scale (in residual units)
+//   derivatives = "automatic"  # automatic (where the composition carries them) | central
 //   step = 1e-3                # central differences: relative step
 //   max_iterations = 20
 //   rank_tolerance = 1e-3      # singular values of the scaled Jacobian below this, relative to
@@ -44,6 +45,7 @@ struct FitViewSpec {
 
 enum class ResidualKind { Linear, Relative, Log };
 enum class LossKind { None, Huber, Cauchy };
+enum class DerivativeKind { Automatic, Central };
 
 struct FitSpec {
   std::string file;                       // the experiment file
@@ -56,6 +58,9 @@ struct FitSpec {
   LossKind loss = LossKind::None;
   double lossScale = 1.0;
   double relativeStep = 1e-3;
+  // Automatic: through the frame on dual numbers where the composition carries a parameter's
+  // derivatives (fit_problem.h), central differences for the others; Central: all by differences.
+  DerivativeKind derivatives = DerivativeKind::Automatic;
   int maxIterations = 20;
   double rankTolerance = 1e-3;
   int tile = 16;
@@ -71,5 +76,6 @@ FitSpec readFitSpec(toml::table root, const std::string& path);
 
 const char* residualName(ResidualKind kind);
 const char* lossName(LossKind kind);
+const char* derivativeName(DerivativeKind kind);
 
 }  // namespace lpvlab

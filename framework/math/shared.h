@@ -6,7 +6,8 @@
 // this header gets the same functions in single precision (`real` = float), as the GL kernels
 // run them: the speed of float arithmetic and half the memory traffic, and its tests compare it
 // with the double-precision functions of another translation unit (internal linkage keeps the
-// two apart).
+// two apart). One that defines LPVLAB_SHARED_DUAL gets them on dual numbers (`real` = Dual,
+// framework/math/dual.h): each result with its derivatives with respect to the parameters seeded.
 //
 // A variant's own shared GLSL (e.g. shaders/propagation/standard_faces.glsl) is compiled the
 // same way, after this header, between the same two macros:
@@ -15,6 +16,10 @@
 //   LPVLAB_SHARED_GLSL_END
 
 #include <glm/glm.hpp>
+
+#ifdef LPVLAB_SHARED_DUAL
+#include "framework/math/dual.h"
+#endif
 
 // Opens lpvlab::shared's anonymous namespace (one per translation unit, so the GLSL functions get
 // internal linkage) with the GLSL types and functions in scope, and silences the warnings about
@@ -34,8 +39,10 @@
 #define LPVLAB_SHARED_CPP 1
 
 LPVLAB_SHARED_GLSL_BEGIN
-#ifdef LPVLAB_SHARED_SINGLE_PRECISION
+#if defined(LPVLAB_SHARED_SINGLE_PRECISION)
 using real = float;
+#elif defined(LPVLAB_SHARED_DUAL)
+using real = lpvlab::Dual;
 #else
 using real = double;
 #endif
@@ -51,7 +58,11 @@ using glm::any;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
+#ifdef LPVLAB_SHARED_DUAL
+using lpvlab::dual_number::floor;  // GLM's passes std::floor, which has no Dual overload
+#else
 using glm::floor;
+#endif
 using glm::greaterThan;
 using glm::length;
 using glm::lessThan;

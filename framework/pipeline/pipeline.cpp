@@ -205,6 +205,7 @@ FrameTimes Pipeline::renderFrame() {
         carry_->carry(levels_[std::size_t(level)], levels_[std::size_t(level) + 1]);
     // The accumulated light starts as the injected light (thesis 6.9.1).
     for (LightGrid& grid : levels_) grid.accumulated.copyFrom(grid.current);
+    if (keepInjected_) injected_ = levels_.front().current.hostRead();
   });
   stage("propagation", times, [&] {
     for (int level = 0; level < levels; ++level) {

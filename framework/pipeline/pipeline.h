@@ -98,6 +98,18 @@ public:
   // Bytes per resource group (GL buffers and textures; host buffers of strategies on the CPU).
   nlohmann::json memoryReport() const;
 
+  // Derivatives through a frame (dual_frame.h): renders a frame, then runs the stages from the
+  // first seeded one on dual numbers. `seeds`: at most kDualSlots parameter keys
+  // ("<table>.<name>"), each one derivativeRefusal accepts (an Error otherwise).
+  struct FrameDerivatives {
+    Image indirect;                  // the dual pass's values, RGB, top row first
+    std::vector<Image> derivatives;  // per seed: d indirect / d parameter, RGB, top row first
+  };
+  FrameDerivatives renderDerivatives(const std::vector<std::string>& seeds);
+  // Why the derivatives with respect to `key` cannot be carried through this composition's
+  // frames, or "" if they can.
+  std::string derivativeRefusal(const std::string& key) const;
+
 private:
   template <class F>
   void stage(const std::string& name, FrameTimes& times, F&& work);
@@ -122,6 +134,8 @@ private:
   GpuTimer gpuTimer_;
   std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
   HostReadback hostReadback_;        // this frame's images read back for them
+  bool keepInjected_ = false;        // renderFrame keeps the injected grid (renderDerivatives)
+  std::vector<float> injected_;
 };
 
 }  // namespace lpvlab

@@ -22,6 +22,7 @@
 namespace lpvlab {
 
 struct Frame;
+struct DualFrame;
 class ShaderCompiler;
 class SceneGpu;
 struct GridGeometry;
@@ -125,6 +126,10 @@ public:
   // its CPU kernel when it runs on the CPU.
   virtual std::size_t memoryBytes() const { return 0; }
 
+  // Derivatives through a frame (dual_frame.h): the real-valued parameters whose derivatives this
+  // strategy's kernels on dual numbers carry (the fit takes central differences for the others).
+  virtual std::vector<std::string> differentiableParameters() const { return {}; }
+
   // The registered name, set by the registry when it creates the strategy.
   const std::string& name() const { return name_; }
   void setRegisteredName(std::string name) { name_ = std::move(name); }
@@ -145,6 +150,9 @@ public:
 class OcclusionStrategy : public Strategy {
 public:
   virtual void inject(Frame& frame) = 0;
+  // On dual numbers: sets frame.gvBlocking to the GV with its derivatives when one of
+  // differentiableParameters() is seeded (else leaves it empty: the frame's GV is a constant).
+  virtual void injectDual(DualFrame& frame) { (void)frame; }
 };
 
 // Spreads frame.lightGrid.current through the grid, accumulating into lightGrid.accumulated
@@ -153,6 +161,10 @@ class PropagationStrategy : public Strategy {
 public:
   virtual void propagate(Frame& frame) = 0;
   virtual int iterations() const = 0;  // for the throughput figure: cells * iterations / time
+  // On dual numbers: frame.accumulated from frame.injected (and frame.gvBlocking, or the frame's
+  // GV), as propagate would make it. Only where differentiates().
+  virtual bool differentiates() const { return false; }
+  virtual void propagateDual(DualFrame& frame);
 };
 
 // Adds the indirect radiance seen through each G-buffer pixel to frame.indirect (which the
@@ -161,6 +173,10 @@ public:
 class RenderingStrategy : public Strategy {
 public:
   virtual void render(Frame& frame) = 0;
+  // On dual numbers: adds to *frame.indirect from frame.accumulated, as render adds. Only where
+  // differentiates().
+  virtual bool differentiates() const { return false; }
+  virtual void renderDual(DualFrame& frame);
 };
 
 }  // namespace lpvlab

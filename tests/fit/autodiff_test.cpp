@@ -2,9 +2,10 @@
 // one Lambertian VPL on a 5^3 grid, as a function of its constants (far and side face solid
 // angles, damping). The double-precision C++ of the transfer (standard_faces.glsl's face
 // directions, normals and SH functions, which are parameter-free) is written once, templated on
-// the scalar, so that it runs on ceres::Jet (AD) as well as on double. shared.h itself cannot
-// take a Jet: it fixes `real` to double and its vectors to glm::dvec (glm's normalize and
-// friends accept only IEEE floating types), so the parameter-dependent arithmetic is here.
+// the scalar, so that it runs on ceres::Jet (AD) as well as on double: an independent model of the
+// one problem. (The kernels themselves run on lpvlab's Dual through whole frames, checked against
+// central differences in frame_derivatives_test.cpp; shared.h cannot take a ceres::Jet, which
+// GLM's vectors cannot hold: framework/math/dual.h.)
 // Checked: the C++ model equals the GL kernel (float32) run with the same constants; the AD
 // Jacobian equals central differences of the C++ (double) and of the GL kernel (float32, step
 // 1e-3 as `lpvlab fit` uses); and Ceres fits with either derivative recover the same constants.

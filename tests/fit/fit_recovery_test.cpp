@@ -48,6 +48,35 @@ TEST(FitRecovery, RecoversAPerturbedDampingWithinItsUncertainty) {
   EXPECT_EQ(result.log.front().x[0], 1.0);
 }
 
+// Automatic derivatives (dual numbers through the frames) and central differences lead the fit
+// to the same constant, and each parameter says which it got (the shift cannot be differentiated).
+TEST(FitRecovery, AutomaticAndCentralDerivativesFindTheSameConstant) {
+  test::glTestContext();
+  test::FitFiles files("derivatives");
+  FitResult results[2];
+  for (const bool central : {false, true}) {
+    const FitSpec spec = test::smallFitSpec(
+        files, 16,
+        std::string("parameters = [{ key = \"propagation.damping\", initial = 1.0, lower = 0.5, "
+                    "upper = 1.5 }, { key = \"injection.shift\", lower = 0.0, upper = 3.0, "
+                    "step = 0.25 }]\n") +
+            (central ? "derivatives = \"central\"\n" : ""));
+    FitEvaluator evaluator(spec, test::syntheticViews(spec, {0.85, 1.0}));
+    results[central] = runFit(evaluator);
+  }
+  const FitResult &automatic = results[0], &central = results[1];
+  ASSERT_EQ(automatic.derivatives.size(), 2u);
+  EXPECT_EQ(automatic.derivatives[0], "");  // damping: automatic
+  EXPECT_NE(automatic.derivatives[1].find("carries no derivatives of 'shift'"), std::string::npos)
+      << automatic.derivatives[1];
+  EXPECT_NE(central.derivatives[0].find("central"), std::string::npos) << central.derivatives[0];
+  ASSERT_FALSE(automatic.undetermined[0]);
+  ASSERT_FALSE(central.undetermined[0]);
+  EXPECT_LT(std::abs(automatic.values[0] - central.values[0]), 0.1 * central.stdDev[0])
+      << automatic.values[0] << " against " << central.values[0] << " +- " << central.stdDev[0];
+  EXPECT_LE(automatic.finalCost, central.finalCost * (1.0 + 1e-3));
+}
+
 TEST(FitRecovery, KeepsToItsBounds) {
   test::glTestContext();
   test::FitFiles files("bounds");

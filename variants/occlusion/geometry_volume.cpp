@@ -36,6 +36,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
@@ -147,6 +148,21 @@ public:
     }
   }
 
+  // Derivatives with respect to blocking_scale. gvSurfelBlocking multiplies every surfel's
+  // blocking by it and the merge of the camera's and the light's GVs picks per cell by comparing
+  // them, which scaling both keeps: the GV is s GV_1, and its derivative is GV_1, the GV at scale
+  // 1, which the same CPU kernel builds (on any backend: it reads the frame's host images).
+  std::vector<std::string> differentiableParameters() const override { return {"blocking_scale"}; }
+  void injectDual(DualFrame& dual) override {
+    if (!active_ || !dual.frame.find(kGeometryVolume)) return;
+    const Dual scale = dual.parameter("blocking_scale", blockingScale_);
+    if (!scale.hasDerivatives()) return;  // a constant: the frame's GV
+    std::vector<float> unit;
+    buildOnCpu(dual.frame, 1.0f, unit, nullptr);
+    dual.gvBlocking.resize(unit.size());
+    for (std::size_t i = 0; i < unit.size(); ++i) dual.gvBlocking[i] = scale * double(unit[i]);
+  }
+
   std::size_t memoryBytes() const override {
     return lightScratch_.size() + (hostBlocking_.size() + hostLight_.size() + hostAlbedo_.size()) * sizeof(float);
   }
@@ -193,16 +209,25 @@ private:
   // The same surfels on the CPU (geometry_volume_cpu.h), from the frame's host images, into host
   // copies of the GV (and its albedo) that replace the cleared GL buffers.
   void injectOnCpu(Frame& frame) {
+    GeometryVolume& gv = frame.get(kGeometryVolume);
+    SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
+    buildOnCpu(frame, blockingScale_, hostBlocking_, albedo ? &hostAlbedo_ : nullptr);
+    uploadFloats(hostBlocking_, gv.blocking);
+    if (albedo) uploadFloats(hostAlbedo_, albedo->albedo);
+  }
+
+  // The GV of the frame's surfels at blocking scale `scale` into `blocking` (and `albedo`).
+  void buildOnCpu(Frame& frame, float scale, std::vector<float>& blocking,
+                  std::vector<float>* albedo) {
     if (!frame.host) throw Error("[occlusion] geometry_volume (CPU): the frame has no host images");
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the G-buffer and RSMs, before reading them
-    GeometryVolume& gv = frame.get(kGeometryVolume);
+    const GeometryVolume& gv = frame.get(kGeometryVolume);
     const std::size_t floats = std::size_t(gv.geometry.cellCount()) * GeometryVolume::kCoefficients;
-    hostBlocking_.assign(floats, 0.0f);
-    SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
-    if (albedo) hostAlbedo_.assign(std::size_t(gv.geometry.cellCount()) * 4, 0.0f);
-    const GvTarget target{.gv = gv.geometry, .blockingScale = blockingScale_,
-                          .blocking = hostBlocking_.data(),
-                          .albedo = albedo ? hostAlbedo_.data() : nullptr};
+    blocking.assign(floats, 0.0f);
+    if (albedo) albedo->assign(std::size_t(gv.geometry.cellCount()) * 4, 0.0f);
+    const GvTarget target{.gv = gv.geometry, .blockingScale = scale,
+                          .blocking = blocking.data(),
+                          .albedo = albedo ? albedo->data() : nullptr};
     if (fromCamera_) {
       const GBuffer& g = frame.gbuffer;
       addCameraSurfelsCpu({.position = &frame.host->image(g.position),
@@ -220,13 +245,11 @@ private:
         GvTarget lightTarget = target;
         lightTarget.blocking = hostLight_.data();
         addRsmSurfelsCpu(rsm, maps.records, lightTarget);
-        mergeGeometryVolumesCpu(hostBlocking_.data(), hostLight_.data(), gv.geometry.cellCount());
+        mergeGeometryVolumesCpu(blocking.data(), hostLight_.data(), gv.geometry.cellCount());
       } else {
         addRsmSurfelsCpu(rsm, maps.records, target);
       }
     }
-    uploadFloats(hostBlocking_, gv.blocking);
-    if (albedo) uploadFloats(hostAlbedo_, albedo->albedo);
   }
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {

@@ -32,6 +32,7 @@
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/directed_cpu.h"
@@ -66,6 +67,7 @@ public:
     const GridGeometry& grid = setup.grid;
     const Requirements& requirements = setup.requirements;
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    shOrder_ = requirements.shOrder;
     if (runsOnCpu(requirements)) {
       cpu_ = StandardCpuFrame(requirements.shOrder, angles.farFace, angles.sideFace,
                               LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float));
@@ -152,6 +154,23 @@ public:
     return bytes;
   }
 
+  // Derivatives of what comes before it (the GV's): the standard CPU kernel on dual numbers with
+  // the reprojected cells on Dual (their weights are constants: the geometric solid angles).
+  bool differentiates() const override { return true; }
+  void propagateDual(DualFrame& dual) override {
+    const LightGrid& grid = dual.frame.lightGrid;
+    downloadFloats(dual.frame.get(kNormalGrid).normals, std::size_t(4) * grid.geometry.cellCount(),
+                   cpuNormals_);
+    const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
+    const StandardFaceTable<Dual> table =
+        makeStandardFaceTable<Dual, Dual>(shOrder_, Dual(angles.farFace), Dual(angles.sideFace));
+    const ReprojectedCells<Dual> cells =
+        makeDirectedCells(table, grid.geometry.resolution, cpuNormals_, iterations_, dilation_,
+                          angles.farFace, angles.sideFace);
+    StandardCpuFrame::propagateDual(dual, shOrder_, Dual(angles.farFace), Dual(angles.sideFace),
+                                    {.count = iterations_, .reprojected = &cells});
+  }
+
 private:
   // The reprojected cells of this level are found again only when its injected normals (or its
   // grid) changed; in a static scene the warm-up frame pays for them.
@@ -171,6 +190,7 @@ private:
 
   int iterations_;
   bool dilation_;
+  int shOrder_ = 1;
   Program gather_, dilate_;
   DualBuffer scratch_;  // swapped with the grid's current buffer
   gl::Buffer normals_[2];  // dilation ping-pong

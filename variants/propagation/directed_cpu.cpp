@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/core/error.h"
+#include "framework/math/dual.h"
 #include "framework/math/shared.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -142,5 +143,9 @@ template ReprojectedCells<double> makeDirectedCells<double>(const StandardFaceTa
                                                             const glm::ivec3&,
                                                             const std::vector<float>&, int, bool,
                                                             double, double);
+template ReprojectedCells<Dual> makeDirectedCells<Dual>(const StandardFaceTable<Dual>&,
+                                                        const glm::ivec3&,
+                                                        const std::vector<float>&, int, bool,
+                                                        double, double);
 
 }  // namespace lpvlab

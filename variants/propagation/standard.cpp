@@ -41,6 +41,7 @@
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/standard_cpu_frame.h"
@@ -80,6 +81,7 @@ public:
   void prepare(const StrategySetup& setup) override {
     const Requirements& requirements = setup.requirements;
     const GridGeometry& grid = setup.grid;
+    shOrder_ = requirements.shOrder;
     if (runsOnCpu(requirements)) {
       cpu_ = StandardCpuFrame(requirements.shOrder, damping_ * farFace_, damping_ * sideFace_,
                               LightGrid::bytesPerGrid(grid, requirements.shOrder) / sizeof(float));
@@ -128,6 +130,19 @@ public:
 
   int iterations() const override { return iterations_; }
 
+  // Derivatives: the standard CPU kernel on dual numbers (scattering gives gathering's grid).
+  std::vector<std::string> differentiableParameters() const override {
+    return {"far_face_solid_angle", "side_face_solid_angle", "damping"};
+  }
+  bool differentiates() const override { return true; }
+  void propagateDual(DualFrame& frame) override {
+    const Dual damping = frame.parameter("damping", damping_);
+    StandardCpuFrame::propagateDual(frame, shOrder_,
+                                    damping * frame.parameter("far_face_solid_angle", farFace_),
+                                    damping * frame.parameter("side_face_solid_angle", sideFace_),
+                                    {.count = iterations_, .bounces = bounces_});
+  }
+
   // Per cell-iteration: standard_work.h; bounces run every face twice on GL (on the CPU only the
   // blocked faces, not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
@@ -146,6 +161,7 @@ private:
   bool scatter_;
   bool bounces_;
   double farFace_, sideFace_, damping_;
+  int shOrder_ = 1;
   Program program_;
   DualBuffer scratch_;  // swapped with the grid's current buffer
   bool onCpu_ = false;

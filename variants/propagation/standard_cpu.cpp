@@ -12,6 +12,7 @@
 #include "framework/core/cpu_dispatch.h"
 #include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
+#include "framework/math/dual.h"
 #include "framework/math/shared.h"
 #include "variants/propagation/cpu_rows.h"
 
@@ -59,16 +60,17 @@ constexpr bool lobeUsesBasis(int normal, int k) { return k < 9 && basisLivesOn(k
 
 }  // namespace
 
-template <class Real>
-StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
-                                              double sideSolidAngle) {
+template <class Real, class Angle>
+StandardFaceTable<Real> makeStandardFaceTable(int shOrder,
+                                              std::type_identity_t<Angle> farSolidAngle,
+                                              std::type_identity_t<Angle> sideSolidAngle) {
   if (shOrder < 1 || shOrder > 3)
     throw Error("standard propagation (CPU): SH order " + std::to_string(shOrder) +
                 " is not 1, 2 or 3");
-  for (double omega : {farSolidAngle, sideSolidAngle})
-    if (!(omega >= 0.0) || !std::isfinite(omega))
-      throw Error("standard propagation (CPU): face solid angle " + std::to_string(omega) +
-                  " is not a finite non-negative number");
+  for (const Angle& omega : {farSolidAngle, sideSolidAngle})
+    if (!(omega >= Angle(0.0)) || !std::isfinite(double(omega)))
+      throw Error("standard propagation (CPU): face solid angle " +
+                  std::to_string(double(omega)) + " is not a finite non-negative number");
   constexpr int kDirections = StandardFaceTable<Real>::kDirections;
   StandardFaceTable<Real> table{};
   table.coefficients = (shOrder + 1) * (shOrder + 1);
@@ -95,7 +97,10 @@ StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
                     "expects (standard_faces.glsl changed?)");
       filled[normal] = true;
       const glm::dvec3 w = shared::standardFaceDirection(d, f);
-      const double omega = shared::standardFaceSolidAngle(f, farSolidAngle, sideSolidAngle);
+      // standardFaceSolidAngle picks one of the two angles, so it is linear in them: as its
+      // weights on each, an Angle with derivatives keeps them (1 x + 0 y = x exactly).
+      const Angle omega = farSolidAngle * shared::standardFaceSolidAngle(f, 1.0, 0.0) +
+                          sideSolidAngle * shared::standardFaceSolidAngle(f, 0.0, 1.0);
       for (int k = 0; k < table.coefficients; ++k)
         table.scaledBasis[direction][normal][k] = Real(omega * shared::shBasisAt(k, w));
     }
@@ -114,6 +119,7 @@ StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
 
 template StandardFaceTable<float> makeStandardFaceTable<float>(int, double, double);
 template StandardFaceTable<double> makeStandardFaceTable<double>(int, double, double);
+template StandardFaceTable<Dual> makeStandardFaceTable<Dual, Dual>(int, Dual, Dual);
 
 namespace {
 
@@ -126,112 +132,7 @@ int standardCpuRowWidth(int cellsPerRow) {
   return (cellsPerRow + kRowPadding - 1) / kRowPadding * kRowPadding;
 }
 
-namespace {
-
-// Per table entry (light from neighbour `direction` into the face with `normal`), the face index
-// f of standard_faces.glsl for the flow -offset, or -1 for the shared face.
-struct FaceGeometry {
-  int face[6][6];
-  glm::dvec3 flow[6];  // -offset: the direction light flows
-};
-
-FaceGeometry faceGeometry(const glm::ivec3 (&offset)[6]) {
-  FaceGeometry g{};
-  for (int direction = 0; direction < 6; ++direction) {
-    g.flow[direction] = -glm::dvec3(offset[direction]);
-    for (int normal = 0; normal < 6; ++normal) g.face[direction][normal] = -1;
-    for (int f = 0; f < shared::STANDARD_FACES; ++f) {
-      const glm::dvec3 n = shared::standardFaceNormal(g.flow[direction], f);
-      for (int normal = 0; normal < 6; ++normal)
-        if (glm::dvec3(offset[normal]) == n) g.face[direction][normal] = f;
-    }
-  }
-  return g;
-}
-
-}  // namespace
-
-template <class Real>
-StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& table,
-                                              const glm::ivec3& res, const float* gvBlocking,
-                                              const float* gvAlbedo) {
-  StandardOcclusion<Real> o;
-  o.resolution = res;
-  o.coefficients = table.coefficients;
-  o.width = standardCpuRowWidth(res.x);
-  const int rows = res.y * res.z, N = table.coefficients;
-  constexpr int kFaces = StandardOcclusion<Real>::kFaces;
-  o.transmittance.assign(std::size_t(kFaces) * rows * o.width, Real(1));
-  const glm::ivec3 gvRes = res + 1;
-  const std::size_t gvCells = std::size_t(gvRes.x) * gvRes.y * gvRes.z;
-  shared::GvLookup blocking{gvBlocking};  // (its GLSL functions are not const members)
-  // The albedo's (rho A, A) are interpolated as the blocking is (standard_transfer.glsl's
-  // gvAlbedoFromCorners): the same lookup over a coefficient-major copy.
-  std::vector<float> albedoByComponent;
-  if (gvAlbedo) {
-    albedoByComponent.resize(4 * gvCells);
-    for (std::size_t i = 0; i < gvCells; ++i)
-      for (std::size_t c = 0; c < 4; ++c) albedoByComponent[c * gvCells + i] = gvAlbedo[4 * i + c];
-  }
-  shared::GvLookup albedo{albedoByComponent.data()};
-  const FaceGeometry faces = faceGeometry(table.offset);
-  // Whether GV cell c blocks anything (a cell whose eight corners are all empty lets every face
-  // through whole, T = 1, and blocks nothing to bounce).
-  auto empty = [&](const glm::ivec3& c) {
-    const std::size_t i = std::size_t(shared::cellIndex(c, gvRes));
-    for (std::size_t k = 0; k < 4; ++k)
-      if (gvBlocking[k * gvCells + i] != 0.0f) return false;
-    return true;
-  };
-  std::vector<std::vector<typename StandardOcclusion<Real>::Bounce>> bounces(gvAlbedo ? rows : 0);
-  std::vector<std::vector<Real>> lobes(gvAlbedo ? rows : 0);
-  tbb::parallel_for(tbb::blocked_range<int>(0, rows), [&](const tbb::blocked_range<int>& range) {
-    for (int row = range.begin(); row < range.end(); ++row) {
-      const int y = row % res.y, z = row / res.y;
-      for (int x = 0; x < res.x; ++x) {
-        const glm::ivec3 cell(x, y, z);
-        bool blocked = false;
-        for (int corner = 0; corner < 8 && !blocked; ++corner)
-          blocked = !empty(cell + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1));
-        if (!blocked) continue;
-        const glm::dvec3 centre = glm::dvec3(cell) + 0.5;
-        for (int direction = 0; direction < 6; ++direction)
-          for (int normal = 0; normal < 6; ++normal) {
-            const int f = faces.face[direction][normal];
-            if (f < 0) continue;
-            const glm::dvec3 flow = faces.flow[direction];
-            const glm::dvec3 w = shared::standardFaceDirection(flow, f);
-            // Light from the neighbour into this cell: the shared face is this cell's.
-            const glm::dvec3 in =
-                shared::standardFaceCrossing(centre + glm::dvec3(table.offset[direction]), flow, f);
-            const double t = shared::gvTransmittance(blocking.gvBlockingAt(in, gvRes), w);
-            o.transmittance[(std::size_t(standardFaceSlot(direction, normal)) * rows + row) * o.width + x] = Real(t);
-            if (!gvAlbedo) continue;
-            // This cell's own light leaving along `flow` through the same kind of face.
-            const glm::dvec3 out = shared::standardFaceCrossing(centre, flow, f);
-            const glm::dvec4 b = blocking.gvBlockingAt(out, gvRes);
-            const double tOut = shared::gvTransmittance(b, w);
-            if (!(tOut < 1.0)) continue;
-            const glm::dvec3 rho = shared::gvMeanAlbedo(albedo.gvBlockingAt(out, gvRes));
-            if (rho == glm::dvec3(0.0)) continue;
-            const glm::dvec3 n = shared::gvSurfaceNormal(b, w);
-            typename StandardOcclusion<Real>::Bounce bounce{x, direction, normal, {}};
-            for (int c = 0; c < 3; ++c) bounce.weight[c] = Real(rho[c] * (1.0 - tOut));
-            bounces[std::size_t(row)].push_back(bounce);
-            for (int k = 0; k < N; ++k)
-              lobes[std::size_t(row)].push_back(Real(shared::shCosineLobeAt(k, n) / shared::PI));
-          }
-      }
-    }
-  });
-  o.firstBounce.assign(std::size_t(rows) + 1, 0);
-  for (int row = 0; row < rows && gvAlbedo; ++row) {
-    o.firstBounce[std::size_t(row) + 1] = o.firstBounce[std::size_t(row)] + bounces[std::size_t(row)].size();
-    o.bounces.insert(o.bounces.end(), bounces[std::size_t(row)].begin(), bounces[std::size_t(row)].end());
-    o.bounceLobes.insert(o.bounceLobes.end(), lobes[std::size_t(row)].begin(), lobes[std::size_t(row)].end());
-  }
-  return o;
-}
+#include "variants/propagation/standard_occlusion_body.h"
 
 template StandardOcclusion<float> makeStandardOcclusion<float>(const StandardFaceTable<float>&,
                                                                const glm::ivec3&, const float*,
@@ -243,7 +144,10 @@ template StandardOcclusion<double> makeStandardOcclusion<double>(const StandardF
 namespace {
 
 using cpu_rows::copyShortRun;
+using cpu_rows::loadRegister;
 using cpu_rows::RegisterOf;
+using cpu_rows::select;
+using cpu_rows::storeRegister;
 
 // What the cells of one register of a target row, starting at x, receive, one channel: from each
 // of the six neighbours (their rows, from[d][k * stride[d] + x]), through the five faces of a
@@ -280,7 +184,7 @@ template <int N, int Bytes, bool Occluded, bool Reprojects, class Real>
     if (only >= 0 && d != only) continue;
     V s[N];
 #pragma GCC unroll 16
-    for (int k = 0; k < N; ++k) std::memcpy(&s[k], from[d] + k * stride[d] + x, sizeof(V));
+    for (int k = 0; k < N; ++k) s[k] = loadRegister<V>(from[d] + k * stride[d] + x);
 #pragma GCC unroll 6
     for (int normal = 0; normal < 6; ++normal) {
       if (normal == d) continue;  // the shared face receives nothing
@@ -290,29 +194,26 @@ template <int N, int Bytes, bool Occluded, bool Reprojects, class Real>
         for (int k = 0; k < N; ++k)
           if (faceUsesBasis(d, normal, k)) intensity += s[k] * table.scaledBasis[d][normal][k];
         const V zero = {};
-        V transmittance;
-        std::memcpy(&transmittance, t + standardFaceSlot(d, normal) * tStride + x, sizeof(V));
-        fluxByNormal[normal] += transmittance * (intensity > zero ? intensity : zero);
+        const V transmittance = loadRegister<V>(t + standardFaceSlot(d, normal) * tStride + x);
+        fluxByNormal[normal] += transmittance * select(intensity > zero, intensity, zero);
       } else {
         V total = fluxByNormal[normal];
 #pragma GCC unroll 16
         for (int k = 0; k < N; ++k)
           if (faceUsesBasis(d, normal, k)) total += s[k] * table.scaledBasis[d][normal][k];
-        fluxByNormal[normal] = total > fluxByNormal[normal] ? total : fluxByNormal[normal];
+        fluxByNormal[normal] = select(total > fluxByNormal[normal], total, fluxByNormal[normal]);
       }
     }
   }
   // Reprojecting lanes: r = sum_n flux_n faceWeight_n, re-emitted as r * lobe_k.
   [[maybe_unused]] V redirected = {};
-  [[maybe_unused]] decltype(V{} < V{}) reprojecting = {};
+  [[maybe_unused]] decltype(V{} < V{}) reprojecting{};
   if constexpr (Reprojects) {
-    V since;
-    std::memcpy(&since, reprojected->since + x, sizeof(V));
+    const V since = loadRegister<V>(reprojected->since + x);
     reprojecting = since <= reprojected->iteration;
 #pragma GCC unroll 6
     for (int normal = 0; normal < 6; ++normal) {
-      V weight;
-      std::memcpy(&weight, reprojected->faceWeight + normal * reprojected->stride + x, sizeof(V));
+      const V weight = loadRegister<V>(reprojected->faceWeight + normal * reprojected->stride + x);
       redirected += fluxByNormal[normal] * weight;
     }
   }
@@ -325,10 +226,10 @@ template <int N, int Bytes, bool Occluded, bool Reprojects, class Real>
     if constexpr (Reprojects) {
       V lobe = {};
       if (k < ReprojectedCells<Real>::kMaxLobeCoefficients)
-        std::memcpy(&lobe, reprojected->lobe + k * reprojected->stride + x, sizeof(V));
-      sum = reprojecting ? redirected * lobe : sum;
+        lobe = loadRegister<V>(reprojected->lobe + k * reprojected->stride + x);
+      sum = select(reprojecting, redirected * lobe, sum);
     }
-    std::memcpy(out + k * width + x, &sum, sizeof sum);
+    storeRegister(out + k * width + x, sum);
   }
 }
 
@@ -344,7 +245,7 @@ inline void addBounces(const StandardFaceTable<Real>& table, const StandardOcclu
   for (std::size_t i = o.firstBounce[std::size_t(row)]; i < o.firstBounce[std::size_t(row) + 1]; ++i) {
     const typename StandardOcclusion<Real>::Bounce& b = o.bounces[i];
     const Real* basis = table.scaledBasis[b.direction][b.normal];
-    Real intensity = 0;
+    Real intensity(0);
     for (int k = 0; k < N; ++k) intensity += own[k * plane + std::size_t(b.x)] * basis[k];
     if (!(intensity > Real(0))) continue;
     const Real reemitted = b.weight[channel] * intensity;
@@ -369,24 +270,15 @@ template <int Bytes, class Real>
   constexpr int kLanes = RegisterOf<Real, Bytes>::kLanes;
   int x = 0;
   for (; x + kLanes <= cells; x += kLanes) {
-    V value, total;
-    std::memcpy(&value, computed + x, sizeof(V));
+    V value = loadRegister<V>(computed + x);
     if (output == RowOutput::Add) {
-      std::memcpy(&total, to + x, sizeof(V));
-      total += value;
-      std::memcpy(to + x, &total, sizeof(V));
+      storeRegister(to + x, loadRegister<V>(to + x) + value);
       continue;
     }
-    std::memcpy(to + x, &value, sizeof(V));
+    storeRegister(to + x, value);
     if (output == RowOutput::Store) continue;
-    if (output == RowOutput::StoreAndAccumulateWithSource) {
-      V previous;
-      std::memcpy(&previous, own + x, sizeof(V));
-      value += previous;
-    }
-    std::memcpy(&total, sum + x, sizeof(V));
-    total += value;
-    std::memcpy(sum + x, &total, sizeof(V));
+    if (output == RowOutput::StoreAndAccumulateWithSource) value += loadRegister<V>(own + x);
+    storeRegister(sum + x, loadRegister<V>(sum + x) + value);
   }
   for (; x < cells; ++x) {
     if (output == RowOutput::Add) {
@@ -693,5 +585,10 @@ template void standardGatherCpu<double>(const StandardFaceTable<double>&, const 
                                         const double*, double*, double*, const std::string&, int,
                                         const StandardOcclusion<double>*, StepAccumulation,
                                         const ReprojectedCells<double>*, int);
+// Derivatives (framework/math/dual.h): gathering only, which gives scattering's grid too.
+template void standardGatherCpu<Dual>(const StandardFaceTable<Dual>&, const glm::ivec3&,
+                                      const Dual*, Dual*, Dual*, const std::string&, int,
+                                      const StandardOcclusion<Dual>*, StepAccumulation,
+                                      const ReprojectedCells<Dual>*, int);
 
 }  // namespace lpvlab

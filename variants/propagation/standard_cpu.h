@@ -119,18 +119,23 @@ constexpr int standardFaceSlot(int direction, int normal) {
   return direction * 5 + (normal < direction ? normal : normal - 1);
 }
 
-// Throws an Error for an SH order outside 1..3 or a negative or non-finite solid angle.
-template <class Real>
-StandardFaceTable<Real> makeStandardFaceTable(int shOrder, double farSolidAngle,
-                                              double sideSolidAngle);
+// Throws an Error for an SH order outside 1..3 or a negative or non-finite solid angle. `Angle`:
+// double, or Dual with Real = Dual (the table's derivatives with respect to the solid angles):
+// makeStandardFaceTable<Dual, Dual>.
+template <class Real, class Angle = double>
+StandardFaceTable<Real> makeStandardFaceTable(int shOrder,
+                                              std::type_identity_t<Angle> farSolidAngle,
+                                              std::type_identity_t<Angle> sideSolidAngle);
 
 // What a GV (geometry_volume.h's layout, on the GV's cells: one more than `resolution` per axis)
 // does to the faces of a grid of `resolution`; with `gvAlbedo` (its (rho A, A) per GV cell) also
-// the bounces. `table` gives the faces' solid angles and basis.
-template <class Real>
+// the bounces. `table` gives the faces' solid angles and basis. `GvValue`: float, or Dual with
+// Real = Dual (a GV with derivatives: the faces' transmittances and bounces get them).
+template <class Real, class GvValue = float>
 StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& table,
-                                              const glm::ivec3& resolution, const float* gvBlocking,
-                                              const float* gvAlbedo);
+                                              const glm::ivec3& resolution,
+                                              const GvValue* gvBlocking,
+                                              std::type_identity_t<const GvValue*> gvAlbedo);
 
 // The multiply-adds the kernel does per cell-iteration and channel with `coefficients` per
 // channel: the face products it does not skip plus the lobes' (each face's max and add not

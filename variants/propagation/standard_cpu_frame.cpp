@@ -1,5 +1,6 @@
 #include "variants/propagation/standard_cpu_frame.h"
 
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 
 namespace lpvlab {
@@ -45,26 +46,71 @@ void StandardCpuFrame::propagate(LightGrid& grid, const Iterations& iterations) 
   iterate(grid, nullptr, nullptr, iterations);
 }
 
+namespace {
+
+// `count` steps from `current` (left holding the last step's light; `next` its partner),
+// accumulating into `accumulated`, iterations paired (pairedAccumulation); the GV's faces
+// (`occlusion`) from its first occluded iteration on. Float frames and dual ones alike.
+template <class Real>
+void iterateGrid(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+                 std::vector<Real>& current, std::vector<Real>& next,
+                 std::vector<Real>& accumulated, int count, bool scatter,
+                 const StandardOcclusion<Real>* occlusion, int firstOccludedIteration,
+                 const ReprojectedCells<Real>* reprojected) {
+  next.resize(current.size());
+  for (int i = 0; i < count; ++i) {
+    const StandardOcclusion<Real>* faces = i >= firstOccludedIteration ? occlusion : nullptr;
+    const StepAccumulation accumulation = pairedAccumulation(i, count);
+    if (reprojected)
+      standardGatherCpu<Real>(table, resolution, current.data(), next.data(), accumulated.data(),
+                              "auto", 0, faces, accumulation, reprojected, i);
+    else
+      standardIterationCpu<Real>(scatter, table, resolution, current.data(), next.data(),
+                                 accumulated.data(), "auto", 0, faces, accumulation);
+    current.swap(next);  // the grid now holds the new light
+  }
+}
+
+}  // namespace
+
 void StandardCpuFrame::iterate(LightGrid& grid, const GeometryVolume* gv,
                                const StandardOcclusion<float>* occlusion,
                                const Iterations& iterations) {
-  std::vector<float>& current = grid.current.host();
-  std::vector<float>& accumulated = grid.accumulated.host();
-  next_.resize(current.size());
-  for (int i = 0; i < iterations.count; ++i) {
-    const StandardOcclusion<float>* faces =
-        gv && i >= gv->firstOccludedIteration ? occlusion : nullptr;
-    const StepAccumulation accumulation = pairedAccumulation(i, iterations.count);
-    if (iterations.reprojected)
-      standardGatherCpu<float>(table_, grid.geometry.resolution, current.data(), next_.data(),
-                               accumulated.data(), "auto", 0, faces, accumulation,
-                               iterations.reprojected, i);
-    else
-      standardIterationCpu<float>(iterations.scatter, table_, grid.geometry.resolution,
-                                  current.data(), next_.data(), accumulated.data(), "auto", 0,
-                                  faces, accumulation);
-    current.swap(next_);  // the grid's host side now holds the new light
+  iterateGrid<float>(table_, grid.geometry.resolution, grid.current.host(), next_,
+                     grid.accumulated.host(), iterations.count, iterations.scatter,
+                     gv ? occlusion : nullptr, gv ? gv->firstOccludedIteration : 0,
+                     iterations.reprojected);
+}
+
+void StandardCpuFrame::propagateDual(DualFrame& dual, int shOrder, Dual farSolidAngle,
+                                     Dual sideSolidAngle, const DualIterations& iterations) {
+  Frame& frame = dual.frame;
+  const glm::ivec3 resolution = frame.lightGrid.geometry.resolution;
+  const StandardFaceTable<Dual> table =
+      makeStandardFaceTable<Dual, Dual>(shOrder, farSolidAngle, sideSolidAngle);
+  // The GV's faces on Dual: from its derivatives when the occlusion stage made them, else from
+  // the frame's GV as constants.
+  const GeometryVolume* gv = frame.find(kGeometryVolume);
+  StandardOcclusion<Dual> occlusion;
+  if (gv) {
+    std::vector<float> values;
+    downloadFloats(gv->blocking, std::size_t(gv->geometry.cellCount()) * GeometryVolume::kCoefficients,
+                   values);
+    const std::vector<Dual> blocking = dual.gvBlocking.empty() ? constantDuals(values) : dual.gvBlocking;
+    std::vector<Dual> albedo;
+    if (iterations.bounces) {
+      downloadFloats(frame.get(kSurfaceAlbedo).albedo, std::size_t(gv->geometry.cellCount()) * 4,
+                     values);
+      albedo = constantDuals(values);
+    }
+    occlusion = makeStandardOcclusion<Dual, Dual>(table, resolution, blocking.data(),
+                                                  iterations.bounces ? albedo.data() : nullptr);
   }
+  std::vector<Dual> current = dual.injected, next;
+  dual.accumulated = dual.injected;  // the accumulated light starts as the injected light
+  iterateGrid<Dual>(table, resolution, current, next, dual.accumulated, iterations.count, false,
+                    gv ? &occlusion : nullptr, gv ? gv->firstOccludedIteration : 0,
+                    iterations.reprojected);
 }
 
 std::size_t StandardCpuFrame::memoryBytes() const {

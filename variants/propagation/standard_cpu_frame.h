@@ -9,10 +9,12 @@
 #include <map>
 #include <vector>
 
+#include "framework/math/dual.h"
 #include "variants/propagation/standard_cpu.h"
 
 namespace lpvlab {
 
+struct DualFrame;
 struct Frame;
 struct GeometryVolume;
 struct LightGrid;
@@ -39,6 +41,17 @@ public:
   void propagate(Frame& frame, const Iterations& iterations);
   // The same on a grid of a strategy's own (the subsurface LPV's), without a GV.
   void propagate(LightGrid& grid, const Iterations& iterations);
+
+  // On dual numbers (dual_frame.h): frame.accumulated from frame.injected, with the face solid
+  // angles (damping included) as Duals, the GV's derivatives if frame.gvBlocking has them and
+  // `reprojected` made on Dual. The same iterations as propagate (gathering: scattering's grid).
+  struct DualIterations {
+    int count = 0;
+    bool bounces = false;
+    const ReprojectedCells<Dual>* reprojected = nullptr;
+  };
+  static void propagateDual(DualFrame& frame, int shOrder, Dual farSolidAngle,
+                            Dual sideSolidAngle, const DualIterations& iterations);
 
   const StandardFaceTable<float>& table() const { return table_; }
   std::size_t memoryBytes() const;

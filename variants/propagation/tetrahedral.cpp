@@ -41,6 +41,7 @@
 #include "framework/math/shared.h"
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/tetrahedral_cpu.h"
@@ -78,6 +79,7 @@ public:
     ShaderCompiler& shaders = setup.shaders;
     const GridGeometry& grid = setup.grid;
     const Requirements& requirements = setup.requirements;
+    shOrder_ = requirements.shOrder;
     if (runsOnCpu(requirements)) {
       cpuTable_ = makeTetrahedralTable<float>(requirements.shOrder, faceIntegrals_);
       onCpu_ = true;
@@ -208,19 +210,53 @@ private:
         level.gv = cpuGv_;
       }
     }
-    std::vector<float>& current = grid.current.host();
-    tetrahedralSplitCpu(current.data(), level.lattice);
+    step(cpuTable_, level.lattice, gv ? &level.occlusion : nullptr, gv, grid.current.host(),
+         grid.accumulated.host());
+  }
+
+  // Split `current` onto the lattice, the steps, merge back into `current` (the last step) and
+  // `accumulated` (added to): float frames and dual ones alike.
+  template <class Real>
+  void step(const TetrahedralTable<Real>& table, TetrahedralLattice<Real>& lattice,
+            const TetrahedralOcclusion<Real>* occlusion, const GeometryVolume* gv,
+            std::vector<Real>& current, std::vector<Real>& accumulated) const {
+    tetrahedralSplitCpu(current.data(), lattice);
     const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
     const CpuKernelLevel instructions = widestCpuKernelLevel();
     for (int i = 0; i < iterations_; ++i)
-      tetrahedralStepCpu(cpuTable_, level.lattice,
-                         gv && i >= firstOccluded ? &level.occlusion : nullptr, instructions,
-                         pairedAccumulation(i, iterations_));
-    tetrahedralMergeCpu(level.lattice, current.data(), grid.accumulated.host().data());
+      tetrahedralStepCpu(table, lattice, occlusion && i >= firstOccluded ? occlusion : nullptr,
+                         instructions, pairedAccumulation(i, iterations_));
+    tetrahedralMergeCpu(lattice, current.data(), accumulated.data());
   }
+
+public:
+  // Derivatives of what comes before it (the GV's): the same kernels on dual numbers.
+  bool differentiates() const override { return true; }
+  void propagateDual(DualFrame& dual) override {
+    const LightGrid& grid = dual.frame.lightGrid;
+    const glm::ivec3 res = grid.geometry.resolution;
+    const TetrahedralTable<Dual> table = makeTetrahedralTable<Dual>(shOrder_, faceIntegrals_);
+    TetrahedralLattice<Dual> lattice(res, table.coefficients);
+    const GeometryVolume* gv = dual.frame.find(kGeometryVolume);
+    TetrahedralOcclusion<Dual> occlusion;
+    if (gv) {
+      std::vector<float> values;
+      downloadFloats(gv->blocking,
+                     std::size_t(gv->geometry.cellCount()) * GeometryVolume::kCoefficients, values);
+      const std::vector<Dual> blocking =
+          dual.gvBlocking.empty() ? constantDuals(values) : dual.gvBlocking;
+      occlusion = makeTetrahedralOcclusion<Dual, Dual>(lattice, blocking.data());
+    }
+    std::vector<Dual> current = dual.injected;
+    dual.accumulated = dual.injected;  // the accumulated light starts as the injected light
+    step(table, lattice, gv ? &occlusion : nullptr, gv, current, dual.accumulated);
+  }
+
+private:
 
   int iterations_;
   bool faceIntegrals_;
+  int shOrder_ = 1;
   Program split_, gather_, merge_;
   gl::Buffer current_, scratch_, sum_, faceIntegralTable_;
   bool onCpu_ = false;

@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "framework/core/error.h"
+#include "framework/math/dual.h"
 #include "framework/math/shared.h"
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
@@ -18,7 +19,7 @@ LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"
 using glm::mix;
 // The GV lookup over one GV buffer (coefficient-major, 4 values per GV cell).
-struct TetGvLookup {
+struct GvLookup {
   const float* gvBlocking;
 #include "shaders/common/geometry_volume_lookup.glsl"
 };
@@ -69,6 +70,7 @@ TetrahedralTable<Real> makeTetrahedralTable(int shOrder, bool faceIntegrals) {
 
 template TetrahedralTable<float> makeTetrahedralTable<float>(int, bool);
 template TetrahedralTable<double> makeTetrahedralTable<double>(int, bool);
+template TetrahedralTable<Dual> makeTetrahedralTable<Dual>(int, bool);
 
 template <class Real>
 TetrahedralLattice<Real>::TetrahedralLattice(const glm::ivec3& res, int n)
@@ -89,77 +91,9 @@ std::size_t TetrahedralLattice<Real>::at(int channel, int i, int code, const glm
 
 template struct TetrahedralLattice<float>;
 template struct TetrahedralLattice<double>;
+template struct TetrahedralLattice<Dual>;  // derivatives (framework/math/dual.h)
 
-namespace {
-
-// Calls f(code, cube) for every lattice cell that exists (both its cubes inside the grid).
-template <class F>
-void forEachCell(const glm::ivec3& res, F&& f) {
-  for (int code = 0; code < kCodes; ++code)
-    for (int z = 0; z < res.z; ++z)
-      for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x)
-          if (shared::tetInside(glm::ivec4(x, y, z, code), res)) f(code, glm::ivec3(x, y, z));
-}
-
-}  // namespace
-
-template <class Real>
-TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Real>& lattice,
-                                                    const float* gvBlocking) {
-  TetrahedralOcclusion<Real> o;
-  const glm::ivec3 res = lattice.resolution;
-  o.resolution = res;
-  o.transmittance.assign(std::size_t(kCodes) * 12 * lattice.plane, Real(1));
-  const shared::TetGvLookup blocking{gvBlocking};
-  // A lattice cell lies within its two cubes' centres' span along its axis and within its cube
-  // across it, so every crossing on its faces interpolates GV cells within [cube, cube + 2]: where
-  // all 27 are empty, every face keeps T = 1 (most of a scene's GV is empty space).
-  const glm::ivec3 gvRes = res + 1;
-  const std::size_t gvCells = std::size_t(shared::cellCount(gvRes));
-  std::vector<char> blocks(std::size_t(shared::cellCount(res)), 0);
-  for (int z = 0; z < res.z; ++z)
-    for (int y = 0; y < res.y; ++y)
-      for (int x = 0; x < res.x; ++x) {
-        char any = 0;
-        for (int dz = 0; dz <= 2 && !any; ++dz)
-          for (int dy = 0; dy <= 2 && !any; ++dy)
-            for (int dx = 0; dx <= 2 && !any; ++dx) {
-              const glm::ivec3 c(x + dx, y + dy, z + dz);
-              if (!shared::cellInside(c, gvRes)) continue;
-              const std::size_t i = std::size_t(shared::cellIndex(c, gvRes));
-              for (std::size_t k = 0; k < 4; ++k) any |= gvBlocking[k * gvCells + i] != 0.0f;
-            }
-        blocks[std::size_t(shared::cellIndex(glm::ivec3(x, y, z), res))] = any;
-      }
-  // Per code and z-slice in parallel: each writes its own cells.
-  tbb::parallel_for(tbb::blocked_range<int>(0, kCodes * res.z), [&](const tbb::blocked_range<int>&
-                                                                        r) {
-    shared::TetGvLookup lookup = blocking;  // (its GLSL functions are not const members)
-    for (int task = r.begin(); task < r.end(); ++task) {
-      const int code = task / res.z, z = task % res.z;
-      for (int y = 0; y < res.y; ++y)
-        for (int x = 0; x < res.x; ++x) {
-          const glm::ivec4 tet(x, y, z, code);
-          if (!shared::tetInside(tet, res) ||
-              !blocks[std::size_t(shared::cellIndex(glm::ivec3(x, y, z), res))])
-            continue;
-          // The cell's index in a plane (at() without the channel, coefficient and code).
-          const std::size_t cell = lattice.at(0, 0, 0, glm::ivec3(x, y, z));
-          for (int j = 0; j < kFaces; ++j)
-            for (int k = 0; k < kFaces; ++k) {
-              if (k == j) continue;
-              const double t = shared::gvTransmittance(
-                  lookup.gvBlockingAt(shared::tetFarFaceCrossing(tet, j, k), res + 1),
-                  shared::tetFarFaceDirection(code, j, k));
-              o.transmittance[std::size_t(code * 12 + tetrahedralFaceSlot(j, k)) * lattice.plane +
-                              cell] = Real(t);
-            }
-        }
-    }
-  });
-  return o;
-}
+#include "variants/propagation/tetrahedral_occlusion_body.h"
 
 template TetrahedralOcclusion<float> makeTetrahedralOcclusion<float>(
     const TetrahedralLattice<float>&, const float*);
@@ -186,6 +120,7 @@ void tetrahedralSplitCpu(const Real* cubes, TetrahedralLattice<Real>& lattice) {
 
 template void tetrahedralSplitCpu<float>(const float*, TetrahedralLattice<float>&);
 template void tetrahedralSplitCpu<double>(const double*, TetrahedralLattice<double>&);
+template void tetrahedralSplitCpu<Dual>(const Dual*, TetrahedralLattice<Dual>&);
 
 template <class Real>
 void tetrahedralMergeCpu(const TetrahedralLattice<Real>& lattice, Real* current,
@@ -230,11 +165,15 @@ void tetrahedralMergeCpu(const TetrahedralLattice<Real>& lattice, Real* current,
 
 template void tetrahedralMergeCpu<float>(const TetrahedralLattice<float>&, float*, float*);
 template void tetrahedralMergeCpu<double>(const TetrahedralLattice<double>&, double*, double*);
+template void tetrahedralMergeCpu<Dual>(const TetrahedralLattice<Dual>&, Dual*, Dual*);
 
 namespace {
 
 using cpu_rows::copyShortRun;
+using cpu_rows::loadRegister;
 using cpu_rows::RegisterOf;
+using cpu_rows::select;
+using cpu_rows::storeRegister;
 
 // One register of cells of one code along a row, one channel: from the four neighbour rows
 // (from[j], coefficient i at from[j][i * stride[j] + p]) through the three far faces each, the
@@ -251,7 +190,7 @@ template <int N, int Bytes, bool Occluded, class Real>
   for (int j = 0; j < kFaces; ++j) {
     V s[N];
 #pragma GCC unroll 16
-    for (int i = 0; i < N; ++i) std::memcpy(&s[i], from[j] + i * stride[j] + p, sizeof(V));
+    for (int i = 0; i < N; ++i) s[i] = loadRegister<V>(from[j] + i * stride[j] + p);
 #pragma GCC unroll 4
     for (int k = 0; k < kFaces; ++k) {
       if (k == j) continue;
@@ -261,14 +200,13 @@ template <int N, int Bytes, bool Occluded, class Real>
 #pragma GCC unroll 16
         for (int i = 0; i < N; ++i) integral += s[i] * w[i];
         const V zero = {};
-        V transmittance;
-        std::memcpy(&transmittance, t + tetrahedralFaceSlot(j, k) * tStride + p, sizeof(V));
-        flux[k] += transmittance * (integral > zero ? integral : zero);
+        const V transmittance = loadRegister<V>(t + tetrahedralFaceSlot(j, k) * tStride + p);
+        flux[k] += transmittance * select(integral > zero, integral, zero);
       } else {
         V total = flux[k];
 #pragma GCC unroll 16
         for (int i = 0; i < N; ++i) total += s[i] * w[i];
-        flux[k] = total > flux[k] ? total : flux[k];  // flux + max(0, integral)
+        flux[k] = select(total > flux[k], total, flux[k]);  // flux + max(0, integral)
       }
     }
   }
@@ -277,7 +215,7 @@ template <int N, int Bytes, bool Occluded, class Real>
     V value = {};
 #pragma GCC unroll 4
     for (int k = 0; k < kFaces; ++k) value += flux[k] * table.lobe[code][k][i];
-    std::memcpy(out + i * width + p, &value, sizeof(V));
+    storeRegister(out + i * width + p, value);
   }
 }
 
@@ -430,5 +368,8 @@ template void tetrahedralStepCpu<double>(const TetrahedralTable<double>&,
                                          TetrahedralLattice<double>&,
                                          const TetrahedralOcclusion<double>*, CpuKernelLevel,
                                          StepAccumulation, int);
+template void tetrahedralStepCpu<Dual>(const TetrahedralTable<Dual>&, TetrahedralLattice<Dual>&,
+                                       const TetrahedralOcclusion<Dual>*, CpuKernelLevel,
+                                       StepAccumulation, int);
 
 }  // namespace lpvlab

@@ -80,9 +80,10 @@ struct TetrahedralOcclusion {
 constexpr int tetrahedralFaceSlot(int j, int k) { return j * 3 + (k < j ? k : k - 1); }
 
 // What a GV (geometry_volume.h's layout, on resolution + 1 cells per axis) does to every face.
-template <class Real>
+// `GvValue`: float, or Dual with Real = Dual (a GV with derivatives, framework/math/dual.h).
+template <class Real, class GvValue = float>
 TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Real>& lattice,
-                                                    const float* gvBlocking);
+                                                    const GvValue* gvBlocking);
 
 // Cubic grid (grid.glsl's layout) -> lattice.current (tetrahedral_split.comp); sum := 0.
 template <class Real>

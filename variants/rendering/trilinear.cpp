@@ -24,6 +24,7 @@
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/cascade.h"
+#include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/scene/scene.h"
 #include "variants/rendering/trilinear_cpu.h"
@@ -69,17 +70,37 @@ void TrilinearKernelRendering::renderOnCpu(Frame& frame) {
     cpuLevels.push_back({level.accumulated.hostRead().data(), level.geometry});
   trilinearDiffuseCpu(frame.host->image(frame.gbuffer.position), frame.host->image(frame.gbuffer.normal),
                       frame.host->image(frame.gbuffer.albedo), cpuLevels,
-                      {.coefficients = coefficients_,
-                       .normalOffsetCells = options_.normalOffsetCells,
-                       .leakDamping = options_.leakDamping,
-                       .scale = options_.scale,
-                       .blendCells = frame.cascadeBlendCells,
-                       .specularAlbedo = options_.specularAlbedo,
-                       .phongExponent = options_.phongExponent,
-                       .marchStepCells = options_.marchStepCells,
-                       .marchSamples = options_.marchSamples,
-                       .cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f)},
+                      settings<float>(frame, [](const char*, float value) { return value; }),
                       frame.indirect.host());
+}
+
+// The same on dual numbers: the grid's derivatives and those of the seeded constants.
+void TrilinearKernelRendering::renderDual(DualFrame& dual) {
+  Frame& frame = dual.frame;
+  if (!frame.host) throw Error("rendering \"trilinear\" (CPU): the frame has no host images");
+  const TrilinearLevelOf<Dual> level{dual.accumulated.data(), frame.lightGrid.geometry};
+  trilinearDiffuseDual(frame.host->image(frame.gbuffer.position),
+                       frame.host->image(frame.gbuffer.normal),
+                       frame.host->image(frame.gbuffer.albedo), {&level, 1},
+                       settings<Dual>(frame, [&](const char* name, float value) {
+                         return dual.parameter(name, value);
+                       }),
+                       *dual.indirect);
+}
+
+template <class Real, class Constant>
+TrilinearSettingsOf<Real> TrilinearKernelRendering::settings(const Frame& frame,
+                                                             const Constant& constant) const {
+  return {.coefficients = coefficients_,
+          .normalOffsetCells = constant("normal_offset", options_.normalOffsetCells),
+          .leakDamping = constant("leak_damping", options_.leakDamping),
+          .scale = constant("scale", options_.scale),
+          .blendCells = frame.cascadeBlendCells,
+          .specularAlbedo = options_.specularAlbedo,
+          .phongExponent = options_.phongExponent,
+          .marchStepCells = options_.marchStepCells,
+          .marchSamples = options_.marchSamples,
+          .cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f)};
 }
 
 void TrilinearKernelRendering::render(Frame& frame) {

@@ -9,6 +9,7 @@
 
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/rendering/trilinear_cpu.h"
 
 namespace lpvlab {
 
@@ -45,8 +46,20 @@ public:
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override;
 
+  // Derivatives: its CPU kernel on dual numbers (trilinear_cpu.h), with respect to the grid's
+  // light and its own constants (the glossy ones are constants there).
+  std::vector<std::string> differentiableParameters() const override {
+    return {"normal_offset", "leak_damping", "scale"};
+  }
+  bool differentiates() const override { return true; }
+  void renderDual(DualFrame& frame) override;
+
 private:
   void renderOnCpu(Frame& frame);
+  // The CPU kernel's settings for `frame`, the three constants as `constant(name, value)` gives
+  // them (the values, or the dual frame's parameters).
+  template <class Real, class Constant>
+  TrilinearSettingsOf<Real> settings(const Frame& frame, const Constant& constant) const;
 
   TrilinearKernelOptions options_;
   Program program_;
