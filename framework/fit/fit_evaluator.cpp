@@ -92,6 +92,9 @@ std::unique_ptr<Pipeline> FitEvaluator::pipeline(const FitView& view, const std:
     throw Error("view '" + view.name + "': the target is " + std::to_string(view.target.width) +
                 "x" + std::to_string(view.target.height) + ", the run " +
                 std::to_string(e.settings.width) + "x" + std::to_string(e.settings.height));
+  // The residuals compare the indirect light alone: no shadow maps, no direct light (their
+  // read-back for the CPU's direct light was most of a rendering's time).
+  e.settings.directLight = false;
   return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.strategies), shaders_);
 }
 

@@ -180,13 +180,15 @@ FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
   const int levels = int(levels_.size());
   hostReadback_.newFrame();
-  stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
+  if (settings_.directLight)
+    stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
   stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
-  stage("direct", times, [&] {
-    direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,
-                    hostReadback_);
-  });
+  if (settings_.directLight)
+    stage("direct", times, [&] {
+      direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,
+                      hostReadback_);
+    });
   stage("clear", times, [&] {
     if (levels > 1 && settings_.cascades.placement == CascadePlacement::Depth)
       placeLevels(visibleFocus(visiblePositions(gbufferPass_->gbuffer())));
@@ -221,7 +223,9 @@ FrameTimes Pipeline::renderFrame() {
   times.gpuMs = gpuTimer_.collectMs();
   // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
   // timestamps do not see: its device time is its wall time (transfers to and from GL included).
-  for (const std::string& stage : cpuStages_) times.gpuMs[stage] = times.wallMs[stage];
+  for (const std::string& stage : cpuStages_)
+    if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end())
+      times.gpuMs[stage] = wall->second;
   checkGl("frame");
   return times;
 }

@@ -39,6 +39,9 @@ struct PipelineSettings {
   glm::vec3 skyRadiance{0.0f}; // constant sky, W/(m^2 sr): needs an injection strategy for it
   ShadowSettings shadow;
   std::string backend = "auto"; // [compute] backend: "auto", "gl" or "cpu" (strategy.h)
+  // false: no shadow maps and no direct light (the direct image stays black), for callers that
+  // use the indirect light alone (lpvlab fit, whose residuals compare indirect).
+  bool directLight = true;
 };
 
 // Stage name -> milliseconds, for one frame.

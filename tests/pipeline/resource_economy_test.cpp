@@ -78,3 +78,44 @@ TEST(ResourceEconomy, LightGridAndScratchHoldExactlyTheOrdersCoefficients) {
 
 }  // namespace
 }  // namespace lpvlab
+
+namespace lpvlab {
+namespace {
+
+// A pipeline without direct light (what lpvlab fit renders) skips the shadow maps and the direct
+// light, and gives the same indirect light as one with them.
+TEST(ResourceEconomy, WithoutDirectLightTheIndirectIsTheSameAndNoShadowMapsAreRendered) {
+  test::glTestContext();
+  ShaderCompiler shaders;
+  Image indirect[2];
+  for (const bool direct : {true, false}) {
+    Experiment e = loadExperiment("", {"output.width=48", "output.height=48",
+                                       "light_maps.rsm_resolution=32", "grid.resolution=12",
+                                       "compute.backend=\"cpu\""});
+    e.settings.directLight = direct;
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    const FrameTimes times = pipeline.renderFrame();
+    EXPECT_EQ(times.wallMs.count("shadow_maps"), direct ? 1u : 0u);
+    EXPECT_EQ(times.wallMs.count("direct"), direct ? 1u : 0u);
+    double directSum = 0.0;
+    for (const NamedImage& aov : pipeline.readOutputs()) {
+      if (aov.name == "indirect") indirect[direct] = aov.image;
+      if (aov.name == "direct")
+        for (float v : aov.image.pixels) directSum += v;
+    }
+    if (direct) {
+      EXPECT_GT(directSum, 0.0);
+    } else {
+      EXPECT_EQ(directSum, 0.0);
+    }
+  }
+  ASSERT_EQ(indirect[0].pixels.size(), indirect[1].pixels.size());
+  double largest = 0.0;
+  for (float v : indirect[1].pixels) largest = std::max(largest, double(v));
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t i = 0; i < indirect[0].pixels.size(); ++i)
+    EXPECT_EQ(indirect[0].pixels[i], indirect[1].pixels[i]) << "value " << i;
+}
+
+}  // namespace
+}  // namespace lpvlab
