@@ -70,11 +70,11 @@ private:
     for (std::size_t j = 0; j < x.size(); ++j) {
       if (!jacobians[j]) continue;
       if (columns_[j].empty()) {
-        if (automatic_[j]) {
+        if (automatic(x, j)) {
           // Every automatic column at once: one pass per view carries up to four.
           std::vector<std::size_t> which;
           for (std::size_t k = 0; k < x.size(); ++k)
-            if (automatic_[k] && columns_[k].empty()) which.push_back(k);
+            if (automatic(x, k) && columns_[k].empty()) which.push_back(k);
           evaluator_.automaticColumns(x, which, columns_);
         } else {
           columns_[j] = column(x, j);
@@ -82,6 +82,16 @@ private:
       }
       std::copy(columns_[j].begin(), columns_[j].end(), jacobians[j]);
     }
+  }
+
+  // Whether column j at x is automatic: one the composition carries, with x_j inside its bounds.
+  // At a bound the differences are one-sided, into the feasible side, while the dual numbers give
+  // the derivative of the kernel's branch at the bound, which at a kink there is the other side's:
+  // a face solid angle of 0 folds into the face's flux as max(0, omega I), whose derivative by
+  // omega at 0 is 0 whatever the sign of I, where the fit needs max(0, I).
+  bool automatic(const std::vector<double>& x, std::size_t j) const {
+    const FitParameter& p = evaluator_.spec().parameters[j];
+    return automatic_[j] && x[j] > p.lower && x[j] < p.upper;
   }
 
   std::vector<double> column(const std::vector<double>& x, std::size_t j) const {

@@ -9,8 +9,10 @@
 // the Jacobian column is the chain rule of the residual (linear, relative, log, with the loss)
 // times d indirect / d parameter from the frame run again on dual numbers
 // (framework/pipeline/dual_frame.h): exact, no step to choose, one pass per view for up to four
-// parameters. The others (the injection shift, which acts in steps and whose derivative is 0
-// almost everywhere; anything behind a stage without a dual kernel) take central differences:
+// parameters, while the parameter is inside its bounds (at a bound, one-sided differences: see
+// ImageCost::automatic). The others (the injection shift, which acts in steps and whose
+// derivative is 0 almost everywhere; anything behind a stage without a dual kernel) take central
+// differences:
 // Central differences: the Jacobian column of parameter j is (r(x + h e_j) - r(x - h e_j)) / 2h
 // with h = step * max(|x_j|, |initial_j|) (step * 1 when both are 0; `step` the parameter's own
 // when it gives one, else the fit's); at a bound the difference

@@ -11,9 +11,10 @@ namespace {
 
 TEST(CpuFeatures, LevelsAreNestedAndSse42IsTheFloor) {
   EXPECT_TRUE(cpuHasSse42());
-  if (cpuHasX86_64_v4()) EXPECT_TRUE(cpuHasX86_64_v3());
-  if (cpuHasX86_64_v3()) EXPECT_TRUE(cpuHasAvx());
-  if (cpuHasAvx()) EXPECT_TRUE(cpuHasSse42());
+  // Each level implies the one below it (written as implications: no assertion under an if).
+  EXPECT_TRUE(!cpuHasX86_64_v4() || cpuHasX86_64_v3());
+  EXPECT_TRUE(!cpuHasX86_64_v3() || cpuHasAvx());
+  EXPECT_TRUE(!cpuHasAvx() || cpuHasSse42());
 }
 
 TEST(CpuFeatures, NamesThisCpuRunsKeepsOrderAndFilters) {

@@ -35,7 +35,10 @@ struct DualLanes {
     for (int j = 0; j < kDualSlots; ++j) v[j] += o.v[j];
     return *this;
   }
-  friend DualLanes operator+(DualLanes x, const DualLanes& y) { return x += y; }
+  friend DualLanes operator+(const DualLanes& x, const DualLanes& y) {
+    DualLanes r = x;
+    return r += y;
+  }
   friend DualLanes operator*(const DualLanes& x, const DualLanes& y) {
     DualLanes r;
     r.a = x.a * y.a;

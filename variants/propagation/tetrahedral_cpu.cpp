@@ -13,6 +13,10 @@
 #include "framework/math/shared.h"
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
+
+// The row kernels pass vector registers to always-inlined helpers (cpu_rows.h): GCC's note that
+// a 32- or 64-byte vector's calling convention differs without AVX concerns no real call.
+#pragma GCC diagnostic ignored "-Wpsabi"
 #include "variants/propagation/cpu_rows.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
