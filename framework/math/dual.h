@@ -139,6 +139,9 @@ inline Dual ceil(const Dual& x) { return Dual(std::ceil(x.a)); }
 inline Dual max(const Dual& x, const Dual& y) { return x < y ? y : x; }
 inline Dual min(const Dual& x, const Dual& y) { return y < x ? y : x; }
 inline Dual clamp(const Dual& x, const Dual& lo, const Dual& hi) { return min(max(x, lo), hi); }
+// Exactly zero with no derivatives (a float: exactly zero), e.g. a GV value that blocks nothing.
+inline bool isExactlyZero(const Dual& x) { return x.a == 0.0 && !x.hasDerivatives(); }
+inline bool isExactlyZero(float x) { return x == 0.0f; }
 inline bool isfinite(const Dual& x) {
   if (!std::isfinite(x.a)) return false;
   for (double d : x.v)

@@ -44,12 +44,6 @@ struct DualFrame {
       if (seeds[j] == table + "." + name) return Dual::parameter(value, int(j));
     return Dual(value);
   }
-  // Whether any of the table's parameters is seeded.
-  bool seedsTable(const std::string& stageTable) const {
-    for (const std::string& seed : seeds)
-      if (seed.rfind(stageTable + ".", 0) == 0) return true;
-    return false;
-  }
 };
 
 // Values as dual numbers without derivatives.

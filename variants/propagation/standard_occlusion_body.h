@@ -29,12 +29,6 @@ FaceGeometry faceGeometry(const glm::ivec3 (&offset)[6]) {
   return g;
 }
 
-// A GV value that blocks nothing and carries no derivative.
-inline bool blocksNothing(float value) { return value == 0.0f; }
-[[maybe_unused]] inline bool blocksNothing(const Dual& value) {
-  return value.a == 0.0 && !value.hasDerivatives();
-}
-
 }  // namespace
 
 template <class Real, class GvValue>
@@ -69,7 +63,7 @@ StandardOcclusion<Real> makeStandardOcclusion(const StandardFaceTable<Real>& tab
   auto empty = [&](const glm::ivec3& c) {
     const std::size_t i = std::size_t(shared::cellIndex(c, gvRes));
     for (std::size_t k = 0; k < 4; ++k)
-      if (!blocksNothing(gvBlocking[k * gvCells + i])) return false;
+      if (!dual_number::isExactlyZero(gvBlocking[k * gvCells + i])) return false;
     return true;
   };
   std::vector<std::vector<typename StandardOcclusion<Real>::Bounce>> bounces(gvAlbedo ? rows : 0);

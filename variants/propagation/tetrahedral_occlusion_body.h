@@ -7,12 +7,6 @@
 
 namespace {
 
-// A GV value that blocks nothing and carries no derivative.
-inline bool blocksNothing(float value) { return value == 0.0f; }
-[[maybe_unused]] inline bool blocksNothing(const Dual& value) {
-  return value.a == 0.0 && !value.hasDerivatives();
-}
-
 // Calls f(code, cube) for every lattice cell that exists (both its cubes inside the grid).
 template <class F>
 void forEachCell(const glm::ivec3& res, F&& f) {
@@ -49,7 +43,7 @@ TetrahedralOcclusion<Real> makeTetrahedralOcclusion(const TetrahedralLattice<Rea
               const glm::ivec3 c(x + dx, y + dy, z + dz);
               if (!shared::cellInside(c, gvRes)) continue;
               const std::size_t i = std::size_t(shared::cellIndex(c, gvRes));
-              for (std::size_t k = 0; k < 4; ++k) any |= !blocksNothing(gvBlocking[k * gvCells + i]);
+              for (std::size_t k = 0; k < 4; ++k) any |= !dual_number::isExactlyZero(gvBlocking[k * gvCells + i]);
             }
         blocks[std::size_t(shared::cellIndex(glm::ivec3(x, y, z), res))] = any;
       }
