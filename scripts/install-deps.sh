@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs lpvlab's build, test and analysis dependencies from Debian 12 packages, skipping what
 # is already installed. Needs root (or sudo) only when something is missing.
+#   scripts/install-deps.sh           what building and running lpvlab needs
+#   scripts/install-deps.sh --tests   also what only the tests need (a Slurm cluster, a browser,
+#                                     clang's sanitizers and libFuzzer)
 set -euo pipefail
 
 packages=(
@@ -21,6 +24,17 @@ packages=(
   libgtest-dev                     # tests
   python3-numpy python3-pandas python3-matplotlib python3-openimageio  # analysis/ and reports
 )
+test_packages=(
+  slurm-wlm munge                  # tests/cluster: a single-node Slurm cluster runs an emitted sweep
+  chromium chromium-driver python3-selenium  # tests/report: the report in a headless browser
+  clang libfuzzer-14-dev libclang-rt-14-dev  # LPVLAB_SANITIZE and LPVLAB_FUZZ builds (tests/fuzz)
+  valgrind                         # memcheck of the path tracer's tests (docs/testing.md)
+)
+case "${1:-}" in
+  "") ;;
+  --tests) packages+=("${test_packages[@]}") ;;
+  *) echo "usage: scripts/install-deps.sh [--tests]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -13,7 +13,7 @@ case "$command" in
   *) echo "usage: scripts/lpvlab.sh run [ARGS...] | test" >&2; exit 2 ;;
 esac
 
-scripts/install-deps.sh
+if [ "$command" = test ]; then scripts/install-deps.sh --tests; else scripts/install-deps.sh; fi
 jobs="$(nproc)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 

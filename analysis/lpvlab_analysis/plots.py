@@ -72,7 +72,8 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
     ax.set_ylabel(metric[len("metric."):] + (" (higher is better)" if hib else " (lower is better)"))
     ax.set_title("Speed vs accuracy")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="best")
+    # Below the axes: variant labels are long, and inside they covered the points.
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.14), frameon=False)
     return _save(fig, path)
 
 

@@ -11,6 +11,8 @@
 #include <thread>
 
 #include "framework/cli/commands.h"
+#include "framework/core/available_cores.h"
+#include "framework/core/cpu_features.h"
 #include "framework/core/error.h"
 #include "framework/core/stats.h"
 #include "framework/experiment/experiment.h"
@@ -61,7 +63,7 @@ int benchTracerCommand(const Options& options) {
     if (const std::string problem = packetWidthProblem(width); !problem.empty())
       throw Error("bench --packet-width: " + problem);
 
-  const int threads = e.reference.threads > 0 ? e.reference.threads : int(std::thread::hardware_concurrency());
+  const int threads = e.reference.threads > 0 ? e.reference.threads : availableCores();
   std::cout << "lpvlab bench --tracer: " << e.name << " (" << e.scene.triangleCount() << " triangles), "
             << e.reference.width << "x" << e.reference.height << ", " << options.tracerSamples
             << " spp per pass, 1 warm-up + " << e.repeats << " passes, " << threads << " threads\n"

@@ -1,10 +1,11 @@
 #pragma once
 // The subcommands behind lpvlab's CLI; each returns the process exit code.
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
+
+#include "framework/cli/slurm_script.h"
 
 namespace lpvlab::cli {
 
@@ -22,6 +23,7 @@ struct Options {
   std::vector<int> tracerWidths;          // bench --tracer: query widths (0: native)
   int jobs = 1;                           // sweep: configurations run in parallel
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
+  SlurmResources slurm;                   // sweep --emit slurm: what each job asks for
   std::string metric;                     // report: the error metric of the speed/accuracy plot
 };
 

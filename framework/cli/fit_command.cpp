@@ -15,6 +15,7 @@
 #include "framework/fit/fit_checkpoint.h"
 #include "framework/fit/fit_output.h"
 #include "framework/gl/context.h"
+#include "framework/io/atomic_file.h"
 
 namespace lpvlab::cli {
 
@@ -46,6 +47,7 @@ int fitCommand(const Options& options) {
   const std::string dir = options.out.empty()
                               ? "runs/" + std::filesystem::path(options.experiment).stem().string() + "-fit"
                               : options.out;
+  requireOutputDirectory(dir, options.out.empty() ? "fit directory" : "--out");
   // Read before any rendering, so a damaged progress file stops the fit at once.
   const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
   const std::string key = fitKey(spec);

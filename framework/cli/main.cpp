@@ -59,9 +59,17 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   sweep->add_option("-s,--set", options.overrides,
                     "Override one parameter of every configuration (repeatable)");
-  sweep->add_option("--emit", options.emit,
-                    "slurm: write DIR/sweep.slurm (a job array) and the configurations, run nothing")
+  sweep
+      ->add_option("--emit", options.emit,
+                   "slurm: write DIR/sweep.slurm (a job array), DIR/submit.sh and the "
+                   "configurations; run nothing")
       ->check(CLI::IsMember({"slurm"}));
+  sweep->add_option("--cpus-per-task", options.slurm.cpusPerTask,
+                    "With --emit slurm: CPUs of each job (default 2)");
+  sweep->add_option("--mem", options.slurm.memory,
+                    "With --emit slurm: memory of each job (default 4G)");
+  sweep->add_option("--time", options.slurm.time,
+                    "With --emit slurm: time limit of each job (default 01:00:00)");
 
   CLI::App* summary = app.add_subcommand(
       "summary", "Rebuild DIR/summary.csv from the manifests of a sweep directory");

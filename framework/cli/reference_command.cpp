@@ -2,12 +2,16 @@
 
 #include "framework/cli/commands.h"
 #include "framework/experiment/experiment.h"
+#include "framework/io/atomic_file.h"
 
 namespace lpvlab::cli {
 
 int referenceCommand(const Options& options) {
   Experiment experiment = loadExperiment(options.experiment, options.overrides);
   if (!options.cacheDir.empty()) experiment.reference.cacheDir = options.cacheDir;
+  requireOutputDirectory(
+      experiment.reference.cacheDir.empty() ? defaultCacheDir() : experiment.reference.cacheDir,
+      options.cacheDir.empty() ? "reference cache" : "--cache");
   const Reference ref = ensureReference(experiment.scene, experiment.camera, experiment.reference);
   std::cout << (ref.reused ? "reused" : "rendered") << " reference " << ref.key << ": "
             << ref.samples << " spp, mean relative error " << ref.relativeError << ", "

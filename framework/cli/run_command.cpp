@@ -5,6 +5,7 @@
 
 #include "framework/cli/commands.h"
 #include "framework/experiment/run.h"
+#include "framework/io/atomic_file.h"
 
 namespace lpvlab::cli {
 
@@ -21,8 +22,9 @@ std::string defaultOutDir(const std::string& name) {
 
 int runCommand(const Options& options) {
   Experiment experiment = loadExperiment(options.experiment, options.overrides);
-  const auto context = GlContext::create(experiment.glBackend);
   const std::string out = options.out.empty() ? defaultOutDir(experiment.name) : options.out;
+  requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
+  const auto context = GlContext::create(experiment.glBackend);
   std::cerr << "lpvlab: " << experiment.name << " on " << context->renderer() << " ("
             << context->backend() << "), " << experiment.warmupFrames << " warm-up + "
             << experiment.repeats << " timed frames\n";

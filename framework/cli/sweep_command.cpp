@@ -4,21 +4,21 @@
 // removed and redone. `lpvlab summary DIR` rebuilds DIR/summary.csv.
 
 #include <fcntl.h>
-#include <cerrno>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
 #include "framework/cli/commands.h"
+#include "framework/cli/slurm_script.h"
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/core/progress.h"
@@ -31,12 +31,6 @@ namespace lpvlab::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string shellQuoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 std::string lastLine(const fs::path& path) {
   std::ifstream in(path);
@@ -74,30 +68,6 @@ pid_t startRun(const std::string& exe, const std::string& config, const std::str
   return pid;
 }
 
-void writeSlurm(const fs::path& dir, const std::string& exe, const std::string& stem,
-                const std::vector<SweepConfiguration>& configs) {
-  const std::string d = fs::absolute(dir).lexically_normal().string();
-  std::ostringstream s;
-  s << "#!/bin/bash\n"
-    << "# lpvlab sweep of " << stem << ": task i runs configuration i (unless complete).\n"
-    << "# Submit: sbatch " << d << "/sweep.slurm   then: lpvlab summary " << d << "\n"
-    << "#SBATCH --job-name=" << stem << "-sweep\n"
-    << "#SBATCH --array=0-" << configs.size() - 1 << "\n"
-    << "#SBATCH --output=" << d << "/logs/%A_%a.out\n"
-    << "set -euo pipefail\n"
-    << "DIR=" << shellQuoted(d) << "\n"
-    << "LPVLAB=" << shellQuoted(exe) << "\n"
-    << "IDS=(";
-  for (std::size_t i = 0; i < configs.size(); ++i) s << (i ? " " : "") << configs[i].id;
-  s << ")\n"
-    << "ID=${IDS[$SLURM_ARRAY_TASK_ID]}\n"
-    << "if [ -f \"$DIR/$ID/manifest.json\" ]; then echo \"$ID complete, skipped\"; exit 0; fi\n"
-    << "rm -rf \"$DIR/$ID\"\n"
-    << "exec \"$LPVLAB\" run \"$DIR/configs/$ID.toml\" --out \"$DIR/$ID\"\n";
-  writeTextAtomically((dir / "sweep.slurm").string(), s.str());
-  fs::create_directories(dir / "logs");
-}
-
 }  // namespace
 
 int sweepCommand(const Options& options) {
@@ -110,6 +80,11 @@ int sweepCommand(const Options& options) {
   for (const std::string& o : options.overrides) applyOverride(root, o);
   const std::vector<SweepConfiguration> configs = expandSweep(root, file, options.overrides);
   const std::vector<std::string> keys = sweptKeys(root, file);
+  // Nothing is written before every configuration loads: an unknown swept key or a bad swept
+  // value is reported against the user's file and its [sweep] table.
+  requireOutputDirectory(dir.string(), options.out.empty() ? "sweep directory" : "--out");
+  if (options.emit == "slurm") checkSlurmResources(options.slurm);
+  const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
 
   fs::create_directories(dir / "configs");
   nlohmann::json index = {{"experiment_file", fs::absolute(file).lexically_normal().string()},
@@ -126,10 +101,15 @@ int sweepCommand(const Options& options) {
   writeTextAtomically((dir / "sweep.json").string(), index.dump(2) + "\n");
 
   if (options.emit == "slurm") {
-    writeSlurm(dir, exe, stem, configs);
-    std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size()
-              << " tasks) and " << (dir / "configs").string() << "/<id>.toml\n"
-              << "submit: sbatch " << (dir / "sweep.slurm").string() << "\n"
+    writeSlurmScripts(dir, exe, stem, configs, referenceKeys, options.slurm);
+    const bool references = fs::exists(dir / "references.slurm");
+    std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size() << " tasks), "
+              << (references
+                      ? (dir / "references.slurm").string() + " (renders the references first), "
+                      : "")
+              << (dir / "submit.sh").string() << " and " << (dir / "configs").string()
+              << "/<id>.toml\n"
+              << "submit: " << (dir / "submit.sh").string() << " [sbatch options]\n"
               << "then:   lpvlab summary " << dir.string() << "\n";
     return 0;
   }
@@ -140,9 +120,6 @@ int sweepCommand(const Options& options) {
   std::cerr << "lpvlab: sweep " << stem << ": " << configs.size() << " configurations, "
             << configs.size() - pending.size() << " complete, " << pending.size() << " to run, "
             << options.jobs << " at a time, into " << dir.string() << "\n";
-  // Unknown keys and bad values of the base and of every swept key show in any configuration:
-  // check one before starting anything.
-  if (!pending.empty()) loadExperiment((dir / "configs" / (pending[0]->id + ".toml")).string());
 
   ProgressBar progress("sweep");
   std::map<pid_t, const SweepConfiguration*> running;

@@ -11,6 +11,9 @@ namespace lpvlab {
 
 namespace {
 
+// The source name of values parsed by applyOverride.
+constexpr std::string_view kOverrideSource = "command line";
+
 std::string typeName(toml::node_type type) {
   switch (type) {
     case toml::node_type::string: return "a string";
@@ -55,8 +58,11 @@ std::string Params::dotted(std::string_view key) const {
 std::string Params::where(std::string_view key) const {
   std::string location = state_->file;
   if (const toml::node* node = state_->table->get(key)) {
+    // A value set by an override (applyOverride) was parsed from "v = VALUE": its line 1 is not a
+    // line of the file.
     const auto& src = node->source();
-    if (src.begin.line > 0) location += ":" + std::to_string(src.begin.line);
+    const bool fromOverride = src.path && *src.path == kOverrideSource;
+    if (src.begin.line > 0 && !fromOverride) location += ":" + std::to_string(src.begin.line);
   }
   return location + ": key '" + dotted(key) + "'";
 }
@@ -280,7 +286,7 @@ void applyOverride(toml::table& root, std::string_view assignment) {
   // Parse the value as TOML; a bare word that isn't valid TOML is taken as a string.
   toml::table parsed;
   try {
-    parsed = toml::parse(std::string_view("v = " + text), std::string_view("command line"));
+    parsed = toml::parse(std::string_view("v = " + text), kOverrideSource);
   } catch (const toml::parse_error&) {
     parsed = toml::table{{"v", text}};
   }
@@ -289,6 +295,7 @@ void applyOverride(toml::table& root, std::string_view assignment) {
 
 toml::table readTomlFile(const std::string& path) {
   // toml++ reports a missing file as a parse error at line 0, column 0; say what happened.
+  if (std::filesystem::is_directory(path)) throw Error(path + ": is a directory, not a TOML file");
   if (!std::filesystem::is_regular_file(path)) throw Error(path + ": file not found");
   try {
     return toml::parse_file(path);

@@ -18,11 +18,6 @@ namespace {
 
 constexpr float kDegrees = float(M_PI) / 180.0f;
 
-std::string sharedDir() {
-  if (const char* env = std::getenv("LPVLAB_SHARED_DIR")) return env;
-  return LPVLAB_SHARED_DIR;
-}
-
 Light readLight(Params& p) {
   Light light;
   const std::string type = p.getChoice("type", "point", {"point", "spot", "directional"});
@@ -133,7 +128,8 @@ GridGeometry GridPlacement::resolve(const Bounds& sceneBounds) const {
 
 std::string resolveScenePath(const std::string& reference, const std::string& experimentFile) {
   if (reference.rfind("builtin:", 0) == 0) return reference;
-  if (reference.rfind("shared:", 0) == 0) return (fs::path(sharedDir()) / reference.substr(7)).string();
+  if (reference.rfind("shared:", 0) == 0)
+    return (fs::path(sharedDirectory()) / reference.substr(7)).string();
   const fs::path path(reference);
   if (path.is_absolute() || experimentFile.empty()) return path.string();
   return (fs::path(experimentFile).parent_path() / path).string();
@@ -153,6 +149,11 @@ std::vector<std::unique_ptr<Interface>> createStage(Params table, const std::str
 }
 
 }  // namespace
+
+std::string sharedDirectory() {
+  if (const char* env = std::getenv("LPVLAB_SHARED_DIR")) return env;
+  return LPVLAB_SHARED_DIR;
+}
 
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides) {
   // `extends` and `include` are merged here; a [sweep] table is checked and left to `lpvlab
@@ -250,6 +251,9 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
+  // How often the sums are saved for resuming (0: after every pass of about a second).
+  e.reference.checkpointSeconds =
+      reference.get<double>("checkpoint_seconds", 30.0, {.min = 0.0, .max = 86400.0});
   std::vector<std::string> isas = {"auto"};
   isas.insert(isas.end(), embreeInstructionSets().begin(), embreeInstructionSets().end());
   e.reference.tracer.engine.isa = reference.getChoice("isa", "auto", isas);

@@ -76,6 +76,10 @@ using SceneLoader = std::function<Scene(const std::string& resolvedPath)>;
 Experiment loadExperiment(const toml::table& root, const std::string& path,
                           const SceneLoader& loadScene = {});
 
+// The folder "shared:<path>" scene references are relative to: env LPVLAB_SHARED_DIR, else the
+// build's default (the ../shared beside the source tree).
+std::string sharedDirectory();
+
 // Resolves a scene reference from an experiment: "builtin:cornell_box", "shared:<path>" (relative
 // to the shared folder: env LPVLAB_SHARED_DIR, else the build's default), or a path relative to
 // the experiment file's folder.

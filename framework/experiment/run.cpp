@@ -70,8 +70,11 @@ Image regionMask(const Image& mask, const glm::vec4& rect) {
 // Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
 nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref,
                                     const Image& mask, const ComparisonSettings& settings) {
-  nlohmann::json out = {{"key", ref.key}, {"directory", ref.directory}, {"samples", ref.samples},
-                        {"relative_error", ref.relativeError}};
+  nlohmann::json out = {{"key", ref.key},
+                        {"directory", ref.directory},
+                        {"samples", ref.samples},
+                        {"relative_error", ref.relativeError},
+                        {"reused", ref.reused}};
   for (const auto& [mine, theirs] : settings.pairs) {
     const Image& a = findAov(run, mine);
     const Image& b = findAov(ref.aovs, theirs);

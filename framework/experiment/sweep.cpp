@@ -5,15 +5,17 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
 #include "framework/core/parameters.h"
+#include "framework/experiment/experiment.h"
 #include "framework/io/atomic_file.h"
+#include "framework/reference/reference_cache.h"
+#include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
 
@@ -160,6 +162,10 @@ SweepSpec readSweep(const toml::table& root, const std::string& file) {
   return spec;
 }
 
+// More than this is a mistake (every configuration is a directory and a run), and the expansion
+// itself would exhaust memory long before the product overflowed.
+constexpr std::size_t kMostConfigurations = 100000;
+
 // FNV-1a mixes its high bits poorly for inputs that differ in one character; a splitmix64
 // finaliser spreads every input bit before the first 10 hex digits are taken.
 std::string shortId(std::uint64_t x) {
@@ -269,7 +275,14 @@ std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::
   // Choices: one per zip index, times every combination of the product lists (last fastest).
   const std::size_t zipCount = spec.zip.empty() ? 1 : spec.zip[0].texts.size();
   std::size_t productCount = 1;
-  for (const SweptList& l : spec.product) productCount *= l.texts.size();
+  for (const SweptList& l : spec.product) {
+    // Checked before it can overflow: ten lists of a hundred values are 1e20 configurations.
+    if (l.texts.size() > kMostConfigurations / productCount / zipCount)
+      throw Error(file + ": key 'sweep': expands to more than " +
+                  std::to_string(kMostConfigurations) + " configurations (at '" + l.key +
+                  "'); split it into several sweeps");
+    productCount *= l.texts.size();
+  }
 
   std::vector<SweepConfiguration> out;
   for (std::size_t z = 0; z < zipCount; ++z) {
@@ -305,6 +318,38 @@ std::vector<SweepConfiguration> expandSweep(const std::string& file,
   toml::table root = readExperimentTable(file);
   for (const std::string& o : extraOverrides) applyOverride(root, o);
   return expandSweep(root, file, extraOverrides);
+}
+
+std::vector<std::string> checkConfigurations(const toml::table& root, const std::string& file,
+                                             const std::vector<SweepConfiguration>& configurations,
+                                             const SceneLoader& loadScene) {
+  std::vector<std::string> referenceKeys;
+  std::map<std::string, Scene> scenes;
+  const SceneLoader loadOnce = [&](const std::string& resolved) {
+    auto it = scenes.find(resolved);
+    if (it == scenes.end())
+      it = scenes.emplace(resolved, loadScene ? loadScene(resolved) : loadSceneByName(resolved))
+               .first;
+    return it->second;
+  };
+  std::string sweepWhere = file;
+  if (const toml::node* sweep = root.get("sweep"); sweep && sweep->source().begin.line > 0)
+    sweepWhere += ":" + std::to_string(sweep->source().begin.line);
+  for (const SweepConfiguration& c : configurations) {
+    toml::table table = root;
+    table.erase("sweep");
+    table.erase("fit");
+    for (const std::string& o : c.overrides) applyOverride(table, o);
+    try {
+      const Experiment e = loadExperiment(table, file, loadOnce);
+      referenceKeys.push_back(e.compareWithReference ? referenceKey(e.scene, e.camera, e.reference)
+                                                     : "");
+    } catch (const Error& error) {
+      throw Error(sweepWhere + ": key 'sweep': configuration " + c.name +
+                  " fails: " + error.what());
+    }
+  }
+  return referenceKeys;
 }
 
 std::string configurationToml(const std::string& file, const SweepConfiguration& configuration) {

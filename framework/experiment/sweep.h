@@ -19,11 +19,13 @@
 // of each), DIR/<id>/ (its run, as `lpvlab run` writes it), DIR/sweep.json (the expansion),
 // DIR/summary.csv (rebuilt from the run directories' manifests by writeSweepSummary).
 
+#include <toml++/toml.h>
+
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "framework/experiment/experiment.h"
 
 namespace lpvlab {
 
@@ -41,13 +43,23 @@ toml::table readExperimentTable(const std::string& path);
 // Merges `over` into `base` (sub-tables recursively; anything else replaces).
 void mergeTables(toml::table& base, const toml::table& over);
 
-// The configurations of `file`'s [sweep] table (one with no overrides when it has none).
+// The configurations of `file`'s [sweep] table (one with no overrides when it has none); more
+// than 100000 is an Error.
 // `extraOverrides` (command-line -s) are applied before expansion and are part of every
 // configuration's overrides (first), hence of its id. Throws an Error naming the file and key.
 std::vector<SweepConfiguration> expandSweep(const std::string& file,
                                             const std::vector<std::string>& extraOverrides = {});
 std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
                                             const std::vector<std::string>& extraOverrides = {});
+
+// Loads every configuration of `root` (read from `file`, -s overrides applied) as `lpvlab run`
+// would, each scene once, so that a swept key that does not exist or a swept value out of range
+// is an Error naming `file`, its [sweep] table and the configuration, before anything is written.
+// Returns, per configuration, the cache key of the reference it compares with ("" for none).
+// `loadScene` (default: loadSceneByName) reads each distinct scene file once.
+std::vector<std::string> checkConfigurations(const toml::table& root, const std::string& file,
+                                             const std::vector<SweepConfiguration>& configurations,
+                                             const SceneLoader& loadScene = {});
 
 // The swept keys, in column order (sorted, unique).
 std::vector<std::string> sweptKeys(const toml::table& root, const std::string& file);

@@ -36,9 +36,14 @@ std::string fitKey(const FitSpec& spec) {
 void writeFitProgress(const std::string& path, const std::string& key, const FitProgress& progress) {
   nlohmann::json log = nlohmann::json::array();
   for (const FitIteration& it : progress.log)
-    log.push_back({{"iteration", it.iteration}, {"cost", it.cost}, {"gradient_max_norm", it.gradientMaxNorm},
-                   {"step_norm", it.stepNorm}, {"step_successful", it.successful},
-                   {"seconds", it.seconds}, {"x", it.x}});
+    log.push_back({{"iteration", it.iteration},
+                   {"cost", it.cost},
+                   {"gradient_max_norm", it.gradientMaxNorm},
+                   {"step_norm", it.stepNorm},
+                   {"step_successful", it.successful},
+                   {"seconds", it.seconds},
+                   {"x", it.x},
+                   {"trust_region_radius", it.trustRegionRadius}});
   const nlohmann::json json = {{"fit_key", key}, {"renders", progress.renders},
                                {"seconds", progress.seconds}, {"log", log}};
   writeTextAtomically(path, json.dump(2) + "\n");
@@ -58,10 +63,11 @@ std::optional<FitProgress> readFitProgress(const std::string& path, const std::s
     progress.renders = json.at("renders").get<int>();
     progress.seconds = json.at("seconds").get<double>();
     for (const nlohmann::json& it : json.at("log"))
-      progress.log.push_back({it.at("iteration").get<int>(), it.at("cost").get<double>(),
-                              it.at("gradient_max_norm").get<double>(), it.at("step_norm").get<double>(),
-                              it.at("step_successful").get<bool>(), it.at("seconds").get<double>(),
-                              it.at("x").get<std::vector<double>>()});
+      progress.log.push_back(
+          {it.at("iteration").get<int>(), it.at("cost").get<double>(),
+           it.at("gradient_max_norm").get<double>(), it.at("step_norm").get<double>(),
+           it.at("step_successful").get<bool>(), it.at("seconds").get<double>(),
+           it.at("x").get<std::vector<double>>(), 0, it.value("trust_region_radius", 0.0)});
     if (progress.log.empty()) throw Error("no iterations");
     return progress;
   } catch (const std::exception& e) {  // the JSON's errors and the empty log's alike

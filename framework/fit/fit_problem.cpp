@@ -128,10 +128,15 @@ public:
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (resume_ && s.iteration == 0) return ceres::SOLVER_CONTINUE;
-    FitIteration it{(resume_ ? resume_->log.back().iteration : 0) + s.iteration, s.cost,
-                    s.gradient_max_norm, s.step_norm, s.step_is_successful,
-                    (resume_ ? resume_->seconds : 0.0) + s.cumulative_time_in_seconds, x_,
-                    (resume_ ? resume_->renders : 0) + renders()};
+    FitIteration it{(resume_ ? resume_->log.back().iteration : 0) + s.iteration,
+                    s.cost,
+                    s.gradient_max_norm,
+                    s.step_norm,
+                    s.step_is_successful,
+                    (resume_ ? resume_->seconds : 0.0) + s.cumulative_time_in_seconds,
+                    x_,
+                    (resume_ ? resume_->renders : 0) + renders(),
+                    s.trust_region_radius};
     result_.log.push_back(it);
     if (onIteration_) onIteration_(it);
     return ceres::SOLVER_CONTINUE;
@@ -256,6 +261,9 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   // rejected step (and turns it towards the gradient) at one rendering per view. So it is off:
   // steps are projected onto the bounds (Ceres's Plus) and judged by the trust region alone.
   options.max_num_line_search_step_size_iterations = 0;
+  const double radius = resumed ? resume->log.back().trustRegionRadius : 0.0;
+  if (radius > 0.0 && radius <= options.max_trust_region_radius)
+    options.initial_trust_region_radius = radius;
   LogCallback callback(x, result, evaluator, onIteration, resumed ? resume : nullptr);
   options.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;

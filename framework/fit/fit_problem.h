@@ -54,6 +54,9 @@ struct FitIteration {
   double seconds = 0.0;           // since the solve started
   std::vector<double> x;          // parameter values after the iteration
   int renders = 0;                // view renderings of the solve so far
+  // The trust region's radius for the next step: a resumed solve starts with it, so that it takes
+  // the steps the interrupted one would have taken (0: unknown, Ceres's initial radius).
+  double trustRegionRadius = 0.0;
 };
 
 struct FitResult {

@@ -56,4 +56,19 @@ void writeTextAtomically(const std::string& path, const std::string& text) {
   });
 }
 
+void requireOutputDirectory(const std::string& path, const std::string& option) {
+  const fs::path wanted = fs::absolute(path).lexically_normal();
+  for (fs::path p = wanted;; p = p.parent_path()) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(p, ec);
+    if (fs::exists(status)) {
+      if (fs::is_directory(status)) return;
+      throw Error(option + " " + path + ": " +
+                  (p == wanted ? std::string("is a file, not a directory")
+                               : p.string() + " is a file, not a directory"));
+    }
+    if (p == p.parent_path()) return;
+  }
+}
+
 }  // namespace lpvlab

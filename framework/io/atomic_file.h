@@ -14,4 +14,10 @@ void writeAtomically(const std::string& path, const std::function<void(const std
 
 void writeTextAtomically(const std::string& path, const std::string& text);
 
+// Checks, before any work is done, that `path` can become an output directory: it is one, or its
+// nearest existing ancestor is one. Otherwise throws an Error naming `option` (e.g. "--out"), the
+// path and the file in the way, instead of std::filesystem's "cannot create directories: Not a
+// directory" after the work.
+void requireOutputDirectory(const std::string& path, const std::string& option);
+
 }  // namespace lpvlab

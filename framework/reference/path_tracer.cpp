@@ -5,6 +5,7 @@
 #include <string>
 #include <thread>
 
+#include "framework/core/available_cores.h"
 #include "framework/core/error.h"
 #include "framework/reference/camera_rays.h"
 #include "framework/reference/embree_scene.h"
@@ -130,8 +131,7 @@ std::int64_t PathTracer::render(Accumulator& acc, int count, int threads,
       }
     totalRays += localRays;
   };
-  const int available =
-      threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int available = threads > 0 ? threads : availableCores();
   const int workers = std::min(available, impl.height);
   std::vector<std::thread> helpers;
   for (int i = 1; i < workers; ++i) helpers.emplace_back(work);

@@ -1,15 +1,22 @@
 #include "framework/reference/reference_cache.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <thread>
 
+#include "framework/core/available_cores.h"
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
 #include "framework/core/progress.h"
@@ -22,6 +29,30 @@ namespace lpvlab {
 namespace fs = std::filesystem;
 
 namespace {
+
+// An exclusive flock(2) on a cache entry's lock file for the lifetime of the object.
+class EntryLock {
+ public:
+  EntryLock(const std::string& path, const std::string& key) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+      throw Error(path + ": cannot open the reference's lock file: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+    std::cerr << "lpvlab: reference " << key << ": another process is rendering it; waiting\n";
+    while (::flock(fd_, LOCK_EX) != 0) {
+      if (errno == EINTR) continue;
+      const std::string why = std::strerror(errno);
+      ::close(fd_);
+      throw Error(path + ": cannot lock the reference: " + why);
+    }
+  }
+  ~EntryLock() { ::close(fd_); }
+  EntryLock(const EntryLock&) = delete;
+  EntryLock& operator=(const EntryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 // Bumped whenever the tracer's estimator changes, so old references are not reused.
 constexpr int kTracerVersion = 1;
@@ -125,14 +156,35 @@ Accumulator loadAccumulator(const std::string& path, double* seconds) {
   readRaw(in, height);
   readRaw(in, samples);
   readRaw(in, spent);
-  if (!in || width < 1 || height < 1 || samples < 0)
+  if (!in || width < 1 || height < 1 || samples < 0 || !std::isfinite(spent) || spent < 0.0)
     throw Error(path + ": corrupt reference state (header)");
+  // The header's size must match the file's before anything that size is allocated: a damaged
+  // width must not ask for terabytes.
+  const std::uintmax_t pixels = std::uintmax_t(width) * std::uintmax_t(height);
+  const std::uintmax_t values =
+      pixels * (2 * Accumulator::kRadianceValues + Accumulator::kFirstHitValues);
+  const std::uintmax_t expected = sizeof kStateMagic + 2 * sizeof(int) + sizeof(std::int64_t) +
+                                  sizeof(double) + 3 * sizeof(std::uint64_t) +
+                                  values * sizeof(double);
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size != expected)
+    throw Error(path + ": corrupt reference state (" + std::to_string(width) + "x" +
+                std::to_string(height) + " needs " + std::to_string(expected) +
+                " bytes, the file has " +
+                (ec ? std::string("an unknown size") : std::to_string(size)) + ")");
   Accumulator acc(width, height);
   acc.samples = samples;
   readDoubles(in, acc.sum, acc.sum.size(), path);
   readDoubles(in, acc.sumSquares, acc.sumSquares.size(), path);
   readDoubles(in, acc.firstHit, acc.firstHit.size(), path);
   if (!in) throw Error(path + ": corrupt reference state (truncated)");
+  for (const std::vector<double>* values : {&acc.sum, &acc.sumSquares, &acc.firstHit})
+    for (double v : *values)
+      if (!std::isfinite(v))
+        throw Error(path + ": corrupt reference state (a sum is NaN or infinite)");
+  for (double v : acc.sumSquares)
+    if (v < 0.0) throw Error(path + ": corrupt reference state (a negative sum of squares)");
   if (seconds) *seconds = spent;
   return acc;
 }
@@ -145,14 +197,36 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   ref.key = keyFromSceneHash(contentHash, camera, request);
   const fs::path dir = fs::path(request.cacheDir.empty() ? defaultCacheDir() : request.cacheDir) / ref.key;
   ref.directory = dir.string();
-  fs::create_directories(dir);
+  std::error_code created;
+  fs::create_directories(dir, created);
+  if (created)
+    throw Error("reference cache " + dir.parent_path().string() + ": cannot create " +
+                dir.string() + ": " + created.message() +
+                " (the cache is $LPVLAB_CACHE_DIR, --cache or .cache/references)");
+  // One process at a time renders a reference: another (a parallel sweep's child, a Slurm task)
+  // waits here and then finds it complete. The lock dies with its process, also on SIGKILL.
+  const EntryLock lock((dir / "lock").string(), ref.key);
+  // A process killed while writing leaves its temporary (atomic_file.h) behind; under the lock no
+  // one else is writing, so every temporary here is such a leftover.
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos)
+      fs::remove(entry.path());
   const std::string statePath = (dir / "state.bin").string();
 
   Accumulator acc(request.width, request.height);
   double spent = 0.0;
-  if (fs::exists(statePath)) acc = loadAccumulator(statePath, &spent);
+  if (fs::exists(statePath)) {
+    acc = loadAccumulator(statePath, &spent);
+    if (acc.width != request.width || acc.height != request.height)
+      throw Error(statePath + ": corrupt reference state (" + std::to_string(acc.width) + "x" +
+                  std::to_string(acc.height) + " where the key says " +
+                  std::to_string(request.width) + "x" + std::to_string(request.height) + ")");
+  }
   const bool complete = fs::exists(dir / "images.exr") && fs::exists(dir / "manifest.json");
   ref.reused = complete && targetMet(request.target, acc.samples, spent, acc.meanRelativeError());
+  if (!ref.reused && acc.samples > 0 && request.showProgress)
+    std::cerr << "lpvlab: reference " << ref.key << ": continuing from " << acc.samples
+              << " saved samples per pixel\n";
 
   std::int64_t paths = 0, rays = 0;
   double renderSeconds = 0.0;
@@ -204,24 +278,34 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   }
   ref.manifest = {
       {"key", ref.key},
-      {"scene", {{"source", scene.source}, {"hash", contentHash}, {"triangles", scene.triangleCount()}}},
-      {"camera", {{"name", camera.name},
-                  {"position", {camera.position.x, camera.position.y, camera.position.z}},
-                  {"forward", {camera.forward.x, camera.forward.y, camera.forward.z}},
-                  {"vertical_fov_rad", camera.verticalFov}}},
+      {"scene",
+       {{"source", scene.source}, {"hash", contentHash}, {"triangles", scene.triangleCount()}}},
+      {"camera",
+       {{"name", camera.name},
+        {"position", {camera.position.x, camera.position.y, camera.position.z}},
+        {"forward", {camera.forward.x, camera.forward.y, camera.forward.z}},
+        {"vertical_fov_rad", camera.verticalFov}}},
       {"width", request.width},
       {"height", request.height},
-      {"tracer", {{"version", kTracerVersion}, {"seed", request.tracer.seed},
-                  {"max_bounces", request.tracer.maxBounces}, {"roulette_after", request.tracer.rouletteAfter},
-                  {"sky_radiance", {request.tracer.skyRadiance.x, request.tracer.skyRadiance.y, request.tracer.skyRadiance.z}}}},
+      {"tracer",
+       {{"version", kTracerVersion},
+        {"seed", request.tracer.seed},
+        {"max_bounces", request.tracer.maxBounces},
+        {"roulette_after", request.tracer.rouletteAfter},
+        {"sky_radiance",
+         {request.tracer.skyRadiance.x, request.tracer.skyRadiance.y,
+          request.tracer.skyRadiance.z}}}},
       {"samples_per_pixel", acc.samples},
       {"seconds_total", spent},
       {"relative_error", ref.relativeError},
-      {"last_session", {{"seconds", renderSeconds}, {"paths", paths}, {"rays", rays},
-                        {"paths_per_second", renderSeconds > 0 ? paths / renderSeconds : 0.0},
-                        {"rays_per_second", renderSeconds > 0 ? rays / renderSeconds : 0.0},
-                        {"threads", request.threads > 0 ? request.threads : int(std::thread::hardware_concurrency())},
-                        {"engine", engine}}},
+      {"last_session",
+       {{"seconds", renderSeconds},
+        {"paths", paths},
+        {"rays", rays},
+        {"paths_per_second", renderSeconds > 0 ? paths / renderSeconds : 0.0},
+        {"rays_per_second", renderSeconds > 0 ? rays / renderSeconds : 0.0},
+        {"threads", request.threads > 0 ? request.threads : availableCores()},
+        {"engine", engine}}},
       {"created_utc", utcTimestamp()},
       {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
       {"host", hostInfo()}};

@@ -9,6 +9,8 @@
 //   state.bin      the Accumulator (sums and sums of squares): what resuming needs
 //   images.exr     means and variances as AOVs (path_tracer.h), for metrics and for looking
 //   manifest.json  key inputs, samples, seconds, relative error, paths/s, rays/s
+//   lock           flock(2)ed while a process reads or renders the entry: concurrent requests
+//                  for one reference (parallel sweeps, Slurm tasks) render it once
 // Each is written to a temporary name and renamed, state.bin at every checkpoint.
 
 #include <cstdint>
@@ -33,7 +35,7 @@ struct ReferenceRequest {
   int width = 256, height = 256;
   TracerSettings tracer;
   ReferenceTarget target;
-  int threads = 0;                // 0: all cores
+  int threads = 0;                // 0: every core this process may run on (its affinity mask)
   std::string cacheDir;           // "" = defaultCacheDir()
   double checkpointSeconds = 30.0;
   bool showProgress = true;

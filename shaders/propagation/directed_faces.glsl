@@ -39,22 +39,32 @@
 #define LPVLAB_DIRECTED_FACES_GLSL
 #include "standard_faces.glsl"
 
+// The stored normals are flux-weighted sums, as small or large as the light: at a light of 1e-30
+// their squares underflow float (so dot(n, n) > 0 and normalize() would call a lit cell
+// normal-less, or divide by zero), at 1e12 they could overflow. Tests and normalisation therefore
+// never square the raw sum: it is first scaled by its largest component.
 bool directedHasNormal(vec4 stored) {
-  return dot(vec3(stored.x, stored.y, stored.z), vec3(stored.x, stored.y, stored.z)) > 0.0;
+  return stored.x != 0.0 || stored.y != 0.0 || stored.z != 0.0;
+}
+
+// v / |v| for a non-zero v of any magnitude float holds.
+vec3 directedDirection(vec3 v) {
+  real largest = max(abs(v.x), max(abs(v.y), abs(v.z)));
+  return normalize(v / largest);
 }
 
 // A cell's unit normal (its contribution to a normal-less neighbour's mean), or zero.
 vec3 directedUnitNormal(vec4 stored) {
   if (!directedHasNormal(stored)) return vec3(0.0);
-  return normalize(vec3(stored.x, stored.y, stored.z));
+  return directedDirection(vec3(stored.x, stored.y, stored.z));
 }
 
 // The dilated value of a cell: its own if it has a normal, else the normalised sum of its
 // neighbours' unit normals (w = 0 marks it as dilated), or nothing.
 vec4 directedDilated(vec4 own, vec3 neighbourUnitNormalSum) {
   if (directedHasNormal(own)) return own;
-  if (dot(neighbourUnitNormalSum, neighbourUnitNormalSum) <= 0.0) return vec4(0.0);
-  vec3 n = normalize(neighbourUnitNormalSum);
+  if (!directedHasNormal(vec4(neighbourUnitNormalSum, 0.0))) return vec4(0.0);
+  vec3 n = directedDirection(neighbourUnitNormalSum);
   return vec4(n.x, n.y, n.z, 0.0);
 }
 

@@ -37,9 +37,11 @@ struct LpvlabResult {
   std::string out, err;
 };
 
-// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files in `logDir`.
+// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files in `logDir`;
+// `environment` ("NAME=value ...", shell-quoted) is set for it alone.
 inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::path& workDir,
-                              const std::filesystem::path& logDir) {
+                              const std::filesystem::path& logDir,
+                              const std::string& environment = "") {
   const std::filesystem::path exe = lpvlabExecutable();
   LpvlabResult r;
   if (!std::filesystem::exists(exe)) {
@@ -47,8 +49,9 @@ inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::pa
     return r;
   }
   const std::filesystem::path out = logDir / "stdout.txt", err = logDir / "stderr.txt";
-  const std::string command = "cd " + quoted(workDir.string()) + " && " + quoted(exe.string()) +
-                              " " + args + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
+  const std::string command = "cd " + quoted(workDir.string()) + " && " + environment + " " +
+                              quoted(exe.string()) + " " + args + " >" + quoted(out.string()) +
+                              " 2>" + quoted(err.string());
   const int status = std::system(command.c_str());
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = readFile(out);

@@ -35,7 +35,10 @@ using test::readFile;
 using Result = test::LpvlabResult;
 
 // lpvlab ARGS run in (and logging into) `dir`.
-Result runLpvlab(const std::string& args, const fs::path& dir) { return test::runLpvlab(args, dir, dir); }
+Result runLpvlab(const std::string& args, const fs::path& dir,
+                 const std::string& environment = "") {
+  return test::runLpvlab(args, dir, dir, environment);
+}
 
 // RFC 4180 fields: quoted where they hold a comma or quote (names like "a=1,b=2" do).
 std::vector<std::string> splitCsvLine(const std::string& line) {
@@ -234,19 +237,48 @@ TEST_F(SweepCli, KilledSweepResumesWithoutLossOrDuplication) {
   EXPECT_EQ(zipped, (std::set<std::string>{"4/1", "5/2", "6/3"}));
 }
 
+TEST_F(SweepCli, ABadSweptValueOrKeyStopsTheSweepBeforeAnythingIsWritten) {
+  // Every configuration is loaded first: the error names the user's file, its [sweep] table and
+  // the configuration (not a generated configs/<id>.toml), and no directory appears.
+  for (const std::string& sweep :
+       {std::string("product = { \"grid.resolution\" = [4, 2000, 5] }\n"),
+        std::string("product = { \"grid.nothere\" = [1, 2] }\n")}) {
+    const std::string file = writeSweep("bad.toml", sweep);
+    const fs::path out = dir_.path() / "sweep";
+    const Result r =
+        runLpvlab("sweep " + quoted(file) + " --out " + quoted(out.string()), dir_.path());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find(file + ":"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("key 'sweep'"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("configs/"), std::string::npos) << r.err;
+    EXPECT_NE(
+        r.err.find(sweep.find("2000") != std::string::npos ? "resolution=2000" : "grid.nothere"),
+        std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
 TEST_F(SweepCli, FailingConfigurationIsReportedAndOthersComplete) {
-  // resolution 2000 is out of range: that configuration fails in its child; the others run.
-  const std::string file = writeSweep("fail.toml", "product = { \"grid.resolution\" = [4, 2000, 5] }\n");
+  // A failure only the run can meet: the reference cache is a file, so the configuration that
+  // compares with a reference fails in its child; the others run.
+  const std::string file = writeSweep("fail.toml",
+                                      "zip = { \"reference.compare\" = [false, true, false], "
+                                      "\"propagation.iterations\" = [1, 2, 3] }\n");
   const fs::path out = dir_.path() / "sweep";
-  const Result r = runLpvlab("sweep " + quoted(file) + " --out " + quoted(out.string()), dir_.path());
+  const std::string cache = dir_.file("cache-is-a-file");
+  std::ofstream(cache) << "not a folder\n";
+  const Result r = runLpvlab("sweep " + quoted(file) + " --out " + quoted(out.string()),
+                             dir_.path(), "LPVLAB_CACHE_DIR=" + quoted(cache));
   EXPECT_NE(r.exitCode, 0);
-  EXPECT_NE(r.err.find("resolution=2000"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("compare=true"), std::string::npos) << r.err;
   int complete = 0, failed = 0;
   for (const fs::path& d : runDirs(out)) {
     if (fs::exists(d / "manifest.json")) ++complete;
     else {
       ++failed;
-      EXPECT_NE(readFile(d / "error.log").find("grid.resolution"), std::string::npos);
+      EXPECT_NE(readFile(d / "error.log").find("cache-is-a-file"), std::string::npos)
+          << readFile(d / "error.log");
     }
   }
   EXPECT_EQ(complete, 2);

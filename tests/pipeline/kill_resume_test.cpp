@@ -1,0 +1,218 @@
+// SIGKILL at random moments of `lpvlab reference` and `lpvlab fit`, then the same command again
+// until it finishes. Nothing is lost (the result equals an uninterrupted run's) and nothing is
+// duplicated (one cache entry, no leftover temporaries, every fit iteration logged once).
+// The kill times come from a seed printed with each test: LPVLAB_KILL_SEED=N repeats a run.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "executable_support.h"
+#include "framework/reference/reference_cache.h"
+
+namespace lpvlab {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::uint32_t killSeed() {
+  if (const char* env = std::getenv("LPVLAB_KILL_SEED")) return std::uint32_t(std::stoul(env));
+  return std::random_device{}();
+}
+
+// Runs `lpvlab ARGS` with its output appended to `log`; kills it with SIGKILL `killAfter` seconds
+// after `armedBy` exists (after the start when it is empty) unless it ended before. Returns true
+// when it ended on its own with exit code 0.
+bool runLpvlab(const std::vector<std::string>& args, const fs::path& log, double killAfter,
+               double* seconds = nullptr, const fs::path& armedBy = {}) {
+  const std::string exe = test::lpvlabExecutable().string();
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    std::FILE* out = std::fopen(log.c_str(), "a");
+    if (out) {
+      dup2(fileno(out), 1);
+      dup2(fileno(out), 2);
+    }
+    std::vector<char*> argv = {const_cast<char*>(exe.c_str())};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(exe.c_str(), argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  std::optional<Clock::time_point> deadline;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (!deadline && (armedBy.empty() || fs::exists(armedBy)))
+      deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(killAfter));
+    if (deadline && Clock::now() >= *deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// Kills the command `kills` times, each at a uniformly random moment of the first `window`
+// seconds after `armedBy` exists (its first checkpoint: so that every kill but an early one
+// leaves something to resume from), then lets it finish. Returns the number of kills that landed
+// (the others found it done).
+int killRepeatedlyThenFinish(const std::vector<std::string>& args, const fs::path& log,
+                             const fs::path& armedBy, double window, int kills,
+                             std::mt19937& random) {
+  std::uniform_real_distribution<double> moment(0.0, window);
+  int landed = 0;
+  for (int i = 0; i < kills; ++i) {
+    if (runLpvlab(args, log, moment(random), nullptr, armedBy)) return landed;
+    ++landed;
+  }
+  EXPECT_TRUE(runLpvlab(args, log, 1e9)) << test::readFile(log);
+  return landed;
+}
+
+std::vector<fs::path> leftoverTemporaries(const fs::path& dir) {
+  std::vector<fs::path> found;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) found.push_back(e.path());
+  return found;
+}
+
+std::vector<fs::path> subdirectories(const fs::path& dir) {
+  std::vector<fs::path> found;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir))
+    if (e.is_directory()) found.push_back(e.path());
+  return found;
+}
+
+nlohmann::json readJson(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+class KillResume : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("lpvlab_kill_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    seed_ = killSeed();
+    std::cout << "kill seed " << seed_ << " (LPVLAB_KILL_SEED=" << seed_ << " repeats it)\n";
+    random_.seed(seed_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+
+  fs::path dir_;
+  std::uint32_t seed_ = 0;
+  std::mt19937 random_;
+};
+
+TEST_F(KillResume, AKilledReferenceResumesToTheUninterruptedSums) {
+  // Checkpoints after every pass (about a second each), so kills land between, during and just
+  // after checkpoint writes.
+  const fs::path file = write("reference.toml",
+                              "[output]\nwidth = 48\nheight = 48\n"
+                              "[reference]\nsamples = 1536\nthreads = 1\ncheckpoint_seconds = 0\n");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  double seconds = 0.0;
+  ASSERT_TRUE(runLpvlab({"reference", file.string(), "--cache", whole.string()}, dir_ / "whole.log",
+                        1e9, &seconds))
+      << test::readFile(dir_ / "whole.log");
+  const std::vector<fs::path> a = subdirectories(whole);
+  ASSERT_EQ(a.size(), 1u);
+  const fs::path state = killed / a[0].filename() / "state.bin";
+  const int landed =
+      killRepeatedlyThenFinish({"reference", file.string(), "--cache", killed.string()},
+                               dir_ / "killed.log", state, 0.3 * seconds, 5, random_);
+  std::cout << landed << " kills landed in a " << seconds << " s rendering\n";
+  EXPECT_GE(landed, 1);
+  EXPECT_NE(test::readFile(dir_ / "killed.log").find("continuing from"), std::string::npos);
+
+  const std::vector<fs::path> b = subdirectories(killed);
+  ASSERT_EQ(b.size(), 1u);  // one cache entry: nothing rendered twice under another key
+  EXPECT_EQ(a[0].filename(), b[0].filename());
+  EXPECT_EQ(leftoverTemporaries(killed), std::vector<fs::path>{});
+  const Accumulator x = loadAccumulator((a[0] / "state.bin").string());
+  const Accumulator y = loadAccumulator((b[0] / "state.bin").string());
+  EXPECT_EQ(y.samples, 1536);
+  EXPECT_EQ(x.samples, y.samples);
+  // Every sample's random numbers follow from its pixel and index, and each pixel's sums add its
+  // samples in index order however the passes split them: the sums are equal to the bit.
+  EXPECT_TRUE(x.sum == y.sum);
+  EXPECT_TRUE(x.sumSquares == y.sumSquares);
+  EXPECT_TRUE(x.firstHit == y.firstHit);
+  EXPECT_EQ(readJson(b[0] / "manifest.json").at("samples_per_pixel").get<int>(), 1536);
+}
+
+TEST_F(KillResume, AKilledFitResumesToTheUninterruptedConstants) {
+  const fs::path base = fs::path(LPVLAB_SOURCE_DIR) / "experiments" / "fit_cornell_box.toml";
+  const fs::path file = write(
+      "fit.toml",
+      "extends = \"" + base.string() +
+          "\"\n"
+          "[output]\nwidth = 48\nheight = 48\n[light_maps]\nrsm_resolution = 48\n"
+          "[grid]\nresolution = 16\n[reference]\nsamples = 32\n"
+          "[fit]\nmax_iterations = 8\nparameters = [\n"
+          "  { key = \"propagation.far_face_solid_angle\", lower = 0.0, upper = 2.0943951 },\n"
+          "  { key = \"propagation.side_face_solid_angle\", lower = 0.0, upper = 0.5235988 } ]\n");
+  setenv("LPVLAB_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // the references, rendered once
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  double seconds = 0.0;
+  ASSERT_TRUE(runLpvlab({"fit", file.string(), "--out", whole.string()}, dir_ / "whole.log", 1e9))
+      << test::readFile(dir_ / "whole.log");
+  fs::remove_all(whole);  // timed again now that the references are cached
+  ASSERT_TRUE(runLpvlab({"fit", file.string(), "--out", whole.string()}, dir_ / "whole.log", 1e9,
+                        &seconds));
+  const int landed = killRepeatedlyThenFinish({"fit", file.string(), "--out", killed.string()},
+                                              dir_ / "killed.log", killed / "fit.progress.json",
+                                              0.3 * seconds, 4, random_);
+  std::cout << landed << " kills landed in a " << seconds << " s fit\n";
+  unsetenv("LPVLAB_CACHE_DIR");
+  EXPECT_GE(landed, 1);
+  EXPECT_NE(test::readFile(dir_ / "killed.log").find("resuming after iteration"),
+            std::string::npos);
+
+  EXPECT_FALSE(fs::exists(killed / "fit.progress.json"));
+  EXPECT_EQ(leftoverTemporaries(killed), std::vector<fs::path>{});
+  const nlohmann::json a = readJson(whole / "fit.json"), b = readJson(killed / "fit.json");
+  // Every iteration once, in order.
+  const nlohmann::json& log = b.at("convergence");
+  for (std::size_t i = 0; i < log.size(); ++i)
+    EXPECT_EQ(log[i].at("iteration").get<int>(), int(i)) << log.dump();
+  ASSERT_EQ(a.at("parameters").size(), b.at("parameters").size());
+  EXPECT_EQ(a.at("convergence").size(), log.size());
+  // A resumed solve starts from the saved iterate and trust-region radius, so it takes the same
+  // steps: the constants agree to far below their standard errors.
+  for (std::size_t j = 0; j < a.at("parameters").size(); ++j) {
+    const double va = a["parameters"][j].at("value"), vb = b["parameters"][j].at("value");
+    EXPECT_NEAR(va, vb, 1e-9 * std::max(1.0, std::abs(va))) << a["parameters"][j].at("key");
+  }
+}
+
+}  // namespace
+}  // namespace lpvlab

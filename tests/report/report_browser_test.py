@@ -1,0 +1,150 @@
+"""`lpvlab report`'s page in a real browser (headless Chromium through Selenium).
+
+Usage: report_browser_test.py LPVLAB_EXECUTABLE [--sweep DIR] [--screenshot PNG]
+Runs a small sweep whose configurations compare with a path-traced reference (or takes the sweep
+DIR, which `lpvlab report` has reported on), builds its report, opens DIR/report/index.html in
+headless Chromium and checks that every image loads (decoded, not just requested), every link
+resolves to a file of the sweep, and the console shows no error. --screenshot saves the top of
+the page (the README's picture is that of experiments/ablation_occlusion.toml's sweep). Exits 77 (skipped, for ctest) when
+Chromium, ChromeDriver or Selenium is missing, except under CI (env CI set), where that fails.
+"""
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+import urllib.parse
+
+ARGS = None
+
+EXPERIMENT = """
+[output]
+width = 96
+height = 96
+[grid]
+resolution = 8
+[timing]
+warmup = 0
+repeats = 2
+[reference]
+compare = true
+samples = 8
+[sweep]
+product = { "propagation.iterations" = [2, 8], "grid.resolution" = [8, 12] }
+"""
+
+
+def browser():
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = shutil.which("chromium")
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                 "--allow-file-access-from-files", "--window-size=1280,1000"):
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
+
+
+class ReportInBrowser(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="lpvlab-report-browser-")
+        if ARGS.sweep:
+            cls.sweep = os.path.abspath(ARGS.sweep)
+        else:
+            path = os.path.join(cls.work, "browser.toml")
+            with open(path, "w") as f:
+                f.write(EXPERIMENT)
+            cls.sweep = os.path.join(cls.work, "sweep")
+            env = dict(os.environ, LPVLAB_CACHE_DIR=os.path.join(cls.work, "cache"))
+            for args in (["sweep", path, "--out", cls.sweep], ["report", cls.sweep]):
+                r = subprocess.run([ARGS.lpvlab, *args], env=env, capture_output=True, text=True)
+                if r.returncode != 0:
+                    raise AssertionError(f"lpvlab {' '.join(args)}: {r.stderr}")
+        with open(os.path.join(cls.sweep, "sweep.json")) as f:
+            cls.configurations = len(json.load(f)["configurations"])
+        cls.index = os.path.join(cls.sweep, "report", "index.html")
+        cls.driver = browser()
+        cls.driver.get("file://" + urllib.parse.quote(cls.index))
+        # Images load asynchronously: wait until every one has finished, loaded or not.
+        cls.driver.set_script_timeout(30)
+        cls.driver.execute_async_script("""
+            const done = arguments[arguments.length - 1];
+            Promise.all([...document.images].map(img => img.complete ? null :
+                new Promise(r => { img.onload = img.onerror = r; }))).then(() => done());
+        """)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_every_image_loads(self):
+        images = self.driver.execute_script(
+            "return [...document.images].map(i => [i.src, i.complete, i.naturalWidth]);")
+        self.assertGreater(len(images), 4)  # plots, the reference and each configuration's images
+        for src, complete, width in images:
+            self.assertTrue(complete and width > 0, f"image did not load: {src}")
+
+    def test_every_link_resolves_to_a_file_of_the_sweep(self):
+        links = self.driver.execute_script("return [...document.links].map(a => a.href);")
+        self.assertTrue(links)
+        manifests = 0
+        for href in links:
+            url = urllib.parse.urlparse(href)
+            if url.scheme in ("http", "https", "mailto"):
+                continue  # the page may cite papers; this test is about the sweep's own files
+            self.assertEqual(url.scheme, "file", href)
+            path = urllib.parse.unquote(url.path)
+            self.assertTrue(os.path.exists(path), f"broken link: {href}")
+            self.assertTrue(os.path.realpath(path).startswith(os.path.realpath(self.sweep)), href)
+            manifests += path.endswith("manifest.json")
+        self.assertEqual(manifests, self.configurations)  # one per configuration
+
+    def test_console_shows_no_error(self):
+        errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+        self.assertEqual(errors, [])
+
+    def test_screenshot(self):
+        if not ARGS.screenshot:
+            self.skipTest("no --screenshot asked for")
+        self.driver.set_window_size(1280, ARGS.screenshot_height)
+        self.assertTrue(self.driver.save_screenshot(ARGS.screenshot))
+
+
+def missing():
+    for tool in ("chromium", "chromedriver"):
+        if shutil.which(tool) is None:
+            return f"{tool} is not installed (Debian packages chromium, chromium-driver)"
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        return "Selenium is not installed (Debian package python3-selenium)"
+    return None
+
+
+def main():
+    global ARGS
+    parser = argparse.ArgumentParser()
+    parser.add_argument("lpvlab")
+    parser.add_argument("--sweep")
+    parser.add_argument("--screenshot")
+    parser.add_argument("--screenshot-height", type=int, default=1400)
+    ARGS, rest = parser.parse_known_args()
+    ARGS.lpvlab = os.path.abspath(ARGS.lpvlab)
+    why = missing()
+    if why:
+        print(("error: " if os.environ.get("CI") else "skipped: ") + why)
+        return 1 if os.environ.get("CI") else 77
+    result = unittest.main(argv=[sys.argv[0], "-v", *rest], exit=False).result
+    return 0 if result.wasSuccessful() else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
