@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The two set-up commands of the README:
 #   scripts/lpvlab.sh run [ARGS...]   install what is missing, build, run `lpvlab run ARGS...`
-#   scripts/lpvlab.sh test            install what is missing, build, run every test (ctest)
+#   scripts/lpvlab.sh test            install what is missing, build, run every test (ctest), then
+#                                     the sanitizer and fuzzing build (scripts/checked-build.sh)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
@@ -23,5 +24,7 @@ if [ "$command" = run ]; then
   exec build/lpvlab run "$@"
 fi
 cmake --build build -j "$jobs"
-cd build
-ctest --output-on-failure -j "$jobs"
+(cd build && ctest --output-on-failure -j "$jobs")
+# Then the checked build (clang, AddressSanitizer, UBSan, libFuzzer) in build-checked/: the unit
+# tests under the sanitizers and a short fuzzing of every target (docs/testing.md).
+scripts/checked-build.sh

@@ -18,14 +18,27 @@ bool cpuHasAvx() {
 }
 
 // GCC's own names for the psABI levels test exactly what its arch=x86-64-v3 / -v4 targets use.
+// Clang 14 (the checked build, scripts/checked-build.sh) knows neither name, nor F16C, LZCNT and
+// MOVBE: it tests the level's defining features, which no CPU has without those three.
 bool cpuHasX86_64_v3() {
   __builtin_cpu_init();
+#if defined(__clang__)
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+         __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
+#else
   return __builtin_cpu_supports("x86-64-v3");
+#endif
 }
 
 bool cpuHasX86_64_v4() {
   __builtin_cpu_init();
+#if defined(__clang__)
+  return cpuHasX86_64_v3() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
+         __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
+         __builtin_cpu_supports("avx512vl");
+#else
   return __builtin_cpu_supports("x86-64-v4");
+#endif
 }
 
 CpuKernelLevel widestCpuKernelLevel() {

@@ -14,6 +14,11 @@
 //   LPVLAB_SHARED_GLSL_BEGIN
 //   #include "shaders/propagation/standard_faces.glsl"
 //   LPVLAB_SHARED_GLSL_END
+//
+// What shared GLSL avoids, so that both languages and both compilers take it: struct
+// constructors (`S(a, b)` is C++20's parenthesised aggregate initialisation, which clang before
+// 16 lacks: build the struct member by member) and structured bindings captured by lambdas in
+// the C++ around it (clang 14 again; scripts/checked-build.sh compiles everything with it).
 
 #include <glm/glm.hpp>
 

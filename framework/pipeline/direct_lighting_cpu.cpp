@@ -24,7 +24,10 @@ void directLightingCpu(const DirectCpuInputs& in, HostImage& out) {
   const HostDepthImage& shadow = *in.shadowDepth;
   if (shadow.width != shadow.height || std::size_t(shadow.layers) < in.records->views.size())
     throw Error("direct light (CPU): the shadow maps are not square or lack a layer per view");
-  const auto [lights, views] = sharedLightViews<shared::GpuLight, shared::GpuView>(*in.records);
+  // Named members, not a structured binding: clang 14 cannot capture bindings in lambdas.
+  const auto lightViews = sharedLightViews<shared::GpuLight, shared::GpuView>(*in.records);
+  const auto& lights = lightViews.lights;
+  const auto& views = lightViews.views;
   const int width = in.position->width;
   tbb::parallel_for(tbb::blocked_range<int>(0, in.position->height), [&](const tbb::blocked_range<int>& rows) {
     shared::DirectLightKernel kernel{lights.data(), views.data(), shadow.depths.data(), shadow.width};

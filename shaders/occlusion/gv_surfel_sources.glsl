@@ -41,7 +41,10 @@ GvSurfelAlbedo gvRsmSurfelAlbedo(GpuView view, GpuLight light, vec3 p, vec3 n, v
                                  vec3 reflectedFlux, int rsmResolution) {
   vec3 arriving = rsmTexelLight(view, light, p, n, texelCentre, rsmResolution).flux;
   bool known = min(arriving.x, min(arriving.y, arriving.z)) > 0.0;
-  return GvSurfelAlbedo(known ? reflectedFlux / arriving : vec3(0.0), known);
+  GvSurfelAlbedo result;  // member by member (shared.h: no struct constructors)
+  result.albedo = known ? reflectedFlux / arriving : vec3(0.0);
+  result.known = known;
+  return result;
 }
 
 #endif

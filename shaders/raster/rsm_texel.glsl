@@ -17,6 +17,14 @@ struct RsmTexelLight {
   vec3 normal;  // the surface's unit normal turned to face the light
 };
 
+// Built member by member (shared.h: no struct constructors in shared GLSL).
+RsmTexelLight makeRsmTexelLight(vec3 flux, vec3 normal) {
+  RsmTexelLight result;
+  result.flux = flux;
+  result.normal = normal;
+  return result;
+}
+
 RsmTexelLight rsmTexelLight(GpuView view, GpuLight light, vec3 worldPosition, vec3 worldNormal,
                             vec2 fragCoord, int resolution) {
   vec3 n = normalize(worldNormal);
@@ -25,7 +33,7 @@ RsmTexelLight rsmTexelLight(GpuView view, GpuLight light, vec3 worldPosition, ve
   if (view.params.x > 0.5) {
     if (dot(n, lightDirection) > 0.0) n = -n;
     real texelSize = real(view.params.y) / real(resolution);
-    return RsmTexelLight(intensity * (texelSize * texelSize), n);
+    return makeRsmTexelLight(intensity * (texelSize * texelSize), n);
   }
   vec3 toSurface = normalize(worldPosition - vec3(light.positionType));
   if (dot(n, toSurface) > 0.0) n = -n;
@@ -37,7 +45,7 @@ RsmTexelLight rsmTexelLight(GpuView view, GpuLight light, vec3 worldPosition, ve
   if (int(light.positionType.w) == LIGHT_SPOT)
     falloff = spotFalloff(dot(toSurface, lightDirection), light.intensityCosInner.w,
                           light.directionCosOuter.w);
-  return RsmTexelLight(intensity * (falloff * solidAngle), n);
+  return makeRsmTexelLight(intensity * (falloff * solidAngle), n);
 }
 
 #endif

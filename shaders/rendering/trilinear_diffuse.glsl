@@ -71,7 +71,9 @@ LobeSample sampleLobe(vec3 g, real lobe[SH_MAX_COEFFICIENTS], int coefficients, 
       }
     }
   }
-  LobeSample s = LobeSample(vec3(0.0), vec3(0.0));
+  LobeSample s;  // member by member (shared.h: no struct constructors)
+  s.value = vec3(0.0);
+  s.slope = vec3(0.0);
   for (int k = 0; k < coefficients; ++k) {
     s.value += lobe[k] * vec3(red[k], green[k], blue[k]);
     s.slope += lobe[k] * vec3(redSlope[k], greenSlope[k], blueSlope[k]);

@@ -18,9 +18,9 @@ shift 2
 workdir="${WORKDIR:-$PWD/fuzz-runs}"
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || mapfile -t targets < <("$fuzzer" -lpvlab_list)
-# Leaks inside Mesa's llvmpipe and Assimp's singletons are not lpvlab's; none of the targets
-# creates a GL context, so leak detection stays on.
+# Leak detection stays on; leaks inside Assimp are its own (tests/sanitizers/lsan.supp says which).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")/../sanitizers" && pwd)/lsan.supp:print_suppressions=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 for target in "${targets[@]}"; do
   mkdir -p "$workdir/$target/corpus"

@@ -95,7 +95,10 @@ void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvT
   const int resolution = rsm.position->width;
   if (rsm.position->height != resolution || std::size_t(rsm.position->layers) > records.views.size())
     throw Error("geometry volume (CPU): the RSM is not square or has a layer without its view");
-  const auto [lights, views] = sharedLightViews<shared::GpuLight, shared::GpuView>(records);
+  // Named members, not a structured binding: clang 14 cannot capture bindings in lambdas.
+  const auto lightViews = sharedLightViews<shared::GpuLight, shared::GpuView>(records);
+  const auto& lights = lightViews.lights;
+  const auto& views = lightViews.views;
   const std::size_t perLayer = std::size_t(resolution) * resolution;
   addSurfels(
       texels, [&](std::size_t i) { return rsm.position->texels[i]; },

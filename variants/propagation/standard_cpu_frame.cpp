@@ -1,5 +1,7 @@
 #include "variants/propagation/standard_cpu_frame.h"
 
+#include <type_traits>
+
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 
@@ -64,6 +66,11 @@ void iterateGrid(const StandardFaceTable<Real>& table, const glm::ivec3& resolut
     if (reprojected)
       standardGatherCpu<Real>(table, resolution, current.data(), next.data(), accumulated.data(),
                               "auto", 0, faces, accumulation, reprojected, i);
+    else if constexpr (std::is_same_v<Real, Dual>)
+      // Dual frames always gather: scattering gives the same light and has no Dual version (an
+      // unoptimised build must not even name it; only -O2 removed the call to it).
+      standardGatherCpu<Real>(table, resolution, current.data(), next.data(), accumulated.data(),
+                              "auto", 0, faces, accumulation);
     else
       standardIterationCpu<Real>(scatter, table, resolution, current.data(), next.data(),
                                  accumulated.data(), "auto", 0, faces, accumulation);
