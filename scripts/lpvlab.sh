@@ -24,7 +24,10 @@ if [ "$command" = run ]; then
   exec build/lpvlab run "$@"
 fi
 cmake --build build -j "$jobs"
-(cd build && ctest --output-on-failure -j "$jobs")
+status=0
+(cd build && ctest --output-on-failure -j "$jobs") || status=$?
 # Then the checked build (clang, AddressSanitizer, UBSan, libFuzzer) in build-checked/: the unit
-# tests under the sanitizers and a short fuzzing of every target (docs/testing.md).
-scripts/checked-build.sh
+# tests under the sanitizers and a short fuzzing of every target (docs/testing.md). It runs
+# whatever the first tests said, and the command fails if either failed.
+scripts/checked-build.sh || status=$?
+exit "$status"
