@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -13,9 +14,9 @@
 #include "framework/core/hash.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
+#include "framework/experiment/scene_cache.h"
 #include "framework/io/atomic_file.h"
 #include "framework/reference/reference_cache.h"
-#include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
 
@@ -320,18 +321,11 @@ std::vector<SweepConfiguration> expandSweep(const std::string& file,
   return expandSweep(root, file, extraOverrides);
 }
 
-std::vector<std::string> checkConfigurations(const toml::table& root, const std::string& file,
-                                             const std::vector<SweepConfiguration>& configurations,
-                                             const SceneLoader& loadScene) {
+std::vector<std::string> checkConfigurations(
+    const toml::table& root, const std::string& file,
+    const std::vector<SweepConfiguration>& configurations) {
   std::vector<std::string> referenceKeys;
-  std::map<std::string, Scene> scenes;
-  const SceneLoader loadOnce = [&](const std::string& resolved) {
-    auto it = scenes.find(resolved);
-    if (it == scenes.end())
-      it = scenes.emplace(resolved, loadScene ? loadScene(resolved) : loadSceneByName(resolved))
-               .first;
-    return it->second;
-  };
+  SceneCache scenes;
   std::string sweepWhere = file;
   if (const toml::node* sweep = root.get("sweep"); sweep && sweep->source().begin.line > 0)
     sweepWhere += ":" + std::to_string(sweep->source().begin.line);
@@ -341,7 +335,7 @@ std::vector<std::string> checkConfigurations(const toml::table& root, const std:
     table.erase("fit");
     for (const std::string& o : c.overrides) applyOverride(table, o);
     try {
-      const Experiment e = loadExperiment(table, file, loadOnce);
+      const Experiment e = loadExperiment(table, file, std::ref(scenes));
       referenceKeys.push_back(e.compareWithReference ? referenceKey(e.scene, e.camera, e.reference)
                                                      : "");
     } catch (const Error& error) {

@@ -56,10 +56,8 @@ std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::
 // would, each scene once, so that a swept key that does not exist or a swept value out of range
 // is an Error naming `file`, its [sweep] table and the configuration, before anything is written.
 // Returns, per configuration, the cache key of the reference it compares with ("" for none).
-// `loadScene` (default: loadSceneByName) reads each distinct scene file once.
 std::vector<std::string> checkConfigurations(const toml::table& root, const std::string& file,
-                                             const std::vector<SweepConfiguration>& configurations,
-                                             const SceneLoader& loadScene = {});
+                                             const std::vector<SweepConfiguration>& configurations);
 
 // The swept keys, in column order (sorted, unique).
 std::vector<std::string> sweptKeys(const toml::table& root, const std::string& file);

@@ -2,12 +2,12 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
+#include "framework/fit/fit_output.h"
 #include "framework/io/atomic_file.h"
 
 namespace lpvlab {
@@ -35,15 +35,12 @@ std::string fitKey(const FitSpec& spec) {
 
 void writeFitProgress(const std::string& path, const std::string& key, const FitProgress& progress) {
   nlohmann::json log = nlohmann::json::array();
-  for (const FitIteration& it : progress.log)
-    log.push_back({{"iteration", it.iteration},
-                   {"cost", it.cost},
-                   {"gradient_max_norm", it.gradientMaxNorm},
-                   {"step_norm", it.stepNorm},
-                   {"step_successful", it.successful},
-                   {"seconds", it.seconds},
-                   {"x", it.x},
-                   {"trust_region_radius", it.trustRegionRadius}});
+  for (const FitIteration& it : progress.log) {
+    nlohmann::json entry = iterationJson(it);
+    entry["trust_region_radius"] =
+        it.trustRegionRadius;  // what resuming needs beyond fit.json's log
+    log.push_back(std::move(entry));
+  }
   const nlohmann::json json = {{"fit_key", key}, {"renders", progress.renders},
                                {"seconds", progress.seconds}, {"log", log}};
   writeTextAtomically(path, json.dump(2) + "\n");

@@ -51,12 +51,6 @@ std::unique_ptr<ceres::LossFunction> makeLoss(const FitSpec& spec) {
 
 }  // namespace
 
-Scene SceneCache::operator()(const std::string& resolvedPath) {
-  auto found = scenes_.find(resolvedPath);
-  if (found == scenes_.end()) found = scenes_.emplace(resolvedPath, loadSceneByName(resolvedPath)).first;
-  return found->second;
-}
-
 std::vector<FitView> makeFitViews(const FitSpec& spec, SceneCache& scenes) {
   std::vector<FitView> views;
   for (const bool heldOut : {false, true})

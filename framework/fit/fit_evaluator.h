@@ -16,14 +16,15 @@
 // evaluation), so the loss is folded into the residuals; the sum of squares is then exactly the
 // robust cost sum rho(r^2).
 
+#include <toml++/toml.h>
+
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-#include <toml++/toml.h>
-
+#include "framework/experiment/scene_cache.h"
 #include "framework/fit/fit_spec.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/io/image.h"
@@ -37,18 +38,8 @@ namespace lpvlab {
 
 class Pipeline;
 
-// Each scene file read once per fit: every rendering of every view gets a copy of it (the
-// experiment adds its view's lights and material overrides to the copy), so a fit of many
-// renderings reads Sponza once. Strategies are still built per rendering: they read the
-// parameter values.
-class SceneCache {
-public:
-  Scene operator()(const std::string& resolvedPath);
-  int loads() const { return int(scenes_.size()); }  // distinct files read
-
-private:
-  std::map<std::string, Scene> scenes_;
-};
+// The fit reads each scene once (SceneCache) and builds the strategies per rendering: they read
+// the parameter values.
 
 struct FitView {
   std::string name;

@@ -72,6 +72,16 @@ std::string derivativeMethod(const FitResult& result, std::size_t j) {
 
 }  // namespace
 
+nlohmann::json iterationJson(const FitIteration& it) {
+  return {{"iteration", it.iteration},
+          {"cost", it.cost},
+          {"gradient_max_norm", it.gradientMaxNorm},
+          {"step_norm", it.stepNorm},
+          {"step_successful", it.successful},
+          {"seconds", it.seconds},
+          {"x", it.x}};
+}
+
 nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohmann::json& before,
                        const nlohmann::json& after) {
   nlohmann::json parameters = nlohmann::json::array();
@@ -89,10 +99,7 @@ nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohm
                           {"derivatives", derivativeMethod(result, j)}});
   }
   nlohmann::json log = nlohmann::json::array();
-  for (const FitIteration& it : result.log)
-    log.push_back({{"iteration", it.iteration}, {"cost", it.cost},
-                   {"gradient_max_norm", it.gradientMaxNorm}, {"step_norm", it.stepNorm},
-                   {"step_successful", it.successful}, {"seconds", it.seconds}, {"x", it.x}});
+  for (const FitIteration& it : result.log) log.push_back(iterationJson(it));
   nlohmann::json views = nlohmann::json::array(), heldOut = nlohmann::json::array();
   for (const FitViewSpec& v : spec.views) views.push_back(v.name);
   for (const FitViewSpec& v : spec.heldOut) heldOut.push_back(v.name);

@@ -22,6 +22,9 @@ namespace lpvlab {
 // parameters (each with its standard deviation as a comment).
 std::string fittedToml(const FitSpec& spec, const FitResult& result);
 
+// One iteration of the convergence log as fit.json and fit.progress.json write it.
+nlohmann::json iterationJson(const FitIteration& it);
+
 nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohmann::json& before,
                        const nlohmann::json& after);
 
