@@ -14,7 +14,15 @@ case "$command" in
   *) echo "usage: scripts/lpvlab.sh run [ARGS...] | test" >&2; exit 2 ;;
 esac
 
-if [ "$command" = test ]; then scripts/install-deps.sh --tests; else scripts/install-deps.sh; fi
+# The test command's steps say when they ended: CI has an hour for all of them (.ci/run).
+started=$(date +%s)
+step() { echo "lpvlab.sh: $1 after $(( $(date +%s) - started )) s"; }
+if [ "$command" = test ]; then
+  scripts/install-deps.sh --tests
+  step "dependencies installed"
+else
+  scripts/install-deps.sh
+fi
 jobs="$(nproc)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 
@@ -24,10 +32,13 @@ if [ "$command" = run ]; then
   exec build/lpvlab run "$@"
 fi
 cmake --build build -j "$jobs"
+step "built"
 status=0
 (cd build && ctest --output-on-failure -j "$jobs") || status=$?
+step "tests ran"
 # Then the checked build (clang, AddressSanitizer, UBSan, libFuzzer) in build-checked/: the unit
 # tests under the sanitizers and a short fuzzing of every target (docs/testing.md). It runs
 # whatever the first tests said, and the command fails if either failed.
 scripts/checked-build.sh || status=$?
+step "checked build ran"
 exit "$status"

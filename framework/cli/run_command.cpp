@@ -25,9 +25,13 @@ int runCommand(const Options& options) {
   const std::string out = options.out.empty() ? defaultOutDir(experiment.name) : options.out;
   requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
   const auto context = GlContext::create(experiment.glBackend);
+  const Animation& animation = experiment.animation;
   std::cerr << "lpvlab: " << experiment.name << " on " << context->renderer() << " ("
-            << context->backend() << "), " << experiment.warmupFrames << " warm-up + "
-            << experiment.repeats << " timed frames\n";
+            << context->backend() << "), " << experiment.warmupFrames << " warm-up + ";
+  if (animation.animated())
+    std::cerr << "a sequence of " << animation.frames << " frames at " << animation.fps << " fps\n";
+  else
+    std::cerr << experiment.repeats << " timed frames\n";
   const nlohmann::json manifest = runExperiment(experiment, *context, out);
   std::cerr << computeLine(manifest["compute"]) << "\n";
   const auto& gpu = manifest["timing"]["gpu_ms"];
@@ -39,7 +43,10 @@ int runCommand(const Options& options) {
   std::cout << "propagation throughput: " << std::scientific << std::setprecision(3)
             << manifest["propagation_cell_iterations_per_second"].get<double>()
             << " cell-iterations/s\n"
-            << "wrote " << out << "/{images.exr, combined.png, manifest.json}\n";
+            << "wrote " << out
+            << (!animation.animated() ? "/{images.exr, combined.png, manifest.json}\n"
+                : manifest["outputs"].contains("video") ? "/{frames/, video.mp4, manifest.json}\n"
+                                                        : "/{frames/, manifest.json}\n");
   return 0;
 }
 

@@ -36,6 +36,18 @@ template <class Body>
 [[gnu::flatten, gnu::target("arch=x86-64-v4")]] void runX86_64V4(const Body& body) { body(); }
 }  // namespace cpu_dispatch_detail
 
+// The body compiled for `Level` alone: for bodies that differ per level (a register width),
+// where runAtLevel would compile each of them for every level.
+template <CpuKernelLevel Level, class Body>
+void runAtFixedLevel(const Body& body) {
+  if constexpr (Level == CpuKernelLevel::X86_64_V4)
+    cpu_dispatch_detail::runX86_64V4(body);
+  else if constexpr (Level == CpuKernelLevel::X86_64_V3)
+    cpu_dispatch_detail::runX86_64V3(body);
+  else
+    cpu_dispatch_detail::runX86_64(body);
+}
+
 template <class Body>
 void runAtLevel(CpuKernelLevel level, const Body& body) {
   switch (level) {

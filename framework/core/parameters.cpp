@@ -261,6 +261,9 @@ template std::vector<std::string> Params::get<std::vector<std::string>>(
     std::string_view, const std::vector<std::string>&, Range<std::vector<std::string>>);
 template int Params::require<int>(std::string_view, Range<int>);
 template float Params::require<float>(std::string_view, Range<float>);
+template double Params::require<double>(std::string_view, Range<double>);
+template std::vector<std::string> Params::require<std::vector<std::string>>(
+    std::string_view, Range<std::vector<std::string>>);
 template std::string Params::require<std::string>(std::string_view, Range<std::string>);
 template glm::vec3 Params::require<glm::vec3>(std::string_view, Range<glm::vec3>);
 template glm::ivec3 Params::require<glm::ivec3>(std::string_view, Range<glm::ivec3>);

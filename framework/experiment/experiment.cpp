@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "framework/animation/animation_file.h"
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/sweep.h"
@@ -94,13 +95,14 @@ Camera readCamera(Params& p, const Scene& scene) {
     camera.position = p.require<glm::vec3>("position");
     const glm::vec3 target = p.require<glm::vec3>("look_at");
     const glm::vec3 up = p.get<glm::vec3>("up", glm::vec3(0, 1, 0));
-    camera.forward = target - camera.position;
-    if (glm::length(camera.forward) < 1e-6f)
-      throw Error(p.where("look_at") + ": must differ from the camera position");
-    camera.forward = glm::normalize(camera.forward);
-    const glm::vec3 right = glm::cross(camera.forward, up);
-    if (glm::length(right) < 1e-6f) throw Error(p.where("up") + ": parallel to the view direction");
-    camera.up = glm::normalize(glm::cross(glm::normalize(right), camera.forward));
+    switch (orientCamera(camera, target, up)) {
+      case CameraOrientation::TargetAtPosition:
+        throw Error(p.where("look_at") + ": must differ from the camera position");
+      case CameraOrientation::UpAlongView:
+        throw Error(p.where("up") + ": parallel to the view direction");
+      case CameraOrientation::Oriented:
+        break;
+    }
     camera.verticalFov = kDegrees * p.get<float>("fov_deg", 45.0f, {.min = 1.0f, .max = 170.0f});
     const float diagonal = glm::length(scene.bounds().extent());
     camera.nearPlane = p.get<float>("near", std::max(1e-4f, 1e-4f * diagonal), {.min = 1e-6f});
@@ -155,7 +157,8 @@ std::string sharedDirectory() {
   return LPVLAB_SHARED_DIR;
 }
 
-Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides) {
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides,
+                          const SceneLoader& loadScene) {
   // `extends` and `include` are merged here; a [sweep] table is checked and left to `lpvlab
   // sweep`: read on its own, a sweep file is its base configuration. Likewise a [fit] table is
   // `lpvlab fit`'s (framework/fit/fit_spec.h).
@@ -166,7 +169,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
     root.erase("sweep");
   }
   root.erase("fit");
-  return loadExperiment(root, path);
+  return loadExperiment(root, path, loadScene);
 }
 
 Experiment loadExperiment(const toml::table& root, const std::string& path, const SceneLoader& loadScene) {
@@ -193,8 +196,15 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   for (Params& lightParams : params.tables("lights")) e.scene.lights.push_back(readLight(lightParams));
   for (Params& materialParams : params.tables("materials")) readMaterialOverride(materialParams, e.scene);
 
+  // The camera is [camera]'s (or the scene's first); a path in [animation.camera] moves it, and
+  // then needs none (a scene without cameras and no [camera] table).
   Params cameraParams = params.table("camera");
-  e.camera = readCamera(cameraParams, e.scene);
+  Params animationParams = params.table("animation");
+  const bool cameraGiven =
+      !animationParams.has("camera") || root.contains("camera") || !e.scene.cameras.empty();
+  if (cameraGiven) e.camera = readCamera(cameraParams, e.scene);
+  e.animation = readAnimation(animationParams, e.scene, e.camera, cameraGiven);
+  applyAnimation(e.animation, e.animation.frameTime(0), e.scene, e.camera);
 
   Params output = params.table("output");
   e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});

@@ -6,14 +6,15 @@
 // overrides ("propagation.iterations=16") are applied before reading, so they are checked like
 // the file's keys. Any key nobody reads is an error naming the file, the line and the valid keys.
 
+#include <toml++/toml.h>
+
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-#include <toml++/toml.h>
-
+#include "framework/animation/animation.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/reference_cache.h"
 #include "framework/scene/scene.h"
@@ -46,8 +47,9 @@ struct ComparisonSettings {
 struct Experiment {
   std::string name;             // the file's stem, or "cornell_box" for the built-in default
   std::string file;             // the experiment file, or "" for the built-in default
-  Scene scene;
+  Scene scene;                  // at frame 0 of the animation (as loaded when nothing moves)
   Camera camera;
+  Animation animation;  // [animation]: one frame where the file has none
   PipelineSettings settings;
   Strategies strategies;
   int warmupFrames = 2;
@@ -65,12 +67,13 @@ struct Experiment {
   nlohmann::json configuration; // every parameter as resolved (defaults included)
 };
 
-// Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
-// the file and key for anything wrong.
-Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {});
 // Reads the scene file at a resolved path (loadSceneByName): a fit passes one that loads each
 // scene once and hands out copies (the experiment adds its lights and materials to its copy).
 using SceneLoader = std::function<Scene(const std::string& resolvedPath)>;
+// Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
+// the file and key for anything wrong.
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {},
+                          const SceneLoader& loadScene = {});
 // The same from a table already read (`extends` and `include` merged, overrides applied, no
 // [sweep] or [fit] table); `path` names it in messages and anchors relative scene files.
 Experiment loadExperiment(const toml::table& root, const std::string& path,

@@ -28,11 +28,14 @@ struct TimingReport {
   nlohmann::json toJson() const;
 };
 
+// The timings of `frames` (in order) summarised per stage, after `warmup` untimed frames.
+TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup);
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
 
 // Builds the pipeline for `experiment` (on the current GL context) and runs it into `outDir`;
-// returns the manifest. Throws an Error if any output holds NaN or Inf.
+// returns the manifest. Throws an Error if any output holds NaN or Inf. An animated experiment
+// renders its sequence (sequence.h).
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir);
 

@@ -149,6 +149,12 @@ void Pipeline::setCamera(const Camera& camera) {
   placeLevels();
 }
 
+void Pipeline::moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) {
+  if (geometryMoved) scene_->updateGeometry(scene);
+  if (lightsMoved || geometryMoved)
+    lightMapsPass_->setViews(buildLightViews(scene.lights, scene.bounds()));
+}
+
 void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {
   const std::vector<GridGeometry> placed =
       focus ? placeCascadeLevels(settings_.grid, int(levels_.size()), *focus)

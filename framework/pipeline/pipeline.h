@@ -82,6 +82,10 @@ public:
   // Moves the camera; finer cascade levels follow it from the next frame on (with "depth"
   // placement each frame places them after its G-buffer; the "clear" stage includes that read-back).
   void setCamera(const Camera& camera);
+  // The scene moved (a frame of an animation, framework/animation/animation.h): the lights and
+  // the meshes' vertices are taken again from `scene`, which holds the same lights and meshes as
+  // at construction, moved. The light views follow the scene's bounds when geometry moved.
+  void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved);
   // The light grids, finest first, where the last frame placed them.
   const std::vector<LightGrid>& levels() const { return levels_; }
   // Cells one propagation iteration updates, over every level (for cell-iterations/s).

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "framework/core/error.h"
+
 namespace lpvlab {
 
 namespace gbuffer_kernel {
@@ -105,7 +107,6 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   maps_.lightCount = int(views.lights.size());
   maps_.rsmResolution = rsmResolution;
   maps_.shadowResolution = shadowResolution;
-  for (const GpuView& view : views.views) clipFromWorld_.push_back(view.clipFromWorld);
   const int r = rsmResolution, s = shadowResolution;
   rsmFramebuffers_ = allocateRsm(maps_, r, layers, "rsm");
   maps_.shadowDepth =
@@ -117,15 +118,11 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  maps_.records = views;
   maps_.lightRecords = gl::Buffer(std::max<size_t>(1, views.lights.size()) * sizeof(GpuLight),
                                   "light records", nullptr);
-  if (!views.lights.empty())
-    maps_.lightRecords.upload(views.lights.data(), views.lights.size() * sizeof(GpuLight));
   maps_.viewRecords = gl::Buffer(std::max<size_t>(1, views.views.size()) * sizeof(GpuView),
                                  "view records", nullptr);
-  if (!views.views.empty())
-    maps_.viewRecords.upload(views.views.data(), views.views.size() * sizeof(GpuView));
+  setViews(views);
   for (int layer = 0; layer < layers; ++layer) {
     gl::Framebuffer& shadow = shadowFramebuffers_.emplace_back();
     shadow.attach(GL_DEPTH_ATTACHMENT, maps_.shadowDepth, layer);
@@ -133,6 +130,18 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
     glNamedFramebufferReadBuffer(shadow.id(), GL_NONE);
     shadow.checkComplete("shadow map layer " + std::to_string(layer));
   }
+}
+
+void LightMapsPass::setViews(const LightViews& views) {
+  if (int(views.views.size()) != maps_.views || int(views.lights.size()) != maps_.lightCount)
+    throw Error("light maps: the lights changed in number or kind (only moves are updated)");
+  clipFromWorld_.clear();
+  for (const GpuView& view : views.views) clipFromWorld_.push_back(view.clipFromWorld);
+  maps_.records = views;
+  if (!views.lights.empty())
+    maps_.lightRecords.upload(views.lights.data(), views.lights.size() * sizeof(GpuLight));
+  if (!views.views.empty())
+    maps_.viewRecords.upload(views.views.data(), views.views.size() * sizeof(GpuView));
 }
 
 // Surfaces without alpha masks go through a fragment-free program, the alpha-masked ones through

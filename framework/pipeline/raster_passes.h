@@ -52,6 +52,9 @@ public:
                 int shadowResolution);
   void renderShadowMaps(const SceneGpu& scene);
   void renderRsms(const SceneGpu& scene);
+  // The lights moved (an animation): the same lights and views, placed anew. Throws if the count
+  // of lights or views differs from the maps'.
+  void setViews(const LightViews& views);
   const LightMaps& lightMaps() const { return maps_; }
 
 private:

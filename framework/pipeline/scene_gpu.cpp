@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "framework/core/error.h"
+
 namespace lpvlab {
 
 namespace material_kernel {
@@ -32,29 +34,43 @@ gl::Texture uploadTexture(const TextureImage& source) {
   return texture;
 }
 
-}  // namespace
-
-SceneGpu::SceneGpu(const Scene& scene)
-    : sceneMaterials_(scene.materials), materialBounds_(scene.materials.size()) {
-  for (const Mesh& mesh : scene.meshes)
-    if (mesh.material >= 0 && mesh.material < int(materialBounds_.size()))
-      for (std::uint32_t index : mesh.indices) materialBounds_[mesh.material].extend(mesh.positions[index]);
-  // Group meshes by material so each material is one draw call.
-  std::vector<int> order(scene.meshes.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return scene.meshes[a].material < scene.meshes[b].material;
-  });
+// The vertices of every mesh, interleaved, in `order`.
+std::vector<Vertex> interleavedVertices(const Scene& scene, const std::vector<int>& order) {
   std::vector<Vertex> vertices;
-  std::vector<std::uint32_t> indices;
   for (int meshIndex : order) {
-    const Mesh& mesh = scene.meshes[meshIndex];
-    const auto base = static_cast<std::uint32_t>(vertices.size());
+    const Mesh& mesh = scene.meshes[std::size_t(meshIndex)];
     for (size_t v = 0; v < mesh.positions.size(); ++v)
       vertices.push_back({mesh.positions[v], mesh.normals[v],
                           v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f)});
+  }
+  return vertices;
+}
+
+}  // namespace
+
+void SceneGpu::measureMaterialBounds(const Scene& scene) {
+  materialBounds_.assign(scene.materials.size(), Bounds{});
+  for (const Mesh& mesh : scene.meshes)
+    if (mesh.material >= 0 && mesh.material < int(materialBounds_.size()))
+      for (std::uint32_t index : mesh.indices) materialBounds_[mesh.material].extend(mesh.positions[index]);
+}
+
+SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
+  measureMaterialBounds(scene);
+  // Group meshes by material so each material is one draw call.
+  meshOrder_.resize(scene.meshes.size());
+  for (size_t i = 0; i < meshOrder_.size(); ++i) meshOrder_[i] = int(i);
+  std::stable_sort(meshOrder_.begin(), meshOrder_.end(), [&](int a, int b) {
+    return scene.meshes[a].material < scene.meshes[b].material;
+  });
+  const std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
+  std::vector<std::uint32_t> indices;
+  std::uint32_t base = 0;
+  for (int meshIndex : meshOrder_) {
+    const Mesh& mesh = scene.meshes[meshIndex];
     const std::size_t first = indices.size();
     for (std::uint32_t index : mesh.indices) indices.push_back(base + index);
+    base += static_cast<std::uint32_t>(mesh.positions.size());
     if (!draws_.empty() && draws_.back().material == mesh.material)
       draws_.back().indexCount += mesh.indices.size();
     else
@@ -63,6 +79,7 @@ SceneGpu::SceneGpu(const Scene& scene)
                             scene.materials[std::size_t(mesh.material)].alphaMode == AlphaMode::Mask,
                         first, mesh.indices.size()});
   }
+  for (const Mesh& mesh : scene.meshes) vertexCounts_.push_back(mesh.positions.size());
   vertices_ = gl::Buffer(vertices.size() * sizeof(Vertex), "scene vertices", vertices.data());
   indices_ = gl::Buffer(indices.size() * sizeof(std::uint32_t), "scene indices", indices.data());
 
@@ -119,6 +136,18 @@ void SceneGpu::draw(AlphaMasks which, bool bindMaterials) const {
                    reinterpret_cast<const void*>(range.firstIndex * sizeof(std::uint32_t)));
   }
   glBindVertexArray(0);
+}
+
+void SceneGpu::updateGeometry(const Scene& scene) {
+  bool same = scene.meshes.size() == vertexCounts_.size();
+  for (std::size_t i = 0; same && i < vertexCounts_.size(); ++i)
+    same = scene.meshes[i].positions.size() == vertexCounts_[i] &&
+           scene.meshes[i].normals.size() == vertexCounts_[i];
+  if (!same)
+    throw Error("scene update: the meshes differ from the uploaded ones (only moves are updated)");
+  const std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
+  vertices_.upload(vertices.data(), vertices.size() * sizeof(Vertex));
+  measureMaterialBounds(scene);
 }
 
 std::size_t SceneGpu::memoryBytes() const {

@@ -37,6 +37,9 @@ public:
   // for surfaces without alpha masks needs neither, and has no such uniform).
   void draw(AlphaMasks which = AlphaMasks::Any, bool bindMaterials = true) const;
   std::size_t memoryBytes() const;
+  // Uploads the vertices of `scene` again: the same meshes, moved (an animation's rigid motions,
+  // framework/animation/animation.h). Throws if `scene` has other meshes than the uploaded one.
+  void updateGeometry(const Scene& scene);
   // The scene's materials as given (for strategies that treat some materials apart, e.g. the
   // translucent ones of rendering "subsurface"), and the bounds of each one's triangles (empty
   // bounds for a material no mesh uses).
@@ -50,6 +53,10 @@ private:
     std::size_t firstIndex;
     std::size_t indexCount;
   };
+  void measureMaterialBounds(const Scene& scene);
+
+  std::vector<int> meshOrder_;             // meshes grouped by material, the vertex buffer's order
+  std::vector<std::size_t> vertexCounts_;  // per mesh, as uploaded
   GLuint vertexArray_ = 0;
   gl::Buffer vertices_, indices_, materials_;
   std::vector<gl::Texture> textures_;     // one per Scene::textures entry

@@ -15,4 +15,14 @@ Bounds Scene::bounds() const {
   return b;
 }
 
+CameraOrientation orientCamera(Camera& camera, const glm::vec3& target, const glm::vec3& up) {
+  const glm::vec3 forward = target - camera.position;
+  if (!(glm::length(forward) >= 1e-6f)) return CameraOrientation::TargetAtPosition;
+  const glm::vec3 right = glm::cross(glm::normalize(forward), up);
+  if (!(glm::length(right) >= 1e-6f)) return CameraOrientation::UpAlongView;
+  camera.forward = glm::normalize(forward);
+  camera.up = glm::normalize(glm::cross(glm::normalize(right), camera.forward));
+  return CameraOrientation::Oriented;
+}
+
 }  // namespace lpvlab

@@ -80,6 +80,12 @@ struct Camera {
   float farPlane = 100.0f;
 };
 
+// Points `camera` from its position at `target`, its up vector the part of `up` orthogonal to
+// the view. Returns false, leaving the camera as it was, when `target` is (within 1e-6 m) the
+// camera's position or `up` is parallel to the view.
+enum class CameraOrientation { Oriented, TargetAtPosition, UpAlongView };
+CameraOrientation orientCamera(Camera& camera, const glm::vec3& target, const glm::vec3& up);
+
 struct Scene {
   std::string source;              // file path, or "builtin:cornell_box"
   std::vector<Mesh> meshes;

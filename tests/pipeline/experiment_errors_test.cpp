@@ -227,5 +227,52 @@ height = 80
   EXPECT_EQ(e.configuration["lights"].size(), 3u);
 }
 
+TEST_F(ExperimentErrors, ACameraPathMovesTheExperimentsCameraOrNeedsNone) {
+  // [camera] (here inherited, as the shipped fly-throughs inherit theirs) gives the field of view
+  // the path keeps; the path gives position and view.
+  write("base.toml", "[camera]\nposition = [0, 0.3, -1]\nlook_at = [0, 0.3, 0]\nfov_deg = 30\n");
+  const std::string path = write(
+      "both.toml",
+      "extends = \"base.toml\"\n[animation]\nframes = 2\n[animation.camera]\n"
+      "[[animation.camera.keys]]\nframe = 0\nposition = [0.2, 0.3, -1]\nlook_at = [0.2, 0.3, 0]\n");
+  const Experiment e = loadExperiment(path);
+  EXPECT_NEAR(e.camera.verticalFov, 30.0f * float(M_PI) / 180.0f, 1e-6f);
+  EXPECT_NEAR(e.camera.position.x, 0.2f, 1e-6f);
+  // A scene without cameras and no [camera]: the path alone places it (45 degrees by default).
+  std::ofstream(dir_.file("tri.obj")) << "v 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 3 2\n";
+  const std::string bare = write(
+      "bare.toml",
+      "[scene]\nfile = \"tri.obj\"\n[[lights]]\nposition = [0.2, 1, 0.2]\nintensity = 1\n"
+      "[animation]\n[animation.camera]\n"
+      "[[animation.camera.keys]]\nframe = 0\nposition = [0.3, 1, 0.3]\nlook_at = [0.3, 0, 0.31]\n");
+  const Experiment fromPath = loadExperiment(bare);
+  EXPECT_NEAR(fromPath.camera.verticalFov, 45.0f * float(M_PI) / 180.0f, 1e-6f);
+  EXPECT_GT(fromPath.camera.farPlane, fromPath.camera.nearPlane);
+  // Without the path the same file has no camera: an error saying how to give one.
+  const std::string none =
+      write("none.toml",
+            "[scene]\nfile = \"tri.obj\"\n[[lights]]\nposition = [0.2, 1, 0.2]\nintensity = 1\n");
+  EXPECT_TRUE(contains(errorOf(none), "has no camera"));
+}
+
+TEST_F(ExperimentErrors, AnAnimatedLightOfTheExperimentIsFoundByName) {
+  const std::string path = write(
+      "lamp.toml",
+      "[[lights]]\nname = \"lamp\"\ntype = \"point\"\nposition = [0.2, 0.3, 0.2]\nintensity = 0.1\n"
+      "[animation]\nframes = 3\n[[animation.lights]]\nlight = \"lamp\"\n"
+      "[[animation.lights.keys]]\nframe = 0\nposition = [0.2, 0.3, 0.2]\n"
+      "[[animation.lights.keys]]\nframe = 2\nposition = [0.4, 0.3, 0.2]\n");
+  const Experiment e = loadExperiment(path);
+  ASSERT_EQ(e.animation.lights.size(), 1u);
+  EXPECT_EQ(e.scene.lights[std::size_t(e.animation.lights[0].light)].name, "lamp");
+  // A point light has no direction to key.
+  const std::string bad = write(
+      "lamp2.toml",
+      "[[lights]]\nname = \"lamp\"\ntype = \"point\"\nposition = [0.2, 0.3, 0.2]\nintensity = 0.1\n"
+      "[animation]\n[[animation.lights]]\nlight = \"lamp\"\n"
+      "[[animation.lights.keys]]\nframe = 0\ndirection = [0, -1, 0]\n");
+  EXPECT_TRUE(contains(errorOf(bad), "unknown key 'animation.lights[0].keys[0].direction'"));
+}
+
 }  // namespace
 }  // namespace lpvlab

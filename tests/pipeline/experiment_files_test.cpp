@@ -3,6 +3,8 @@
 // requirements, the scene). A file that drifts from the strategies it names fails here, not in a
 // user's hour-long sweep. Scenes are loaded once per file and configuration, so this is slowish.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -10,10 +12,9 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
+#include "framework/experiment/scene_cache.h"
 #include "framework/experiment/sweep.h"
 #include "io/temp_dir.h"
 
@@ -34,6 +35,7 @@ TEST(ExperimentFiles, EveryConfigurationOfEveryShippedFileLoads) {
   const std::vector<fs::path> files = experimentFiles();
   ASSERT_GE(files.size(), 10u);
   test::TempDir dir;
+  SceneCache scenes;  // each scene read once: most files share Sponza, Sibenik or the box
   int configurations = 0;
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.filename().string());
@@ -43,7 +45,7 @@ TEST(ExperimentFiles, EveryConfigurationOfEveryShippedFileLoads) {
       for (const SweepConfiguration& configuration : sweep) {
         const fs::path resolved = dir.path() / (configuration.id + ".toml");
         std::ofstream(resolved) << configurationToml(file.string(), configuration);
-        const Experiment e = loadExperiment(resolved.string());
+        const Experiment e = loadExperiment(resolved.string(), {}, std::ref(scenes));
         EXPECT_FALSE(e.strategies.injection.empty());
         ++configurations;
       }

@@ -6,6 +6,8 @@
 // refused, and why: the CPU backend's coverage.
 // The default experiment must run.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -14,13 +16,12 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
+#include "backend_comparison.h"
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
+#include "framework/experiment/scene_cache.h"
 #include "framework/experiment/sweep.h"
 #include "framework/pipeline/pipeline.h"
-#include "backend_comparison.h"
 #include "io/temp_dir.h"
 #include "pipeline_test_support.h"
 
@@ -37,10 +38,16 @@ struct Rendered {
   Image direct, indirect;
 };
 
+// Every shipped file's scene read once (Sponza is several seconds a load; most files share it).
+SceneCache& scenes() {
+  static SceneCache cache;
+  return cache;
+}
+
 Rendered render(const std::string& file, const std::string& backend) {
   std::vector<std::string> overrides = kSmall;
   overrides.push_back("compute.backend=\"" + backend + "\"");
-  Experiment e = loadExperiment(file, overrides);
+  Experiment e = loadExperiment(file, overrides, std::ref(scenes()));
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   pipeline.renderFrame();
@@ -63,7 +70,7 @@ TEST(ShippedOnCpu, EachShippedExperimentRunsOnTheCpuAsOnGlOrIsRefusedByName) {
     const fs::path first = dir.path() / (file.stem().string() + ".toml");
     std::ofstream(first) << configurationToml(file.string(), sweep.front());
     try {
-      loadExperiment(first.string(), {"compute.backend=\"cpu\""});
+      loadExperiment(first.string(), {"compute.backend=\"cpu\""}, std::ref(scenes()));
     } catch (const Error& error) {
       const std::string why = error.what();
       EXPECT_NE(why.find("cannot run on the CPU backend"), std::string::npos) << why;

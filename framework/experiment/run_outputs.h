@@ -1,0 +1,42 @@
+#pragma once
+// What a run writes about itself, shared by static runs (run.h) and sequences (sequence.h): the
+// checks of its images, its comparison with the reference, and the description of the run that
+// opens its manifest.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "framework/experiment/experiment.h"
+#include "framework/gl/context.h"
+#include "framework/io/image.h"
+#include "framework/pipeline/pipeline.h"
+#include "framework/reference/reference_cache.h"
+
+namespace lpvlab {
+
+// Throws an Error, before anything is written, if any output holds NaN or Inf.
+void requireFiniteImages(const std::vector<NamedImage>& aovs);
+
+// The pixels where the camera sees a surface (depth 0 marks the background).
+Image coverageMask(const Image& depth);
+
+// How the run's outputs compare with the reference's, per configured pair (run output, reference
+// output), over the pixels the camera sees: the metrics (framework/metrics/metrics.h), per region
+// too, the means and their ratio, and a per-pixel z-test against the reference's variance at a
+// Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
+nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref,
+                                    const Image& mask, const ComparisonSettings& settings);
+
+// The manifest's description of the run: versions, configuration, scene, host, libraries, where
+// the kernels ran, the grids, memory and work per frame, and the propagation throughput from the
+// median propagation time `propagationMs`.
+nlohmann::json describeRun(const Experiment& experiment, const GlContext& context,
+                           const Pipeline& pipeline, const std::string& sceneHash,
+                           double propagationMs);
+
+// The flux bookkeeping of injection (W, RGB summed): what the RSMs reflect, what the grid holds,
+// and what each injection added.
+nlohmann::json injectionFluxJson(const InjectionBalance& balance);
+
+}  // namespace lpvlab

@@ -1,0 +1,228 @@
+#include "framework/experiment/sequence.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "framework/core/error.h"
+#include "framework/core/hash.h"
+#include "framework/core/progress.h"
+#include "framework/experiment/run.h"
+#include "framework/experiment/run_outputs.h"
+#include "framework/io/atomic_file.h"
+#include "framework/io/child_process.h"
+#include "framework/scene/scene_loader.h"
+
+namespace lpvlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json vec3Json(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json readFrameRecord(const fs::path& path) {
+  std::ifstream in(path);
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path.string() + ": damaged frame record (" + e.what() +
+                "); delete it to render "
+                "that frame again");
+  }
+}
+
+FrameTimes frameTimesOf(const nlohmann::json& record) {
+  FrameTimes times;
+  for (const auto& [stage, ms] : record.at("gpu_ms").items()) times.gpuMs[stage] = ms.get<double>();
+  for (const auto& [stage, ms] : record.at("wall_ms").items())
+    times.wallMs[stage] = ms.get<double>();
+  return times;
+}
+
+// Every metric of every pair averaged over the frames that have it: the sequence's figures in
+// the summary (per-frame ones stay in the frame records and the manifest's sequence block).
+nlohmann::json meanComparison(const std::vector<nlohmann::json>& records) {
+  std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;
+  for (const nlohmann::json& record : records) {
+    if (!record.contains("reference")) continue;
+    for (const auto& [pair, value] : record["reference"]["comparison"].items())
+      for (const auto& [metric, v] : value["metrics"].items())
+        if (v.is_number()) {
+          auto& [sum, count] = sums[pair][metric];
+          sum += v.get<double>();
+          ++count;
+        }
+  }
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [pair, metrics] : sums)
+    for (const auto& [metric, sumCount] : metrics)
+      out[pair]["metrics"][metric] = sumCount.first / sumCount.second;
+  return out;
+}
+
+int frameDigits(int frames) {
+  return std::max(4, int(std::to_string(std::max(0, frames - 1)).size()));
+}
+
+// frames/frame_%04d.png as H.264 (yuv420p needs even sizes: odd ones are padded by a pixel).
+void writeVideo(const fs::path& dir, int frames, double fps) {
+  const std::string pattern =
+      (dir / "frames" / ("frame_%0" + std::to_string(frameDigits(frames)) + "d.png")).string();
+  const fs::path temporary = dir / ".video.tmp.mp4";
+  const int status =
+      runProgram({"ffmpeg", "-y", "-loglevel", "error", "-framerate", std::to_string(fps), "-i",
+                  pattern, "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-vf",
+                  "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-f", "mp4", temporary.string()});
+  if (status != 0) {
+    fs::remove(temporary);
+    throw Error((dir / "video.mp4").string() + ": ffmpeg failed (exit " + std::to_string(status) +
+                "); the frames are in " + (dir / "frames").string());
+  }
+  fs::rename(temporary, dir / "video.mp4");
+}
+
+}  // namespace
+
+std::string frameStem(int frame, int frames) {
+  std::ostringstream s;
+  s << "frames/frame_" << std::setfill('0') << std::setw(frameDigits(frames)) << frame;
+  return s.str();
+}
+
+nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
+                           const std::string& outDir) {
+  const Animation& animation = experiment.animation;
+  const bool video = animation.video && animation.frames > 1;
+  if (video && findProgram("ffmpeg").empty())
+    throw Error(
+        experiment.file +
+        ": key 'animation.video': the ffmpeg program is not installed "
+        "(Debian package ffmpeg; scripts/install-deps.sh installs it), or set video = false");
+  const fs::path dir(outDir);
+  fs::create_directories(dir / "frames");
+  const auto recordPath = [&](int frame) {
+    return dir / (frameStem(frame, animation.frames) + ".json");
+  };
+  // Frames already there must be this configuration's (a changed file with the same --out would
+  // otherwise mix two sequences).
+  const std::string configuration = Hasher().text(experiment.configuration.dump()).hex();
+  int first = 0;
+  while (first < animation.frames && fs::exists(recordPath(first))) {
+    if (readFrameRecord(recordPath(first)).value("configuration_hash", "") != configuration)
+      throw Error(recordPath(first).string() + ": a frame of another configuration of " +
+                  experiment.name + "; give another --out, or delete " + outDir +
+                  " to start again");
+    ++first;
+  }
+  if (first > 0)
+    std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
+              << " are done; continuing at frame " << first << "\n";
+
+  ShaderCompiler shaders;
+  applyAnimation(animation, animation.frameTime(first), experiment.scene, experiment.camera);
+  Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
+                    std::move(experiment.strategies), shaders);
+  for (int i = 0; i < experiment.warmupFrames; ++i) pipeline.renderFrame();
+
+  // One exposure for every PNG of the sequence: frame 0's.
+  std::optional<float> exposure;
+  if (first > 0) exposure = readFrameRecord(recordPath(0)).at("png_exposure_stops").get<float>();
+  ProgressBar progress(experiment.name + " frames");
+  const auto started = std::chrono::steady_clock::now();
+  for (int frame = first; frame < animation.frames; ++frame) {
+    const double seconds = animation.frameTime(frame);
+    try {
+      applyAnimation(animation, seconds, experiment.scene, experiment.camera);
+    } catch (const Error& error) {
+      throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
+    }
+    if (animation.movesCamera()) pipeline.setCamera(experiment.camera);
+    if (animation.movesLights() || animation.movesGeometry())
+      pipeline.moveScene(experiment.scene, animation.movesLights(), animation.movesGeometry());
+    const FrameTimes times = pipeline.renderFrame();
+    const std::vector<NamedImage> aovs = pipeline.readOutputs();
+    try {
+      requireFiniteImages(aovs);
+    } catch (const Error& error) {
+      throw Error("frame " + std::to_string(frame) + ": " + error.what());
+    }
+    if (!exposure)
+      exposure = experiment.exposureStops +
+                 (experiment.autoExposure ? middleGreyExposure(findAov(aovs, "combined")) : 0.0f);
+    const std::string hash = sceneHash(experiment.scene);
+    nlohmann::json record = {{"frame", frame},
+                             {"time_s", seconds},
+                             {"camera",
+                              {{"position", vec3Json(experiment.camera.position)},
+                               {"forward", vec3Json(experiment.camera.forward)},
+                               {"vertical_fov_deg", glm::degrees(experiment.camera.verticalFov)}}},
+                             {"scene_hash", hash},
+                             {"configuration_hash", configuration},
+                             {"gpu_ms", times.gpuMs},
+                             {"wall_ms", times.wallMs},
+                             {"png_exposure_stops", *exposure}};
+    if (experiment.compareWithReference) {
+      const Reference reference =
+          ensureReference(experiment.scene, experiment.camera, experiment.reference);
+      record["reference"] = compareWithReference(
+          aovs, reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
+    }
+    const std::string stem = (dir / frameStem(frame, animation.frames)).string();
+    writeExr(stem + ".exr", aovs,
+             {{"lpvlab:experiment", experiment.name},
+              {"lpvlab:scene_hash", hash},
+              {"lpvlab:frame", std::to_string(frame)}});
+    writePng(stem + ".png", findAov(aovs, "combined"), *exposure);
+    writeTextAtomically(stem + ".json", record.dump(2) + "\n");
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const int done = frame - first + 1, left = animation.frames - frame - 1;
+    progress.update(double(frame + 1) / animation.frames,
+                    "frame " + std::to_string(frame + 1) + "/" + std::to_string(animation.frames) +
+                        ", ETA " + ProgressBar::formatSeconds(elapsed / done * left));
+  }
+  progress.finish(std::to_string(animation.frames) + " frames");
+  if (video) writeVideo(dir, animation.frames, animation.fps);
+
+  // The manifest, from every frame's record (also those of an earlier, interrupted run).
+  std::vector<nlohmann::json> records;
+  std::vector<FrameTimes> times;
+  for (int frame = 0; frame < animation.frames; ++frame) {
+    records.push_back(readFrameRecord(recordPath(frame)));
+    times.push_back(frameTimesOf(records.back()));
+  }
+  const TimingReport timing = timingReport(times, experiment.warmupFrames);
+  nlohmann::json manifest =
+      describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
+                  timing.gpuMs.at("propagation").median);
+  manifest["timing"] = timing.toJson();
+  manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
+  manifest["sequence"] = {{"frames", animation.frames},
+                          {"fps", animation.fps},
+                          {"moves",
+                           {{"camera", animation.movesCamera()},
+                            {"lights", animation.movesLights()},
+                            {"geometry", animation.movesGeometry()}}},
+                          {"resumed_at_frame", first},
+                          {"frame_records", records}};
+  if (experiment.compareWithReference)
+    manifest["reference"] = {
+        {"per_frame", true},
+        {"comparison", meanComparison(records)},
+        {"note", "metrics averaged over the frames; per frame under sequence.frame_records"}};
+  manifest["outputs"] = {
+      {"frames", frameStem(0, animation.frames) + ".{exr,png,json} and on"},
+      {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
+      {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"},
+      {"png_exposure_stops", records.front().at("png_exposure_stops")}};
+  if (video) manifest["outputs"]["video"] = "video.mp4";
+  writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
+  return manifest;
+}
+
+}  // namespace lpvlab
