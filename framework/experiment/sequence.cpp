@@ -1,5 +1,7 @@
 #include "framework/experiment/sequence.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -73,7 +75,8 @@ int frameDigits(int frames) {
 void writeVideo(const fs::path& dir, int frames, double fps) {
   const std::string pattern =
       (dir / "frames" / ("frame_%0" + std::to_string(frameDigits(frames)) + "d.png")).string();
-  const fs::path temporary = dir / ".video.tmp.mp4";
+  // Named as atomic_file.h names its temporaries, so a resumed run removes one a kill left.
+  const fs::path temporary = dir / ("video.tmp-" + std::to_string(::getpid()) + ".mp4");
   const int status =
       runProgram({"ffmpeg", "-y", "-loglevel", "error", "-framerate", std::to_string(fps), "-i",
                   pattern, "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-vf",
@@ -119,6 +122,10 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                   " to start again");
     ++first;
   }
+  // A run killed while writing a frame's files (or the video) left temporaries: that frame has no
+  // record, so it is rendered again below.
+  removeLeftoverTemporaries((dir / "frames").string());
+  removeLeftoverTemporaries(dir.string());
   if (first > 0)
     std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
               << " are done; continuing at frame " << first << "\n";

@@ -496,9 +496,19 @@ SummaryResult writeSweepSummary(const std::string& dir) {
         const nlohmann::json value = found == work.end() ? nlohmann::json() : nlohmann::json(found->second);
         row.push_back(jsonText(found == work.end() ? nullptr : &value));
       }
+      // A sequence's rows are its frames, in order: each gets its frame's figures (the run's
+      // are their mean over frames).
+      const nlohmann::json* frame = nullptr;
+      if (const auto* records = findPath(m, "sequence.frame_records");
+          records && records->is_array() && r < records->size())
+        frame = &(*records)[r];
       for (const auto& [pair, metric] : metrics) {
         const nlohmann::json* v = nullptr;
-        if (const auto* c = findPath(m, "reference.comparison"); c && c->contains(pair)) {
+        if (const auto* c = frame ? findPath(*frame, "reference.comparison") : nullptr;
+            c && c->contains(pair) && (*c)[pair].contains("metrics") &&
+            (*c)[pair]["metrics"].contains(metric))
+          v = &(*c)[pair]["metrics"][metric];
+        else if (const auto* c = findPath(m, "reference.comparison"); c && c->contains(pair)) {
           const nlohmann::json& entry = (*c)[pair];
           if (entry.contains("metrics") && entry["metrics"].contains(metric)) v = &entry["metrics"][metric];
         }

@@ -46,6 +46,13 @@ void writeAtomically(const std::string& path,
   }
 }
 
+void removeLeftoverTemporaries(const std::string& directory) {
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, error))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos)
+      fs::remove(entry.path(), error);
+}
+
 void writeTextAtomically(const std::string& path, const std::string& text) {
   writeAtomically(path, [&](const std::string& temporary) {
     std::ofstream out(temporary, std::ios::binary);

@@ -14,6 +14,11 @@ void writeAtomically(const std::string& path, const std::function<void(const std
 
 void writeTextAtomically(const std::string& path, const std::string& text);
 
+// Removes the temporaries (above) that writers killed mid-write left in `directory` (not below
+// it). Only where no other process is writing there: a reference cache entry under its lock, a
+// run directory its one run resumes.
+void removeLeftoverTemporaries(const std::string& directory);
+
 // Checks, before any work is done, that `path` can become an output directory: it is one, or its
 // nearest existing ancestor is one. Otherwise throws an Error naming `option` (e.g. "--out"), the
 // path and the file in the way, instead of std::filesystem's "cannot create directories: Not a

@@ -208,9 +208,7 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   const EntryLock lock((dir / "lock").string(), ref.key);
   // A process killed while writing leaves its temporary (atomic_file.h) behind; under the lock no
   // one else is writing, so every temporary here is such a leftover.
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
-    if (entry.path().filename().string().find(".tmp-") != std::string::npos)
-      fs::remove(entry.path());
+  removeLeftoverTemporaries(dir.string());
   const std::string statePath = (dir / "state.bin").string();
 
   Accumulator acc(request.width, request.height);

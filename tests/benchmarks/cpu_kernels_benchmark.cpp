@@ -13,38 +13,51 @@
 // independent chains of vector multiply-adds, so a kernel's figure can be read as a fraction of
 // it (SSE2 has no fused multiply-add: there a multiply and an add count as one).
 
+#include <benchmark/benchmark.h>
+#include <tbb/parallel_for.h>
+
 #include <cstring>
 #include <random>
 #include <thread>
-
-#include <benchmark/benchmark.h>
+#include <type_traits>
 
 #include "benchmark_support.h"
-#include <tbb/parallel_for.h>
-
+#include "framework/math/dual.h"
 #include "framework/math/solid_angle.h"
 #include "variants/propagation/standard_cpu.h"
 
 namespace lpvlab {
 namespace {
 
+// The propagation's face table for Real: on dual numbers with the two solid angles as the
+// parameters in slots 0 and 1 (what a fit differentiates).
+template <class Real>
+StandardFaceTable<Real> benchmarkTable(int order) {
+  const double far = cubeFaceSolidAngles().farFace, side = cubeFaceSolidAngles().sideFace;
+  if constexpr (std::is_same_v<Real, Dual>)
+    return makeStandardFaceTable<Dual, Dual>(order, Dual::parameter(far, 0),
+                                             Dual::parameter(side, 1));
+  else
+    return makeStandardFaceTable<Real>(order, far, side);
+}
+
+template <class Real>
 void standardGather(benchmark::State& state, const std::string& isa) {
   const int resolution = int(state.range(0)), order = int(state.range(1));
   const glm::ivec3 res(resolution);
-  const auto table = makeStandardFaceTable<float>(order, cubeFaceSolidAngles().farFace,
-                                                  cubeFaceSolidAngles().sideFace);
+  const StandardFaceTable<Real> table = benchmarkTable<Real>(order);
   const std::size_t cells = std::size_t(resolution) * resolution * resolution;
   const std::size_t floats = cells * 3 * table.coefficients;
-  std::vector<float> current(floats), next(floats), accumulated(floats, 0.0f);
+  std::vector<Real> current(floats), next(floats), accumulated(floats, Real(0.0));
   std::mt19937 random(1);
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
-  for (float& v : current) v = value(random);
+  for (Real& v : current) v = Real(value(random));
   standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa);  // warm-up
   // Iterations paired as the strategy runs them (StepAccumulation).
   int iteration = 0;
   for (auto _ : state) {
     standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa, 0,
-                      static_cast<const StandardOcclusion<float>*>(nullptr),
+                      static_cast<const StandardOcclusion<Real>*>(nullptr),
                       pairedAccumulation(iteration++, 1 << 30));
     std::swap(current, next);
     benchmark::ClobberMemory();
@@ -163,9 +176,17 @@ void multiplyAddPeak(benchmark::State& state, const std::string& isa) {
 
 const bool registered = [] {
   for (const std::string& isa : supportedCpuKernelInstructionSets())
-    medianOf5(benchmark::RegisterBenchmark(("standard_gather/" + isa).c_str(), standardGather, isa)
-        ->ArgsProduct({{32, 64}, {1, 2, 3}})
-        ->ArgNames({"res", "order"}));
+    medianOf5(
+        benchmark::RegisterBenchmark(("standard_gather/" + isa).c_str(), standardGather<float>, isa)
+            ->ArgsProduct({{32, 64}, {1, 2, 3}})
+            ->ArgNames({"res", "order"}));
+  // On dual numbers (a fit's derivative frames): a register holds Bytes / 8 cells, each a value and
+  // four derivatives, so the width of the instruction set is the width of the derivatives' SIMD.
+  for (const std::string& isa : supportedCpuKernelInstructionSets())
+    medianOf5(benchmark::RegisterBenchmark(("standard_gather_dual/" + isa).c_str(),
+                                           standardGather<Dual>, isa)
+                  ->ArgsProduct({{32}, {1, 2}})
+                  ->ArgNames({"res", "order"}));
   medianOf5(benchmark::RegisterBenchmark("standard_variants/auto", standardVariants)
       ->ArgsProduct({{32, 64}, {0, 1}, {0, 1, 2}})
       ->ArgNames({"res", "scatter", "gv"}));

@@ -1,6 +1,7 @@
-// SIGKILL at random moments of `lpvlab reference` and `lpvlab fit`, then the same command again
-// until it finishes. Nothing is lost (the result equals an uninterrupted run's) and nothing is
-// duplicated (one cache entry, no leftover temporaries, every fit iteration logged once).
+// SIGKILL at random moments of `lpvlab reference`, `lpvlab fit` and an animated `lpvlab run`, then
+// the same command again until it finishes. Nothing is lost (the result equals an uninterrupted
+// run's) and nothing is duplicated (one cache entry, no leftover temporaries, every fit iteration
+// logged once, every frame once).
 // The kill times come from a seed printed with each test: LPVLAB_KILL_SEED=N repeats a run.
 
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@
 #include <vector>
 
 #include "executable_support.h"
+#include "framework/experiment/sequence.h"
+#include "framework/io/image.h"
 #include "framework/reference/reference_cache.h"
 
 namespace lpvlab {
@@ -211,6 +214,43 @@ TEST_F(KillResume, AKilledFitResumesToTheUninterruptedConstants) {
   for (std::size_t j = 0; j < a.at("parameters").size(); ++j) {
     const double va = a["parameters"][j].at("value"), vb = b["parameters"][j].at("value");
     EXPECT_NEAR(va, vb, 1e-9 * std::max(1.0, std::abs(va))) << a["parameters"][j].at("key");
+  }
+}
+
+TEST_F(KillResume, AKilledSequenceResumesToTheUninterruptedFrames) {
+  const fs::path base =
+      fs::path(LPVLAB_SOURCE_DIR) / "experiments" / "cornell_box_moving_block.toml";
+  const fs::path file = write("sequence.toml", "extends = \"" + base.string() +
+                                                   "\"\n[output]\nwidth = 48\nheight = 48\n"
+                                                   "[light_maps]\nrsm_resolution = 48\n"
+                                                   "[grid]\nresolution = 16\n[timing]\nwarmup = 0\n"
+                                                   "[animation]\nframes = 16\nvideo = false\n");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  double seconds = 0.0;
+  ASSERT_TRUE(
+      runLpvlab({"run", file.string(), "--out", whole.string()}, dir_ / "whole.log", 1e9, &seconds))
+      << test::readFile(dir_ / "whole.log");
+  const int landed =
+      killRepeatedlyThenFinish({"run", file.string(), "--out", killed.string()},
+                               dir_ / "killed.log", killed / "frames", 0.8 * seconds, 4, random_);
+  std::cout << landed << " kills landed in a " << seconds << " s sequence\n";
+  EXPECT_GE(landed, 1);
+  EXPECT_EQ(leftoverTemporaries(killed), std::vector<fs::path>{});
+  const nlohmann::json a = readJson(whole / "manifest.json"),
+                       b = readJson(killed / "manifest.json");
+  const nlohmann::json& records = b.at("sequence").at("frame_records");
+  ASSERT_EQ(records.size(), 16u);
+  for (int frame = 0; frame < 16; ++frame) {
+    // Every frame once, in order, and the image an uninterrupted run renders, to the bit.
+    EXPECT_EQ(records[std::size_t(frame)].at("frame").get<int>(), frame);
+    const std::string stem = frameStem(frame, 16);
+    const std::vector<NamedImage> x = readExr((whole / (stem + ".exr")).string());
+    const std::vector<NamedImage> y = readExr((killed / (stem + ".exr")).string());
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      EXPECT_TRUE(x[i].image.pixels == y[i].image.pixels) << stem << " " << x[i].name;
+    EXPECT_EQ(records[std::size_t(frame)].at("png_exposure_stops"),
+              a["sequence"]["frame_records"][std::size_t(frame)].at("png_exposure_stops"));
   }
 }
 

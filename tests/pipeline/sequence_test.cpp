@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <set>
 
 #include "framework/experiment/run.h"
+#include "framework/experiment/sweep.h"
 #include "framework/io/child_process.h"
 #include "framework/io/image.h"
 #include "pipeline_test_support.h"
@@ -161,6 +163,35 @@ translation = [0.15, 0, 0.12]
   std::cout
       << "[ sequence ] correlation of the direct light's change, LPV against the path tracer: "
       << correlation << "\n";
+
+  // The summary has a row per frame, each with that frame's figures (the per-frame error curve).
+  fs::remove_all(dir / "cache");
+  const SummaryResult summary = writeSweepSummary(dir.string());
+  EXPECT_EQ(summary.rows, 3);
+  std::ifstream csv(dir / "summary.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> fields;
+    std::size_t at = 0;
+    for (std::size_t comma; (comma = text.find(',', at)) != std::string::npos; at = comma + 1)
+      fields.push_back(text.substr(at, comma - at));
+    fields.push_back(text.substr(at));
+    return fields;
+  };
+  const std::vector<std::string> columns = split(header);
+  const auto flip = std::find(columns.begin(), columns.end(), "metric.indirect_vs_indirect1.flip");
+  ASSERT_NE(flip, columns.end()) << header;
+  std::vector<double> values;
+  while (std::getline(csv, line))
+    values.push_back(std::stod(split(line).at(std::size_t(flip - columns.begin()))));
+  ASSERT_EQ(values.size(), 3u);
+  for (std::size_t f = 0; f < 3; ++f)
+    EXPECT_NEAR(values[f],
+                records[f]["reference"]["comparison"]["indirect_vs_indirect1"]["metrics"]["flip"]
+                    .get<double>(),
+                1e-6 * std::abs(values[f]) + 1e-12);
+  EXPECT_NE(values[0], values[2]);  // per frame, not the sequence's mean repeated
   fs::remove_all(dir);
 }
 
