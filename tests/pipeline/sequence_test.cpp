@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "error_support.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/sweep.h"
 #include "framework/io/child_process.h"
@@ -293,12 +294,7 @@ look_at = [0.3, 0.25, 0.3]
 
   // Another configuration into the same directory is refused, not mixed into the sequence.
   Experiment changed = loadExperiment(file.string(), {"propagation.iterations=7"});
-  std::string message;
-  try {
-    runExperiment(changed, context, run.string());
-  } catch (const Error& error) {
-    message = error.what();
-  }
+  const std::string message = test::errorOf([&] { runExperiment(changed, context, run.string()); });
   EXPECT_NE(message.find("a frame of another configuration"), std::string::npos) << message;
   fs::remove_all(dir);
 }
@@ -311,12 +307,7 @@ TEST(Sequence, AMissingFfmpegIsOneErrorBeforeAnyFrame) {
   Experiment e = loadExperiment(file.string());
   const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
   setenv("PATH", (dir / "empty").c_str(), 1);
-  std::string message;
-  try {
-    runExperiment(e, context, (dir / "run").string());
-  } catch (const Error& error) {
-    message = error.what();
-  }
+  const std::string message = test::errorOf([&] { runExperiment(e, context, (dir / "run").string()); });
   setenv("PATH", path.c_str(), 1);
   EXPECT_NE(message.find("key 'animation.video': the ffmpeg program is not installed"),
             std::string::npos)
