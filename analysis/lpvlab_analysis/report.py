@@ -10,7 +10,8 @@ counted stage on named GPUs beside the time measured here (gpu_estimate.py:
 an estimate from the cost counters, labelled as one), trends against the
 thesis's tables (when the sweep varies their parameter) with the estimate on
 the thesis's GPUs, then per configuration the reference, result and error map
-side by side.
+side by side; for animated configurations, their figures per frame and their video
+(sequences.py).
 
 Errors the user can fix (missing directory, missing/empty summary.csv)
 raise summary.SummaryError with a message naming the file.
@@ -28,6 +29,7 @@ from . import fsutil
 from . import gpu_estimate as G
 from . import images
 from . import plots
+from . import sequences
 from . import summary as S
 from . import tables
 from . import thesis_tables as T
@@ -294,6 +296,14 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                     "absolute values are not comparable, shapes are.</p>")
         body.extend(thesis)
         body.extend(_thesis_estimate_table(G.thesis_comparison(agg, gpus)))
+
+    seq = sequences.sequence_section(
+        [(row["config_name"], row["config_id"], resolve_run_dir(sweep_dir, row)) for _, row in agg.iterrows()],
+        img_dir, out_dir)
+    if seq:
+        _log("plots: sequences")
+        body.append("<h2>Sequences</h2>")
+        body.extend(seq)
 
     body.append("<h2>Images per configuration</h2>")
     imgs = _config_images(agg, sweep_dir, out_dir, use_exr)

@@ -56,8 +56,13 @@ void applyMeshes(const MeshMotion& motion, double seconds, Scene& scene) {
 
 }  // namespace
 
-void applyAnimation(const Animation& animation, double seconds, Scene& scene, Camera& camera) {
+Camera cameraAt(const Animation& animation, double seconds, Camera camera) {
   if (animation.camera) applyCamera(*animation.camera, seconds, camera);
+  return camera;
+}
+
+void applyAnimation(const Animation& animation, double seconds, Scene& scene, Camera& camera) {
+  camera = cameraAt(animation, seconds, camera);
   for (const LightMotion& motion : animation.lights)
     applyLight(motion, seconds, scene.lights[std::size_t(motion.light)]);
   for (const MeshMotion& motion : animation.meshes) applyMeshes(motion, seconds, scene);

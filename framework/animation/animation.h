@@ -74,4 +74,8 @@ struct Animation {
 // sampled value is degenerate (a camera at its look-at point, a zero light direction).
 void applyAnimation(const Animation& animation, double seconds, Scene& scene, Camera& camera);
 
+// The camera alone at `seconds`, from `camera` as loaded (itself when no path moves it): what
+// applyAnimation sets it to, without touching a scene.
+Camera cameraAt(const Animation& animation, double seconds, Camera camera);
+
 }  // namespace lpvlab

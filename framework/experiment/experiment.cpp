@@ -238,6 +238,11 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   // Read with "depth" too: it places the levels of a frame that sees nothing.
   e.settings.cascades.viewShift = cascades.get<float>("view_shift", 0.25f, {.min = -1.0f, .max = 1.0f});
   e.settings.cascades.carry = cascades.get<bool>("carry", true);
+  e.settings.cascades.snap = cascades.get<bool>("snap", true);
+  if (!e.settings.cascades.snap && e.settings.cascades.carry && e.settings.cascades.levels > 1)
+    throw Error(cascades.where("snap") +
+                ": false needs cascades.carry = false (carrying a level's light to its parent "
+                "needs the level on whole parent cells)");
 
   Params timing = params.table("timing");
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});

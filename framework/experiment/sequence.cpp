@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "framework/core/error.h"
@@ -15,6 +16,7 @@
 #include "framework/core/progress.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/run_outputs.h"
+#include "framework/experiment/sequence_temporal.h"
 #include "framework/io/atomic_file.h"
 #include "framework/io/child_process.h"
 #include "framework/scene/scene_loader.h"
@@ -50,15 +52,24 @@ FrameTimes frameTimesOf(const nlohmann::json& record) {
 // the summary (per-frame ones stay in the frame records and the manifest's sequence block).
 nlohmann::json meanComparison(const std::vector<nlohmann::json>& records) {
   std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;
+  // Records are read back from files: only what is shaped as written counts.
+  const auto objectAt = [](const nlohmann::json& j, const char* key) -> const nlohmann::json* {
+    return j.is_object() && j.contains(key) && j[key].is_object() ? &j[key] : nullptr;
+  };
   for (const nlohmann::json& record : records) {
-    if (!record.contains("reference")) continue;
-    for (const auto& [pair, value] : record["reference"]["comparison"].items())
-      for (const auto& [metric, v] : value["metrics"].items())
+    const nlohmann::json* reference = objectAt(record, "reference");
+    const nlohmann::json* comparison = reference ? objectAt(*reference, "comparison") : nullptr;
+    if (!comparison) continue;
+    for (const auto& [pair, value] : comparison->items()) {
+      const nlohmann::json* metrics = objectAt(value, "metrics");
+      if (!metrics) continue;
+      for (const auto& [metric, v] : metrics->items())
         if (v.is_number()) {
           auto& [sum, count] = sums[pair][metric];
           sum += v.get<double>();
           ++count;
         }
+    }
   }
   nlohmann::json out = nlohmann::json::object();
   for (const auto& [pair, metrics] : sums)
@@ -130,6 +141,28 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
     std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
               << " are done; continuing at frame " << first << "\n";
 
+  // Each frame's reference has a seed of its own, so consecutive references have independent
+  // noise, which the temporal error's noise correction assumes (sequence_temporal.h). Frame 0
+  // keeps the experiment's seed: a one-frame sequence is the static run.
+  const auto frameReference = [&](int frame) {
+    ReferenceRequest request = experiment.reference;
+    request.tracer.seed += std::uint64_t(frame);
+    return ensureReference(experiment.scene, experiment.camera, request);
+  };
+  // The frame before the first to render, which its temporal figures compare with.
+  std::optional<FrameState> previous;
+  if (first > 0) {
+    const int frame = first - 1;
+    applyAnimation(animation, animation.frameTime(frame), experiment.scene, experiment.camera);
+    const std::string stem = (dir / frameStem(frame, animation.frames)).string();
+    previous = FrameState{experiment.camera,
+                          readFrameRecord(stem + ".json").at("scene_hash").get<std::string>(),
+                          readExr(stem + ".exr"),
+                          {}};
+    if (experiment.compareWithReference) previous->reference = frameReference(frame);
+    previous->keepOnlyCompared(experiment.comparison);
+  }
+
   ShaderCompiler shaders;
   applyAnimation(animation, animation.frameTime(first), experiment.scene, experiment.camera);
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
@@ -173,12 +206,14 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                              {"gpu_ms", times.gpuMs},
                              {"wall_ms", times.wallMs},
                              {"png_exposure_stops", *exposure}};
+    FrameState state{experiment.camera, hash, aovs, {}};
     if (experiment.compareWithReference) {
-      const Reference reference =
-          ensureReference(experiment.scene, experiment.camera, experiment.reference);
+      state.reference = frameReference(frame);
       record["reference"] = compareWithReference(
-          aovs, reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
+          aovs, *state.reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
     }
+    state.keepOnlyCompared(experiment.comparison);
+    if (previous) record["temporal"] = temporalRecord(state, *previous, experiment.comparison);
     const std::string stem = (dir / frameStem(frame, animation.frames)).string();
     writeExr(stem + ".exr", aovs,
              {{"lpvlab:experiment", experiment.name},
@@ -186,6 +221,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
               {"lpvlab:frame", std::to_string(frame)}});
     writePng(stem + ".png", findAov(aovs, "combined"), *exposure);
     writeTextAtomically(stem + ".json", record.dump(2) + "\n");
+    previous = std::move(state);
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const int done = frame - first + 1, left = animation.frames - frame - 1;
@@ -216,6 +252,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                             {"lights", animation.movesLights()},
                             {"geometry", animation.movesGeometry()}}},
                           {"resumed_at_frame", first},
+                          {"temporal", temporalSummary(records)},
                           {"frame_records", records}};
   if (experiment.compareWithReference)
     manifest["reference"] = {

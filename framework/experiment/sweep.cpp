@@ -385,14 +385,15 @@ std::map<std::string, double> workColumns(const nlohmann::json& manifest) {
   return columns;
 }
 
-}  // namespace
-
-SummaryResult writeSweepSummary(const std::string& dir) {
+// summarise's body: `reading` names the file whose values it reads, for the error when one has
+// an unexpected structure (a string where a number belongs, say: nlohmann's type errors).
+SummaryResult summarise(const std::string& dir, std::string& reading) {
   const fs::path root(dir);
   if (!fs::is_directory(root)) throw Error(dir + ": not a directory");
   std::vector<std::string> swept;
   std::map<std::string, std::string> names;
   if (fs::exists(root / "sweep.json")) {
+    reading = (root / "sweep.json").string();
     const nlohmann::json index = readJson(root / "sweep.json");
     for (const auto& k : index.value("swept_keys", nlohmann::json::array())) swept.push_back(k.get<std::string>());
     for (const auto& c : index.value("configurations", nlohmann::json::array()))
@@ -426,7 +427,9 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   std::set<std::string> stages, memoryGroups, workKeys;
   std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;
+  std::set<std::string> temporalColumns;
   for (const auto& [id, m] : manifests) {
+    reading = (root / id / "manifest.json").string();
     workById[id] = workColumns(m);
     for (const auto& [key, _] : workById[id]) workKeys.insert(key);
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
@@ -436,6 +439,14 @@ SummaryResult writeSweepSummary(const std::string& dir) {
       for (const auto& [stage, _] : s->items()) stages.insert(stage);
     if (const auto* s = findPath(m, "timing.samples.wall_ms"); s && s->is_object())
       for (const auto& [stage, _] : s->items()) stages.insert(stage);
+    // A sequence's temporal figures (sequence_temporal.h): its frames' relative change and error.
+    if (const auto* records = findPath(m, "sequence.frame_records"); records && records->is_array())
+      for (const auto& record : *records)
+        if (const auto* t = findPath(record, "temporal"); t && t->is_object())
+          for (const char* group : {"change", "error"})
+            if (const auto* g = findPath(*t, group); g && g->is_object())
+              for (const auto& [name, _] : g->items())
+                temporalColumns.insert(std::string("temporal.") + group + "." + name + ".relative");
     if (const auto* c = findPath(m, "reference.comparison"); c && c->is_object())
       for (const auto& [pair, value] : c->items())
         if (value.is_object() && value.contains("metrics") && value["metrics"].is_object())
@@ -452,10 +463,13 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   header.push_back("cells");
   for (const std::string& k : workKeys) header.push_back(k);
   for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
+  if (!temporalColumns.empty()) header.push_back("temporal.at_rest");
+  for (const std::string& column : temporalColumns) header.push_back(column);
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
   csv << "\n";
 
   for (const auto& [id, m] : manifests) {
+    reading = (root / id / "manifest.json").string();
     const nlohmann::json config = m.value("configuration", nlohmann::json::object());
     std::size_t repeats = 0;
     if (const auto* s = findPath(m, "timing.samples.gpu_ms.total"); s && s->is_array()) repeats = s->size();
@@ -514,6 +528,11 @@ SummaryResult writeSweepSummary(const std::string& dir) {
         }
         row.push_back(jsonText(v));
       }
+      if (!temporalColumns.empty()) {
+        row.push_back(jsonText(frame ? findPath(*frame, "temporal.at_rest") : nullptr));
+        for (const std::string& column : temporalColumns)
+          row.push_back(jsonText(frame ? findPath(*frame, column) : nullptr));
+      }
       for (std::size_t i = 0; i < row.size(); ++i) csv << (i ? "," : "") << csvField(row[i]);
       csv << "\n";
       ++result.rows;
@@ -521,6 +540,18 @@ SummaryResult writeSweepSummary(const std::string& dir) {
   }
   writeTextAtomically((root / "summary.csv").string(), csv.str());
   return result;
+}
+
+}  // namespace
+
+SummaryResult writeSweepSummary(const std::string& dir) {
+  std::string reading = dir;
+  try {
+    return summarise(dir, reading);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(reading + ": not what lpvlab writes there (" + e.what() +
+                "); rerun that configuration, or delete the file");
+  }
 }
 
 }  // namespace lpvlab

@@ -8,7 +8,9 @@
 //            (so the level covers what the camera looks at, not what is behind it);
 //   "depth": the focus, what the camera sees (visibleFocus: the per-axis median of the G-buffer's
 //            world positions), the same point for every finer level.
-// The level is then clamped to stay inside its parent and snapped to whole cells of the parent.
+// The level is then clamped to stay inside its parent and snapped to whole cells of the parent
+// (unless `snap` is off: [cascades] snap = false, an ablation of the snapping's effect on
+// flicker, which leaves the levels unnested and so cannot carry light to their parents).
 // Snapping to the parent's cells (a) keeps each level's cells at fixed world positions: the
 // placement is a piecewise-constant function of the wanted centre, which changes only where the
 // centre crosses a plane half-way between two parent-cell offsets, and then by whole parent cells
@@ -31,11 +33,11 @@ namespace lpvlab {
 // Levels finest first; the last one is `coarsest` itself. levels >= 1.
 std::vector<GridGeometry> placeCascadeLevels(const GridGeometry& coarsest, int levels,
                                              const glm::vec3& eye, const glm::vec3& viewDirection,
-                                             float viewShift);
+                                             float viewShift, bool snap = true);
 
 // Levels finest first, every finer one centred as near `focus` as its parent allows ("depth").
 std::vector<GridGeometry> placeCascadeLevels(const GridGeometry& coarsest, int levels,
-                                             const glm::vec3& focus);
+                                             const glm::vec3& focus, bool snap = true);
 
 // The point "depth" placement centres the finer levels on: per axis, the median of the world
 // positions of the surfaces the camera sees (one per G-buffer pixel, so weighted by screen area:
@@ -43,8 +45,8 @@ std::vector<GridGeometry> placeCascadeLevels(const GridGeometry& coarsest, int l
 // through a door) do not drag the fine levels into the air between. Empty: nothing seen.
 std::optional<glm::vec3> visibleFocus(std::vector<glm::vec3> positions);
 
-// Where `child` (a level placed by placeCascadeLevels) starts inside `parent`, in parent cells
-// (exact: child origins are snapped to whole parent cells).
+// Where `child` (a level placed by placeCascadeLevels with snapping) starts inside `parent`, in
+// parent cells (exact: snapped child origins are on whole parent cells).
 glm::ivec3 childOffsetInParentCells(const GridGeometry& child, const GridGeometry& parent);
 
 }  // namespace lpvlab

@@ -35,14 +35,16 @@ void requireFinitePixels(std::string_view where, std::string_view name, const Im
 }  // namespace
 
 PixelMask checkInputs(std::string_view where, const Image& test, const Image& reference,
-                      const Image* mask) {
-  requireRgb(where, "test", test);
-  requireRgb(where, "reference", reference);
+                      const Image* mask, std::string_view testName,
+                      std::string_view referenceName) {
+  requireRgb(where, testName, test);
+  requireRgb(where, referenceName, reference);
   if (test.width != reference.width || test.height != reference.height)
-    throwAt(where, "test image is " + sizeOf(test) + " but reference is " + sizeOf(reference) +
+    throwAt(where, std::string(testName) + " image is " + sizeOf(test) + " but " +
+                       std::string(referenceName) + " is " + sizeOf(reference) +
                        "; they must have the same size");
-  requireFinitePixels(where, "test", test);
-  requireFinitePixels(where, "reference", reference);
+  requireFinitePixels(where, testName, test);
+  requireFinitePixels(where, referenceName, reference);
 
   PixelMask result;
   result.width = reference.width;

@@ -20,8 +20,10 @@ struct PixelMask {
 };
 
 // Throws an Error starting with `where` (the calling function) that names the sizes, the channel
-// counts, or the image, pixel and channel of a NaN or Inf.
+// counts, or the image, pixel and channel of a NaN or Inf; the images are called by the names
+// given.
 PixelMask checkInputs(std::string_view where, const Image& test, const Image& reference,
-                      const Image* mask);
+                      const Image* mask, std::string_view testName = "test",
+                      std::string_view referenceName = "reference");
 
 }  // namespace lpvlab

@@ -29,6 +29,8 @@ struct CascadeSettings {
   float viewShift = 0.25f;  // "eye" placement (and "depth" when the camera sees nothing): a finer
                             // level's centre is the eye moved this fraction of its extent ahead
   bool carry = true;        // parents propagate their children's injected light (restrict.comp)
+  bool snap = true;         // finer levels start on whole cells of their parents: they stay put
+                            // under camera moves that cross no cell (off: an ablation; no carry)
 };
 
 // Binds the uniforms of shaders/common/cascade_blend.glsl for a kernel (in use) that renders

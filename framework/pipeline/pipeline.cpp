@@ -157,9 +157,11 @@ void Pipeline::moveScene(const Scene& scene, bool lightsMoved, bool geometryMove
 
 void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {
   const std::vector<GridGeometry> placed =
-      focus ? placeCascadeLevels(settings_.grid, int(levels_.size()), *focus)
+      focus ? placeCascadeLevels(settings_.grid, int(levels_.size()), *focus,
+                                 settings_.cascades.snap)
             : placeCascadeLevels(settings_.grid, int(levels_.size()), camera_.position,
-                                 camera_.forward, settings_.cascades.viewShift);
+                                 camera_.forward, settings_.cascades.viewShift,
+                                 settings_.cascades.snap);
   for (std::size_t level = 0; level < levels_.size(); ++level) {
     levels_[level].geometry = placed[level];
     resources_[level].place(placed[level]);

@@ -7,6 +7,7 @@
 // (view depth, as the rasteriser clips), so both renderers see the same surfaces.
 
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "framework/scene/scene.h"
 
@@ -36,6 +37,23 @@ public:
   // View depth (m) of a point: what the G-buffer's depth holds.
   float viewDepth(const glm::vec3& point) const {
     return glm::dot(point - origin_, cameraForward_);
+  }
+  // The point at view depth `depth` on the ray through image position (px, py): a surface point
+  // from a depth AOV, the inverse of viewDepth along that ray.
+  glm::vec3 surfacePoint(float px, float py, float depth) const {
+    const glm::vec3 d = direction(px, py);
+    return origin_ + d * (depth / glm::dot(d, cameraForward_));
+  }
+  // The image position (px, py) a point projects to, the inverse of direction(); nothing for a
+  // point at or behind the camera's plane (it projects nowhere).
+  std::optional<glm::vec2> imagePosition(const glm::vec3& point) const {
+    const glm::vec3 v = point - origin_;
+    const float depth = glm::dot(v, forward_);
+    if (!(depth > 0.0f)) return std::nullopt;
+    const float ndcX = glm::dot(v, right_) / (glm::dot(right_, right_) * depth);
+    const float ndcY = glm::dot(v, up_) / (glm::dot(up_, up_) * depth);
+    return glm::vec2((ndcX + 1.0f) / (2.0f * inverseWidth_),
+                     (1.0f - ndcY) / (2.0f * inverseHeight_));
   }
 
 private:

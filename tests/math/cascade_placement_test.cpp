@@ -4,13 +4,13 @@
 // counts), the placement is piecewise constant in the focus (moves only by whole parent cells, at
 // most once per parent cell the focus travels), and the focus is the per-axis median of what the
 // camera sees, which outliers do not move.
+#include "framework/math/cascade_placement.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
-
-#include "framework/math/cascade_placement.h"
 
 namespace lpvlab {
 namespace {
@@ -38,8 +38,8 @@ TEST(CascadePlacement, OneLevelIsTheSceneGrid) {
 }
 
 TEST(CascadePlacement, LevelsHalveTheirCellsNestInsideTheirParentsOnWholeParentCells) {
-  for (const glm::vec3 eye : {glm::vec3(0.3f, 1.1f, 0.7f), glm::vec3(-50.0f, 3.0f, 9.0f),
-                              glm::vec3(6.9f, 3.9f, 3.9f)}) {
+  for (const glm::vec3 eye :
+       {glm::vec3(0.3f, 1.1f, 0.7f), glm::vec3(-50.0f, 3.0f, 9.0f), glm::vec3(6.9f, 3.9f, 3.9f)}) {
     const std::vector<GridGeometry> levels =
         placeCascadeLevels(sceneGrid(), 4, eye, glm::vec3(0.6f, -0.2f, -0.7f), 0.25f);
     ASSERT_EQ(levels.size(), 4u);
@@ -105,6 +105,33 @@ TEST(CascadePlacement, ACameraMoveOfLessThanACellMovesNoLevelByAFractionOfACell)
   EXPECT_GE(unchanged, 1);
 }
 
+// [cascades] snap = false: the finer levels follow the eye continuously, so every sub-cell move
+// moves them by the same amount (until a level meets its parent's side) and they leave the
+// parents' cells.
+TEST(CascadePlacement, UnsnappedLevelsFollowEverySubCellMove) {
+  const glm::vec3 forward = glm::normalize(glm::vec3(0.3f, -0.1f, -1.0f));
+  const glm::vec3 eye(1.02f, 1.47f, 1.96f), delta(0.013f, -0.007f, 0.011f);
+  const std::vector<GridGeometry> before =
+      placeCascadeLevels(sceneGrid(), 3, eye, forward, 0.25f, false);
+  const std::vector<GridGeometry> after =
+      placeCascadeLevels(sceneGrid(), 3, eye + delta, forward, 0.25f, false);
+  for (int level = 0; level < 2; ++level) {
+    const glm::vec3 shift = after[std::size_t(level)].origin - before[std::size_t(level)].origin;
+    for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(shift[axis], delta[axis], 1e-5f) << level;
+    // Centred on the wanted point, not on a parent cell.
+    const glm::vec3 centre =
+        before[std::size_t(level)].origin + 0.5f * before[std::size_t(level)].extent();
+    const GridGeometry& parent = before[std::size_t(level) + 1];
+    const float longest = 0.5f * parent.cellSize * 32.0f;
+    EXPECT_LT(glm::length(centre - (eye + forward * (0.25f * longest))), 1e-4f) << level;
+  }
+  EXPECT_EQ(after.back().origin, sceneGrid().origin);  // the coarsest never moves
+  // The snapped levels of the same move: on whole parent cells (the test above).
+  const std::vector<GridGeometry> snapped = placeCascadeLevels(sceneGrid(), 3, eye, forward, 0.25f);
+  EXPECT_GT(offGrid(before[0].origin.x - before[1].origin.x, before[1].cellSize), 1e-3);
+  EXPECT_LT(offGrid(snapped[0].origin.x - snapped[1].origin.x, snapped[1].cellSize), 1e-4);
+}
+
 // Levels nest in their parents on whole parent cells (what carrying and no-flicker rely on).
 void expectNested(const std::vector<GridGeometry>& levels) {
   for (std::size_t level = 0; level + 1 < levels.size(); ++level) {
@@ -123,12 +150,14 @@ void expectNested(const std::vector<GridGeometry>& levels) {
 TEST(CascadePlacement, DepthPlacementNestsAndEveryLevelContainsTheFocus) {
   std::mt19937 random(7);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  for (const glm::ivec3 resolution : {glm::ivec3(32, 16, 24), glm::ivec3(2, 4, 6), glm::ivec3(12)}) {
+  for (const glm::ivec3 resolution :
+       {glm::ivec3(32, 16, 24), glm::ivec3(2, 4, 6), glm::ivec3(12)}) {
     GridGeometry grid = sceneGrid();
     grid.resolution = resolution;
     for (int trial = 0; trial < 200; ++trial) {
       // Anywhere in the scene grid, its corners and faces included.
-      glm::vec3 focus = grid.origin + grid.extent() * glm::vec3(unit(random), unit(random), unit(random));
+      glm::vec3 focus =
+          grid.origin + grid.extent() * glm::vec3(unit(random), unit(random), unit(random));
       if (trial % 4 == 0) focus.x = grid.origin.x;
       if (trial % 4 == 1) focus.y = grid.origin.y + grid.extent().y;
       const std::vector<GridGeometry> levels = placeCascadeLevels(grid, 5, focus);
@@ -179,9 +208,10 @@ TEST(CascadePlacement, DepthPlacementMovesOnlyByWholeParentCellsAndOncePerParent
   }
   // Along the walk the focus crosses at most 8 + 1 planes per axis (it moves 8 cells in all).
   const glm::vec3 travelled = glm::abs(direction) * (step * float(steps)) / finestParentCell;
-  EXPECT_LE(moves, int(std::ceil(travelled.x)) + int(std::ceil(travelled.y)) + int(std::ceil(travelled.z)));
+  EXPECT_LE(moves, int(std::ceil(travelled.x)) + int(std::ceil(travelled.y)) +
+                       int(std::ceil(travelled.z)));
   EXPECT_GE(moves, int(std::floor(travelled.x)));  // it does follow the focus
-  EXPECT_GT(unchanged, steps * 9 / 10);             // sub-cell moves change nothing
+  EXPECT_GT(unchanged, steps * 9 / 10);            // sub-cell moves change nothing
 }
 
 TEST(CascadePlacement, TheFocusIsThePerAxisMedianOfTheVisiblePositionsAndIgnoresOutliers) {
@@ -214,8 +244,10 @@ TEST(CascadePlacement, DegenerateInputsGiveValidLevels) {
   tiny.origin = glm::vec3(0.0f);
   tiny.cellSize = 1e-6f;
   tiny.resolution = glm::ivec3(1);
-  for (const GridGeometry& g : placeCascadeLevels(tiny, 8, glm::vec3(1e9f), glm::vec3(0.0f), 1.0f)) {
-    EXPECT_TRUE(std::isfinite(g.origin.x) && std::isfinite(g.origin.y) && std::isfinite(g.origin.z));
+  for (const GridGeometry& g :
+       placeCascadeLevels(tiny, 8, glm::vec3(1e9f), glm::vec3(0.0f), 1.0f)) {
+    EXPECT_TRUE(std::isfinite(g.origin.x) && std::isfinite(g.origin.y) &&
+                std::isfinite(g.origin.z));
     EXPECT_GT(g.cellSize, 0.0f);
   }
 }

@@ -2,16 +2,15 @@
 // lpvlab::Error whose message names the file (with the line where there is one) and the key, and
 // lists the valid choices where there are some. And a valid file using every kind of light loads.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "error_support.h"
-
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
 #include "io/temp_dir.h"
@@ -22,21 +21,24 @@ namespace {
 using test::contains;
 
 class ExperimentErrors : public ::testing::Test {
-protected:
+ protected:
   std::string write(const std::string& name, const std::string& text) {
     const std::string path = dir_.file(name);
     std::ofstream(path) << text;
     return path;
   }
-  // The message of the Error loadExperiment throws (a failure if it throws nothing or another type).
-  static std::string errorOf(const std::string& path, const std::vector<std::string>& overrides = {}) {
+  // The message of the Error loadExperiment throws (a failure if it throws nothing or another
+  // type).
+  static std::string errorOf(const std::string& path,
+                             const std::vector<std::string>& overrides = {}) {
     return test::errorOf([&] { loadExperiment(path, overrides); });
   }
   test::TempDir dir_;
 };
 
 TEST_F(ExperimentErrors, UnknownTopLevelKey) {
-  const std::string path = write("top.toml", "# a typo at the top\n[output]\nwidth = 64\n\nbogus_key = 1\n");
+  const std::string path =
+      write("top.toml", "# a typo at the top\n[output]\nwidth = 64\n\nbogus_key = 1\n");
   const std::string message = errorOf(path);
   // bogus_key sits under [output] in TOML; a real top-level key must come before any table.
   EXPECT_TRUE(contains(message, path + ":5"));
@@ -50,8 +52,20 @@ TEST_F(ExperimentErrors, UnknownTopLevelKey) {
   EXPECT_TRUE(contains(topMessage, "grid"));
 }
 
+TEST_F(ExperimentErrors, UnsnappedCascadesThatCarryAreRefusedNamingBothKeys) {
+  const std::string path = write("snap.toml", "[cascades]\nlevels = 3\nsnap = false\n");
+  const std::string message = errorOf(path);
+  EXPECT_TRUE(contains(message, path + ":3")) << message;
+  EXPECT_TRUE(contains(message, "cascades.snap")) << message;
+  EXPECT_TRUE(contains(message, "cascades.carry = false")) << message;
+  // Without carrying, or with one level, it loads.
+  EXPECT_FALSE(loadExperiment(path, {"cascades.carry=false"}).settings.cascades.snap);
+  EXPECT_NO_THROW(loadExperiment(path, {"cascades.levels=1"}));
+}
+
 TEST_F(ExperimentErrors, UnknownKeyInAStrategyTableListsTheValidKeys) {
-  const std::string path = write("typo.toml", "[propagation]\ntype = \"standard\"\niteratoins = 8\n");
+  const std::string path =
+      write("typo.toml", "[propagation]\ntype = \"standard\"\niteratoins = 8\n");
   const std::string message = errorOf(path);
   EXPECT_TRUE(contains(message, path + ":3"));
   EXPECT_TRUE(contains(message, "propagation.iteratoins"));
@@ -80,8 +94,8 @@ TEST_F(ExperimentErrors, OutOfRangeValuesAreErrorsNotClamped) {
   EXPECT_TRUE(contains(message, resolution + ":3"));
   EXPECT_TRUE(contains(message, "grid.resolution"));
 
-  const std::string cells = write("cells.toml",
-                                  "[grid]\norigin = [0, 0, 0]\ncell_size = 0.1\ncells = [4, 0, 4]\n");
+  const std::string cells =
+      write("cells.toml", "[grid]\norigin = [0, 0, 0]\ncell_size = 0.1\ncells = [4, 0, 4]\n");
   message = errorOf(cells);
   EXPECT_TRUE(contains(message, cells + ":4"));
   EXPECT_TRUE(contains(message, "grid.cells"));
@@ -103,8 +117,9 @@ TEST_F(ExperimentErrors, TracerInstructionSetAndPacketWidthAreChecked) {
   // Every instruction set this CPU has loads; one it lacks is refused by name.
   for (const std::string& name : embreeInstructionSets()) {
     const std::vector<std::string> has = supportedInstructionSets();
-    const std::string path = write("isa_" + std::to_string(&name - &embreeInstructionSets()[0]) + ".toml",
-                                   "[reference]\nisa = \"" + name + "\"\n");
+    const std::string path =
+        write("isa_" + std::to_string(&name - &embreeInstructionSets()[0]) + ".toml",
+              "[reference]\nisa = \"" + name + "\"\n");
     if (std::find(has.begin(), has.end(), name) != has.end())
       EXPECT_EQ(loadExperiment(path, {}).reference.tracer.engine.isa, name);
     else

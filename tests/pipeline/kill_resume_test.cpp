@@ -1,7 +1,7 @@
 // SIGKILL at random moments of `lpvlab reference`, `lpvlab fit` and an animated `lpvlab run`, then
 // the same command again until it finishes. Nothing is lost (the result equals an uninterrupted
 // run's) and nothing is duplicated (one cache entry, no leftover temporaries, every fit iteration
-// logged once, every frame once).
+// logged once, every frame once with the temporal figures of an uninterrupted run).
 // The kill times come from a seed printed with each test: LPVLAB_KILL_SEED=N repeats a run.
 
 #include <gtest/gtest.h>
@@ -277,6 +277,11 @@ TEST_F(KillResume, AKilledSequenceResumesToTheUninterruptedFrames) {
       EXPECT_TRUE(x[i].image.pixels == y[i].image.pixels) << stem << " " << x[i].name;
     EXPECT_EQ(records[std::size_t(frame)].at("png_exposure_stops"),
               a["sequence"]["frame_records"][std::size_t(frame)].at("png_exposure_stops"));
+    // Its temporal figures too, also where the frame before was read back after a kill.
+    EXPECT_EQ(
+        records[std::size_t(frame)].value("temporal", nlohmann::json()),
+        a["sequence"]["frame_records"][std::size_t(frame)].value("temporal", nlohmann::json()))
+        << stem;
   }
 }
 

@@ -11,14 +11,20 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
 #include "error_support.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/sweep.h"
 #include "framework/io/child_process.h"
 #include "framework/io/image.h"
+#include "framework/math/cascade_placement.h"
+#include "framework/metrics/temporal.h"
+#include "framework/reference/reprojection.h"
+#include "framework/scene/scene_loader.h"
 #include "pipeline_test_support.h"
 
 namespace lpvlab {
@@ -193,6 +199,26 @@ translation = [0.15, 0, 0.12]
                     .get<double>(),
                 1e-6 * std::abs(values[f]) + 1e-12);
   EXPECT_NE(values[0], values[2]);  // per frame, not the sequence's mean repeated
+  // And each frame's temporal error (none for frame 0, which has no frame before it).
+  const auto temporal =
+      std::find(columns.begin(), columns.end(), "temporal.error.direct_vs_direct.relative");
+  ASSERT_NE(temporal, columns.end()) << header;
+  std::ifstream again(dir / "summary.csv");
+  std::getline(again, line);
+  for (std::size_t f = 0; f < 3; ++f) {
+    ASSERT_TRUE(std::getline(again, line));
+    const std::string field = split(line).at(std::size_t(temporal - columns.begin()));
+    if (f == 0) {
+      EXPECT_EQ(field, "");
+      continue;
+    }
+    const nlohmann::json& error = records[f]["temporal"]["error"]["direct_vs_direct"];
+    EXPECT_FALSE(records[f]["temporal"]["at_rest"].get<bool>());  // the block moved
+    EXPECT_NEAR(std::stod(field), error["relative"].get<double>(), 1e-6 * std::stod(field));
+    // The per-frame references have seeds of their own, so their noise is independent and its
+    // estimate is subtracted.
+    EXPECT_GT(error["noise_mean_square"].get<double>(), 0.0);
+  }
   fs::remove_all(dir);
 }
 
@@ -231,6 +257,119 @@ look_at = [0.278, 0.273, 0.3]
   fs::remove_all(dir);
 }
 
+// Nothing moves: every frame is the one before, at every pixel (docs/animation.md, "Temporal
+// metrics": flicker at rest is zero for a static camera).
+TEST(Sequence, ASequenceAtRestHasNoTemporalChange) {
+  const GlContext& context = test::glTestContext();
+  const fs::path dir = fs::temp_directory_path() / "lpvlab_sequence_rest";
+  fs::remove_all(dir);
+  const fs::path file = writeExperiment(dir, "[animation]\nframes = 3\nvideo = false\n");
+  Experiment still = loadExperiment(file.string());
+  const nlohmann::json manifest = runExperiment(still, context, (dir / "run").string());
+  const nlohmann::json& records = manifest["sequence"]["frame_records"];
+  EXPECT_FALSE(records[0].contains("temporal"));  // nothing before it
+  for (std::size_t f : {1u, 2u}) {
+    const nlohmann::json& t = records[f]["temporal"];
+    EXPECT_TRUE(t["at_rest"].get<bool>());
+    EXPECT_EQ(t["reprojected_fraction"].get<double>(), 1.0);
+    for (const char* aov : {"direct", "indirect"}) {
+      EXPECT_GT(t["change"][aov]["level"].get<double>(), 0.0) << aov;
+      // Zero up to float rounding (a kernel that summed in another order could round differently).
+      EXPECT_LE(t["change"][aov]["rms"].get<double>(),
+                1e-6 * t["change"][aov]["level"].get<double>())
+          << aov;
+    }
+  }
+  EXPECT_EQ(manifest["sequence"]["temporal"]["frames_at_rest"].get<int>(), 2);
+  EXPECT_LE(
+      manifest["sequence"]["temporal"]["flicker_at_rest"]["indirect"]["max_relative"].get<double>(),
+      1e-6);
+  fs::remove_all(dir);
+}
+
+// A camera inside the box faces the back wall, which the finer cascade level covers, and moves
+// sideways by one pixel's footprint on the wall, less than a cell of that level: the wall's
+// pixels then reproject onto pixel centres, where the temporal change has no interpolation error.
+// Snapped levels do not move, so the light there does not change (up to float rounding);
+// unsnapped levels follow the camera, and it does (thesis 6.10: snapping "removes flickering when
+// the camera moves").
+TEST(Sequence, SnappedCascadesDoNotFlickerUnderASubCellCameraMoveAndUnsnappedOnesDo) {
+  const GlContext& context = test::glTestContext();
+  const fs::path dir = fs::temp_directory_path() / "lpvlab_sequence_snap";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Camera box = makeCornellBox().cameras.front();
+  box.position = {0.278f, 0.45f, 0.25f};  // above the tall block, which stands at z = 0.25-0.46
+  const int size = 96;
+  const float wallDepth = 0.5592f - box.position.z;  // the back wall, seen head-on
+  const float footprint = 2.0f * wallDepth * std::tan(box.verticalFov / 2.0f) / float(size);
+  std::ostringstream file;
+  file.precision(9);
+  file << "[output]\nwidth = " << size << "\nheight = "
+       << size
+       // Coarse cells of 5 cm, the grid reaching 12 cm behind the wall; the finer level (2.5 cm
+       // cells, 30 cm wide) is centred 30 cm ahead of the eye, so the wall (at z = 0.56) is well
+       // inside it, past its band of blending with the coarse level, and it follows the eye.
+       << "\n[grid]\norigin = [-0.02, -0.02, -0.02]\ncell_size = 0.05\ncells = [12, 12, 14]\n"
+          "[cascades]\nlevels = 2\ncarry = false\nview_shift = 1.0\nblend_cells = 0.5\n"
+          "[occlusion]\ntype = \"none\"\n[timing]\nwarmup = 0\n"
+          "[animation]\nframes = 2\nfps = 1\nvideo = false\n[animation.camera]\n"
+          "interpolation = \"linear\"\n";
+  for (int frame = 0; frame < 2; ++frame) {
+    const float x = box.position.x + float(frame) * footprint;
+    file << "[[animation.camera.keys]]\nframe = " << frame << "\nposition = [" << x << ", "
+         << box.position.y << ", " << box.position.z << "]\nlook_at = [" << x << ", "
+         << box.position.y << ", 0.55]\n";
+  }
+  std::ofstream(dir / "e.toml") << file.str();
+
+  std::map<bool, double> exactChange, recordedChange;
+  for (bool snap : {true, false}) {
+    Experiment e = loadExperiment((dir / "e.toml").string(),
+                                  {std::string("cascades.snap=") + (snap ? "true" : "false")});
+    const Camera before = cameraAt(e.animation, 0.0, e.camera);
+    const Camera after = cameraAt(e.animation, 1.0, e.camera);
+    const auto levelsAt = [&](const Camera& c) {
+      return placeCascadeLevels(e.settings.grid, 2, c.position, c.forward,
+                                e.settings.cascades.viewShift, snap);
+    };
+    // What the test is about: the move stays within a cell of the finest level, so snapping
+    // keeps it in place, and without snapping it moves.
+    ASSERT_EQ(levelsAt(before)[0].origin == levelsAt(after)[0].origin, snap);
+    ASSERT_LT(footprint, levelsAt(before)[0].cellSize);
+
+    const fs::path run = dir / (snap ? "snapped" : "unsnapped");
+    const nlohmann::json manifest = runExperiment(e, context, run.string());
+    const auto frame0 = readExr((run / (frameStem(0, 2) + ".exr")).string());
+    const auto frame1 = readExr((run / (frameStem(1, 2) + ".exr")).string());
+    const Reprojection reprojection =
+        reprojectThroughDepth({after, findAov(frame1, "depth"), findAov(frame1, "normal")},
+                              {before, findAov(frame0, "depth"), findAov(frame0, "normal")});
+    Image onCentres(size, size, 1);
+    int count = 0;
+    for (std::size_t p = 0; p < reprojection.taps.size(); ++p)
+      count += (onCentres.pixels[p] = reprojection.taps[p].count == 1);
+    ASSERT_GT(count, size * size / 8) << "the back wall's pixels reproject onto pixel centres";
+    exactChange[snap] = *frameToFrameChange(findAov(frame1, "indirect"),
+                                            findAov(frame0, "indirect"), reprojection, &onCentres)
+                             .relative;
+    const nlohmann::json& t = manifest["sequence"]["frame_records"][1]["temporal"];
+    EXPECT_TRUE(t["at_rest"].get<bool>());
+    recordedChange[snap] = t["change"]["indirect"]["relative"].get<double>();
+  }
+  // Zero up to float rounding: the same world point is rebuilt from another pixel's depth, and
+  // a position within 1/1000 pixel of a centre counts as on it.
+  EXPECT_LT(exactChange[true], 1e-4);
+  EXPECT_GT(exactChange[false], 20.0 * exactChange[true]);
+  // Over every reprojected pixel (interpolation included), the unsnapped levels flicker more.
+  EXPECT_GT(recordedChange[false], recordedChange[true]);
+  std::cout << "[ sequence ] relative change of the indirect light at rest, snapped "
+            << recordedChange[true] << ", unsnapped " << recordedChange[false]
+            << "; on the pixels reprojected onto pixel centres, snapped " << exactChange[true]
+            << ", unsnapped " << exactChange[false] << "\n";
+  fs::remove_all(dir);
+}
+
 TEST(Sequence, AnInterruptedSequenceResumesAtItsFirstMissingFrameAndMakesTheVideo) {
   const GlContext& context = test::glTestContext();
   const fs::path dir = fs::temp_directory_path() / "lpvlab_sequence_resume";
@@ -255,7 +394,7 @@ look_at = [0.3, 0.25, 0.3]
 )");
   const fs::path run = dir / "run";
   Experiment whole = loadExperiment(file.string());
-  runExperiment(whole, context, run.string());
+  const nlohmann::json uninterrupted = runExperiment(whole, context, run.string());
   const auto frame1 = readExr((run / (frameStem(1, 5) + ".exr")).string());
   const auto frame3 = readExr((run / (frameStem(3, 5) + ".exr")).string());
   const auto written1 = fs::last_write_time(run / (frameStem(1, 5) + ".exr"));
@@ -277,6 +416,13 @@ look_at = [0.3, 0.25, 0.3]
   EXPECT_EQ(manifest["timing"]["samples"]["wall_ms"]["total"].size(), 5u);
   for (int f = 0; f < 5; ++f)
     EXPECT_EQ(manifest["sequence"]["frame_records"][std::size_t(f)]["frame"].get<int>(), f);
+  // Frame 3's temporal figures, against frame 2 read back from its files, are those of the
+  // uninterrupted run, which had frame 2 in memory.
+  for (int f : {3, 4})
+    EXPECT_EQ(manifest["sequence"]["frame_records"][std::size_t(f)]["temporal"],
+              uninterrupted["sequence"]["frame_records"][std::size_t(f)]["temporal"])
+        << "frame " << f;
+  EXPECT_TRUE(manifest["sequence"]["frame_records"][3]["temporal"]["at_rest"].get<bool>());
 
   // The video: 5 frames at 10 fps, as ffprobe reads it.
   ASSERT_TRUE(fs::exists(run / "video.mp4"));
@@ -307,7 +453,8 @@ TEST(Sequence, AMissingFfmpegIsOneErrorBeforeAnyFrame) {
   Experiment e = loadExperiment(file.string());
   const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
   setenv("PATH", (dir / "empty").c_str(), 1);
-  const std::string message = test::errorOf([&] { runExperiment(e, context, (dir / "run").string()); });
+  const std::string message =
+      test::errorOf([&] { runExperiment(e, context, (dir / "run").string()); });
   setenv("PATH", path.c_str(), 1);
   EXPECT_NE(message.find("key 'animation.video': the ffmpeg program is not installed"),
             std::string::npos)
