@@ -209,8 +209,12 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
     FrameState state{experiment.camera, hash, aovs, {}};
     if (experiment.compareWithReference) {
       state.reference = frameReference(frame);
-      record["reference"] = compareWithReference(
-          aovs, *state.reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
+      try {
+        record["reference"] = compareWithReference(
+            aovs, *state.reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
+      } catch (const Error& error) {  // e.g. a camera inside a mesh, whose reference is black
+        throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
+      }
     }
     state.keepOnlyCompared(experiment.comparison);
     if (previous) record["temporal"] = temporalRecord(state, *previous, experiment.comparison);
