@@ -14,6 +14,7 @@
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
 #include "framework/core/progress.h"
+#include "framework/experiment/json_path.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/experiment/sequence_temporal.h"
@@ -53,16 +54,12 @@ FrameTimes frameTimesOf(const nlohmann::json& record) {
 nlohmann::json meanComparison(const std::vector<nlohmann::json>& records) {
   std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;
   // Records are read back from files: only what is shaped as written counts.
-  const auto objectAt = [](const nlohmann::json& j, const char* key) -> const nlohmann::json* {
-    return j.is_object() && j.contains(key) && j[key].is_object() ? &j[key] : nullptr;
-  };
   for (const nlohmann::json& record : records) {
-    const nlohmann::json* reference = objectAt(record, "reference");
-    const nlohmann::json* comparison = reference ? objectAt(*reference, "comparison") : nullptr;
-    if (!comparison) continue;
+    const nlohmann::json* comparison = findPath(record, "reference.comparison");
+    if (!comparison || !comparison->is_object()) continue;
     for (const auto& [pair, value] : comparison->items()) {
-      const nlohmann::json* metrics = objectAt(value, "metrics");
-      if (!metrics) continue;
+      const nlohmann::json* metrics = findPath(value, "metrics");
+      if (!metrics || !metrics->is_object()) continue;
       for (const auto& [metric, v] : metrics->items())
         if (v.is_number()) {
           auto& [sum, count] = sums[pair][metric];

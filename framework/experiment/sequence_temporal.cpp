@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "framework/experiment/json_path.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/metrics/temporal.h"
 #include "framework/reference/reprojection.h"
@@ -76,20 +77,19 @@ nlohmann::json temporalSummary(const std::vector<nlohmann::json>& records) {
   for (const nlohmann::json& record : records) {
     // Records are read back from files a user may have edited: anything not shaped as written
     // is skipped, never indexed blindly.
-    if (!record.is_object() || !record.contains("temporal") || !record["temporal"].is_object())
-      continue;
-    const nlohmann::json& t = record["temporal"];
+    const nlohmann::json* t = findPath(record, "temporal");
+    if (!t || !t->is_object()) continue;
     ++frames;
-    const bool rest =
-        t.contains("at_rest") && t["at_rest"].is_boolean() && t["at_rest"].get<bool>();
+    const nlohmann::json* restFlag = findPath(*t, "at_rest");
+    const bool rest = restFlag && restFlag->is_boolean() && restFlag->get<bool>();
     atRest += rest;
     for (const char* group : {"change", "error"}) {
-      if (!t.contains(group) || !t[group].is_object()) continue;
-      for (const auto& [name, figures] : t[group].items()) {
-        if (!figures.is_object() || !figures.contains("relative") ||
-            !figures["relative"].is_number())
-          continue;
-        const double v = figures["relative"].get<double>();
+      const nlohmann::json* figuresByName = findPath(*t, group);
+      if (!figuresByName || !figuresByName->is_object()) continue;
+      for (const auto& [name, figures] : figuresByName->items()) {
+        const nlohmann::json* relative = findPath(figures, "relative");
+        if (!relative || !relative->is_number()) continue;
+        const double v = relative->get<double>();
         values[{group, name}].push_back(v);
         if (rest && std::string(group) == "change") values[{"flicker_at_rest", name}].push_back(v);
       }

@@ -14,6 +14,7 @@
 #include "framework/core/hash.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
+#include "framework/experiment/json_path.h"
 #include "framework/experiment/scene_cache.h"
 #include "framework/io/atomic_file.h"
 #include "framework/reference/reference_cache.h"
@@ -190,19 +191,6 @@ std::string csvField(const std::string& s) {
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
-}
-
-const nlohmann::json* findPath(const nlohmann::json& j, const std::string& dotted) {
-  const nlohmann::json* node = &j;
-  std::size_t start = 0;
-  while (true) {
-    const auto dot = dotted.find('.', start);
-    const std::string part = dotted.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node->is_object() || !node->contains(part)) return nullptr;
-    node = &(*node)[part];
-    if (dot == std::string::npos) return node;
-    start = dot + 1;
-  }
 }
 
 std::string jsonText(const nlohmann::json* j) {
