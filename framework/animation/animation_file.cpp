@@ -197,6 +197,50 @@ MeshMotion readMeshMotion(Params p, double fps, const Scene& scene) {
   return motion;
 }
 
+// The scene file's node animations named `name` ("all": every one), as mesh motions.
+std::vector<MeshMotion> sceneNodeMotions(Params& p, const Scene& scene) {
+  const std::string name = p.require<std::string>("scene_animation");
+  std::vector<std::string> names;
+  for (const NodeAnimation& node : scene.nodeAnimations)
+    if (std::find(names.begin(), names.end(), node.animation) == names.end())
+      names.push_back(node.animation);
+  if (names.empty())
+    throw Error(p.where("scene_animation") + ": " + scene.source + " has no node animations");
+  if (name != "all" && std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+    throw Error(p.where("scene_animation") + ": " + scene.source + " has no animation '" + name +
+                "' (it has " + list + "; \"all\" plays every one)");
+  }
+  std::vector<MeshMotion> motions;
+  for (const NodeAnimation& node : scene.nodeAnimations) {
+    if (name != "all" && node.animation != name) continue;
+    if (node.meshes.empty()) continue;  // moves no mesh (a camera or light node: not played)
+    const std::string what = p.where("scene_animation") + ": animation '" + node.animation +
+                             "', node '" + node.node + "'";
+    MeshMotion motion;
+    motion.meshes = node.meshes;
+    for (int mesh : node.meshes) {
+      motion.restPositions.push_back(scene.meshes[std::size_t(mesh)].positions);
+      motion.restNormals.push_back(scene.meshes[std::size_t(mesh)].normals);
+    }
+    motion.pivot = node.pivot;
+    try {
+      if (!node.translationTimes.empty())
+        motion.translation =
+            KeyframeTrack<glm::dvec3>(node.translationTimes, node.translations,
+                                      interpolationNamed(node.translationInterpolation));
+      if (!node.rotationTimes.empty())
+        motion.rotation = KeyframeTrack<glm::dquat>(node.rotationTimes, node.rotations,
+                                                    interpolationNamed(node.rotationInterpolation));
+    } catch (const Error& error) {
+      throw Error(what + ": " + error.what());
+    }
+    motions.push_back(std::move(motion));
+  }
+  return motions;
+}
+
 }  // namespace
 
 Animation readAnimation(Params p, const Scene& scene, Camera& camera, bool cameraGiven) {
@@ -216,12 +260,18 @@ Animation readAnimation(Params p, const Scene& scene, Camera& camera, bool camer
                     "[[animation.lights]]; key all its quantities in one");
   }
   std::vector<int> moved;
+  if (p.has("scene_animation")) {
+    animation.meshes = sceneNodeMotions(p, scene);
+    for (const MeshMotion& motion : animation.meshes)
+      moved.insert(moved.end(), motion.meshes.begin(), motion.meshes.end());
+  }
   for (Params& meshParams : p.tables("meshes")) {
     animation.meshes.push_back(readMeshMotion(meshParams, animation.fps, scene));
     for (int mesh : animation.meshes.back().meshes) {
       if (std::find(moved.begin(), moved.end(), mesh) != moved.end())
         throw Error(meshParams.where("meshes") + ": mesh '" + scene.meshes[std::size_t(mesh)].name +
-                    "' is already moved by an earlier [[animation.meshes]]");
+                    "' is already moved by an earlier [[animation.meshes]] or the scene's "
+                    "animation (scene_animation)");
       moved.push_back(mesh);
     }
   }

@@ -32,13 +32,16 @@ std::string ProgressBar::formatSeconds(double seconds) {
   return out.str();
 }
 
-void ProgressBar::update(double fraction, const std::string& detail) {
+void ProgressBar::update(double fraction, const std::string& detail,
+                         std::optional<double> etaSeconds) {
   fraction = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0);
   const double elapsed = secondsSince(start_);
   if (!terminal_ && secondsSince(lastPrint_) < 10.0) return;
   lastPrint_ = std::chrono::steady_clock::now();
   // The rate so far predicts the rest; nothing is predicted before the first measurable progress.
-  const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : -1.0;
+  const double eta = etaSeconds       ? *etaSeconds
+                     : fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction
+                                      : -1.0;
   const int width = 30, filled = int(std::lround(fraction * width));
   std::ostringstream line;
   line << label_ << " [" << std::string(filled, '#') << std::string(width - filled, '.') << "] "

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 namespace lpvlab {
@@ -12,7 +13,10 @@ class ProgressBar {
 public:
   explicit ProgressBar(std::string label);
   // `fraction` of the work is done (0..1); `detail` is shown after the bar (e.g. "64 spp").
-  void update(double fraction, const std::string& detail);
+  // The ETA is the rate so far times what is left, unless the caller knows better
+  // (`etaSeconds`: a resumed sequence, whose bar starts part full, times only this run's frames).
+  void update(double fraction, const std::string& detail,
+              std::optional<double> etaSeconds = std::nullopt);
   void finish(const std::string& detail);
 
   // "1h02m", "3m05s", "12s": for ETAs and summaries.

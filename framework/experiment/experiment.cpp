@@ -218,6 +218,17 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   e.settings.shadow.normalOffsetTexels =
       lightMaps.get<float>("shadow_normal_offset", 1.5f, {.min = 0.0f, .max = 100.0f});
   e.settings.shadow.depthBias = lightMaps.get<float>("shadow_depth_bias", 2e-5f, {.min = 0.0f, .max = 0.1f});
+  // A directional light's view: around the whole scene, or a box following the camera (thesis
+  // 6.2), snapped to whole texels unless asked not to.
+  const bool follows = lightMaps.getChoice("directional", "scene", {"scene", "camera"}) == "camera";
+  if (follows)
+    e.settings.directional.followWidth =
+        lightMaps.require<float>("directional_width", {.min = 1e-4f, .max = 1e6f});
+  else if (lightMaps.has("directional_width") || lightMaps.has("directional_snap"))
+    throw Error(lightMaps.where(lightMaps.has("directional_width") ? "directional_width"
+                                                                   : "directional_snap") +
+                ": only used with light_maps.directional = \"camera\"");
+  e.settings.directional.snap = lightMaps.get<bool>("directional_snap", true);
 
   Params gridParams = params.table("grid");
   GridPlacement placement;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -160,11 +161,37 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
     previous->keepOnlyCompared(experiment.comparison);
   }
 
+  // A composition whose frames depend on the frames before (a GV history) renders the frames
+  // before `first` again, unwritten, so a resumed sequence matches an uninterrupted one.
+  const auto strategies = experiment.strategies.all();
+  const bool replay = first > 0 && std::any_of(strategies.begin(), strategies.end(), [](auto& s) {
+                        return s.second->keepsStateBetweenFrames();
+                      });
+  const int start = replay ? 0 : first;
+  if (replay)
+    std::cerr << "lpvlab: " << experiment.name << ": rendering frames 0-" << first - 1
+              << " again (not written): the composition keeps state between frames\n";
+
   ShaderCompiler shaders;
-  applyAnimation(animation, animation.frameTime(first), experiment.scene, experiment.camera);
+  applyAnimation(animation, animation.frameTime(start), experiment.scene, experiment.camera);
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
                     std::move(experiment.strategies), shaders);
   for (int i = 0; i < experiment.warmupFrames; ++i) pipeline.renderFrame();
+  // Places the camera, lights and meshes of `frame` in the pipeline.
+  const auto moveTo = [&](int frame) {
+    try {
+      applyAnimation(animation, animation.frameTime(frame), experiment.scene, experiment.camera);
+    } catch (const Error& error) {
+      throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
+    }
+    if (animation.movesCamera()) pipeline.setCamera(experiment.camera);
+    if (animation.movesLights() || animation.movesGeometry())
+      pipeline.moveScene(experiment.scene, animation.movesLights(), animation.movesGeometry());
+  };
+  for (int frame = start; frame < first; ++frame) {
+    moveTo(frame);
+    pipeline.renderFrame();
+  }
 
   // One exposure for every PNG of the sequence: frame 0's.
   std::optional<float> exposure;
@@ -173,14 +200,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   const auto started = std::chrono::steady_clock::now();
   for (int frame = first; frame < animation.frames; ++frame) {
     const double seconds = animation.frameTime(frame);
-    try {
-      applyAnimation(animation, seconds, experiment.scene, experiment.camera);
-    } catch (const Error& error) {
-      throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
-    }
-    if (animation.movesCamera()) pipeline.setCamera(experiment.camera);
-    if (animation.movesLights() || animation.movesGeometry())
-      pipeline.moveScene(experiment.scene, animation.movesLights(), animation.movesGeometry());
+    moveTo(frame);
     const FrameTimes times = pipeline.renderFrame();
     const std::vector<NamedImage> aovs = pipeline.readOutputs();
     try {
@@ -226,9 +246,10 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const int done = frame - first + 1, left = animation.frames - frame - 1;
+    // The ETA from this run's frames alone: a resumed sequence's bar starts part full.
     progress.update(double(frame + 1) / animation.frames,
-                    "frame " + std::to_string(frame + 1) + "/" + std::to_string(animation.frames) +
-                        ", ETA " + ProgressBar::formatSeconds(elapsed / done * left));
+                    "frame " + std::to_string(frame + 1) + "/" + std::to_string(animation.frames),
+                    elapsed / done * left);
   }
   progress.finish(std::to_string(animation.frames) + " frames");
   if (video) writeVideo(dir, animation.frames, animation.fps);

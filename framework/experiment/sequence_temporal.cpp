@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "framework/experiment/json_path.h"
@@ -15,6 +16,41 @@ namespace {
 
 std::string varianceName(const std::string& aov) { return aov + "_variance"; }
 
+// The lighting figures (temporal.h's demodulate) leave out pixels of an albedo below this in any
+// channel: a 2 % albedo reflects too little for its lighting to be told from rounding.
+constexpr float kMinimumAlbedo = 0.02f;
+const char* const kLightingSuffix = "_lighting";
+
+const Image* findOptional(const std::vector<NamedImage>& aovs, const std::string& name) {
+  for (const NamedImage& aov : aovs)
+    if (aov.name == name) return &aov.image;
+  return nullptr;
+}
+
+// Both frames' lighting (an output over its albedo AOV): the images, the current pixels it
+// leaves in and the reprojection without taps onto previous pixels it leaves out.
+struct Lighting {
+  Image nowValid, beforeValid;  // declared first: the images' initialisers fill them
+  Image now, before;
+  Lighting(const Image& outputNow, const Image& albedoNow, const Image& outputBefore,
+           const Image& albedoBefore, bool squared = false)
+      : now(demodulate(outputNow, albedoNow, kMinimumAlbedo, &nowValid, squared)),
+        before(demodulate(outputBefore, albedoBefore, kMinimumAlbedo, &beforeValid, squared)) {}
+};
+
+// Whether some pixel of `mask` has taps (the temporal figures refuse an empty set).
+bool anyCovered(const Reprojection& reprojection, const Image& mask) {
+  for (std::size_t p = 0; p < reprojection.taps.size(); ++p)
+    if (mask.pixels[p] != 0.0f && reprojection.taps[p].count > 0) return true;
+  return false;
+}
+
+Image product(const Image& a, const Image& b) {
+  Image out = a;
+  for (std::size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] *= b.pixels[i];
+  return out;
+}
+
 std::vector<NamedImage> keepNamed(std::vector<NamedImage> aovs,
                                   const std::set<std::string>& names) {
   std::erase_if(aovs, [&](const NamedImage& a) { return !names.count(a.name); });
@@ -24,7 +60,7 @@ std::vector<NamedImage> keepNamed(std::vector<NamedImage> aovs,
 }  // namespace
 
 void FrameState::keepOnlyCompared(const ComparisonSettings& comparison) {
-  std::set<std::string> mine = {"depth", "normal"}, theirs;
+  std::set<std::string> mine = {"depth", "normal", "albedo"}, theirs = {"albedo"};
   for (const auto& [run, reference] : comparison.pairs) {
     mine.insert(run);
     theirs.insert(reference);
@@ -51,21 +87,52 @@ nlohmann::json temporalRecord(const FrameState& now, const FrameState& before,
   out["reprojected_fraction"] = seen > 0 ? double(matched) / double(seen) : 0.0;
   if (matched == 0) return out;  // a cut, or nothing on screen: no point to follow
 
+  const Image& albedoNow = findAov(now.aovs, "albedo");
+  const Image& albedoBefore = findAov(before.aovs, "albedo");
   for (const auto& [run, referenceName] : comparison.pairs) {
     const Image& current = findAov(now.aovs, run);
     const Image& previous = findAov(before.aovs, run);
-    if (!out["change"].contains(run))
+    const Lighting lighting(current, albedoNow, previous, albedoBefore);
+    const Reprojection lightingReprojection = withoutTapsOnto(reprojection, lighting.beforeValid);
+    const Image lightingMask = product(mask, lighting.nowValid);
+    if (!out["change"].contains(run)) {
       out["change"][run] = frameToFrameChange(current, previous, reprojection, &mask).toJson();
+      if (anyCovered(lightingReprojection, lightingMask))
+        out["change"][run + kLightingSuffix] =
+            frameToFrameChange(lighting.now, lighting.before, lightingReprojection, &lightingMask)
+                .toJson();
+    }
     if (!now.reference || !before.reference) continue;
     // One cache entry for both frames (nothing changed that the path tracer sees) has the same
     // noise in both: it cancels, and subtracting its variance would be wrong.
     const bool independent = now.reference->key != before.reference->key;
+    const std::vector<NamedImage>& refNow = now.reference->aovs;
+    const std::vector<NamedImage>& refBefore = before.reference->aovs;
     const ReferencePair references{
-        findAov(now.reference->aovs, referenceName), findAov(before.reference->aovs, referenceName),
-        independent ? &findAov(now.reference->aovs, varianceName(referenceName)) : nullptr,
-        independent ? &findAov(before.reference->aovs, varianceName(referenceName)) : nullptr};
-    out["error"][run + "_vs_" + referenceName] =
-        temporalError(current, previous, references, reprojection, &mask).toJson();
+        findAov(refNow, referenceName), findAov(refBefore, referenceName),
+        independent ? &findAov(refNow, varianceName(referenceName)) : nullptr,
+        independent ? &findAov(refBefore, varianceName(referenceName)) : nullptr};
+    const std::string pair = run + "_vs_" + referenceName;
+    out["error"][pair] = temporalError(current, previous, references, reprojection, &mask).toJson();
+
+    // The lighting's error: each side over its own albedo (the path tracer's first-hit albedo),
+    // the references' variances over its square; pixels either side leaves out are left out.
+    const Image* refAlbedoNow = findOptional(refNow, "albedo");
+    const Image* refAlbedoBefore = findOptional(refBefore, "albedo");
+    if (!refAlbedoNow || !refAlbedoBefore) continue;
+    const Lighting refLighting(references.now, *refAlbedoNow, references.before, *refAlbedoBefore);
+    std::optional<Lighting> refVariance;
+    if (independent)
+      refVariance.emplace(*references.nowVariance, *refAlbedoNow, *references.beforeVariance,
+                          *refAlbedoBefore, true);
+    const Reprojection both = withoutTapsOnto(lightingReprojection, refLighting.beforeValid);
+    const Image bothMask = product(lightingMask, refLighting.nowValid);
+    if (!anyCovered(both, bothMask)) continue;
+    const ReferencePair lightingReferences{refLighting.now, refLighting.before,
+                                           refVariance ? &refVariance->now : nullptr,
+                                           refVariance ? &refVariance->before : nullptr};
+    out["error"][pair + kLightingSuffix] =
+        temporalError(lighting.now, lighting.before, lightingReferences, both, &bothMask).toJson();
   }
   return out;
 }

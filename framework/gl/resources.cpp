@@ -112,6 +112,14 @@ void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
   glGetNamedBufferSubData(id_, GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
+void Buffer::copyFrom(const Buffer& source) {
+  if (source.size() != bytes_)
+    throw Error("GL buffer '" + label_ + "': copying " + std::to_string(source.size()) +
+                " bytes of '" + source.label() + "' into " + std::to_string(bytes_));
+  awaitShaderWrites();
+  glCopyNamedBufferSubData(source.id(), id_, 0, 0, GLsizeiptr(bytes_));
+}
+
 void Buffer::bindStorage(GLuint binding) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_);
 }

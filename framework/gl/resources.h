@@ -26,11 +26,13 @@ public:
   GLuint id() const { return id_; }
   std::size_t size() const { return bytes_; }
   const std::string& label() const { return label_; }
-  // These three wait for earlier shader writes to the buffer (a memory barrier) and throw an
+  // These four wait for earlier shader writes to the buffer (a memory barrier) and throw an
   // Error naming the label when the range does not fit.
   void zero();                                                 // clears to 0
   void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
   void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
+  // Copies `source` (of this buffer's size, else an Error) on the GPU, after its shader writes.
+  void copyFrom(const Buffer& source);
   void bindStorage(GLuint binding) const;                      // GL_SHADER_STORAGE_BUFFER
   void bindUniform(GLuint binding) const;                      // GL_UNIFORM_BUFFER
 

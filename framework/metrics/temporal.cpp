@@ -201,4 +201,43 @@ TemporalError temporalError(const Image& testNow, const Image& testBefore,
   return error;
 }
 
+Image demodulate(const Image& image, const Image& albedo, float minimumAlbedo, Image* valid,
+                 bool squared) {
+  if (image.channels != 3 || albedo.channels != 3 || image.width != albedo.width ||
+      image.height != albedo.height)
+    throw Error("demodulating: the image (" + sizeText(image.width, image.height) + ", " +
+                std::to_string(image.channels) + " channels) and the albedo (" +
+                sizeText(albedo.width, albedo.height) + ", " + std::to_string(albedo.channels) +
+                " channels) must both be RGB of one size");
+  Image out(image.width, image.height, 3);
+  if (valid) *valid = Image(image.width, image.height, 1);
+  const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const float* a = &albedo.pixels[3 * p];
+    // A NaN albedo fails the comparison too, and leaves the pixel out.
+    const bool known = a[0] >= minimumAlbedo && a[1] >= minimumAlbedo && a[2] >= minimumAlbedo;
+    if (valid) valid->pixels[p] = known ? 1.0f : 0.0f;
+    if (!known) continue;
+    for (int c = 0; c < 3; ++c)
+      out.pixels[3 * p + std::size_t(c)] =
+          image.pixels[3 * p + std::size_t(c)] / (squared ? a[c] * a[c] : a[c]);
+  }
+  return out;
+}
+
+Reprojection withoutTapsOnto(const Reprojection& reprojection, const Image& previousValid) {
+  if (previousValid.width != reprojection.width || previousValid.height != reprojection.height ||
+      previousValid.channels != 1)
+    throw Error("reprojection: the previous frame's valid pixels must be 1-channel, " +
+                sizeText(reprojection.width, reprojection.height));
+  Reprojection out = reprojection;
+  for (Reprojection::Taps& taps : out.taps)
+    for (int k = 0; k < taps.count; ++k)
+      if (previousValid.pixels[std::size_t(taps.pixel[std::size_t(k)])] == 0.0f) {
+        taps.count = 0;
+        break;
+      }
+  return out;
+}
+
 }  // namespace lpvlab

@@ -33,6 +33,13 @@
 //
 // Every image must be RGB of the reprojection's size and finite (an Error names the image, pixel
 // and channel otherwise); the mask is 1-channel, 0 = left out (metrics.h's convention).
+//
+// The lighting of a Lambertian output (demodulate): radiance albedo/pi * E divided by its albedo
+// AOV, per pixel and channel, so that texture detail, which interpolating the previous image
+// blurs (a floor under the change that grows with the textures' contrast), drops out and what is
+// compared is the incident light alone. Pixels whose albedo is below a threshold in any channel
+// have no lighting: they leave the mask, and so do current pixels with a tap on such a previous
+// pixel (withoutTapsOnto). A variance image divides by albedo^2 (the albedo is exact, not noise).
 
 #include <array>
 #include <cstdint>
@@ -101,5 +108,15 @@ struct ReferencePair {
 TemporalError temporalError(const Image& testNow, const Image& testBefore,
                             const ReferencePair& reference, const Reprojection& reprojection,
                             const Image* mask = nullptr);
+
+// `image` / `albedo` per pixel and channel, 0 where the albedo is below `minimumAlbedo` in any
+// channel; `valid` (1-channel) is 1 where it is not. `squared`: divides by albedo^2 (variances).
+// Throws an Error for images of different sizes or not RGB.
+Image demodulate(const Image& image, const Image& albedo, float minimumAlbedo,
+                 Image* valid = nullptr, bool squared = false);
+
+// The reprojection without the current pixels that have a tap on a previous pixel where
+// `previousValid` (1-channel, the previous frame's size) is 0.
+Reprojection withoutTapsOnto(const Reprojection& reprojection, const Image& previousValid);
 
 }  // namespace lpvlab

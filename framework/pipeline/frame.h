@@ -65,6 +65,10 @@ struct Frame {
   HostReadback* host = nullptr;  // the raster passes' images on the CPU, read once per frame
   std::span<LightGrid> levels;               // every level, finest first; empty: lightGrid alone
   float cascadeBlendCells = 0.0f;            // [cascades] blend_cells
+  int level = 0;                             // the level being filled, 0 the finest
+  // Counts the moves of the scene's geometry in this run (Pipeline::moveScene): a strategy that
+  // keeps data about surfaces between frames starts anew when it changes.
+  int geometryVersion = 0;
 
   // The level's resource of that key, or null when the run has none.
   template <class T>

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <numeric>
 
 #include "framework/core/error.h"
 
@@ -37,9 +37,43 @@ void checkLight(const Light& light) {
     throwAt(where, "cone angles must satisfy 0 <= inner <= outer <= pi/2 and outer > 0");
 }
 
+// The orthographic view of a light shining along `direction` (unit): a box `halfWidth` each side
+// of `centre` across the light, and 1.5 `sceneRadius` each side of it along the light (the scene's
+// bounding sphere, when `centre` is level with the sphere's centre along the light, well inside).
+GpuView orthographicView(const glm::vec3& direction, const glm::vec3& centre, float halfWidth,
+                         float sceneRadius, int lightIndex) {
+  const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * sceneRadius, centre, up);
+  const glm::mat4 clipFromView = glm::ortho(-halfWidth, halfWidth, -halfWidth, halfWidth,
+                                            0.5f * sceneRadius, 3.5f * sceneRadius);
+  return {clipFromView * viewFromWorld, glm::vec4(1.0f, 2.0f * halfWidth, float(lightIndex), 0)};
+}
+
+// The followed box's centre: the camera's point, snapped to whole steps along the view's image
+// axes (those of glm::lookAt in orthographicView) and put level with the scene's centre along the
+// light, so that the box's depth range holds the scene's bounding sphere.
+glm::vec3 followedCentre(const glm::vec3& direction, const DirectionalFollow& follow,
+                         const glm::vec3& sceneCentre) {
+  const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 right = glm::normalize(glm::cross(direction, up));
+  const glm::vec3 imageUp = glm::cross(right, direction);
+  // Coordinates in double: a camera kilometres from the origin still snaps to millimetre steps.
+  auto snapped = [&](const glm::vec3& axis) {
+    const double along = glm::dot(glm::dvec3(follow.centre), glm::dvec3(axis));
+    return follow.texel > 0.0f ? std::round(along / follow.texel) * follow.texel : along;
+  };
+  return glm::vec3(glm::dvec3(right) * snapped(right) + glm::dvec3(imageUp) * snapped(imageUp) +
+                   glm::dvec3(direction) * double(glm::dot(sceneCentre, direction)));
+}
+
 }  // namespace
 
-LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bounds) {
+float directionalSnapStep(float halfWidth, int rsmResolution, int shadowResolution) {
+  return 2.0f * halfWidth / float(std::gcd(rsmResolution, shadowResolution));
+}
+
+LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bounds,
+                           const std::optional<DirectionalFollow>& follow) {
   if (bounds.empty()) throw Error("light views: the scene has no geometry");
   const float diagonal = std::max(glm::length(bounds.extent()), 1e-3f);
   LightViews out;
@@ -60,15 +94,16 @@ LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bound
     record.viewOfFace45 = glm::ivec4(-1);
 
     if (light.type == LightType::Directional) {
-      // An orthographic box around the scene's bounding sphere, looking along the light.
-      const glm::vec3 centre = bounds.center();
+      // Looking along the light, over the scene's bounding sphere or the followed box.
       const float radius = 0.5f * diagonal;
-      const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-      const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * radius, centre, up);
-      const glm::mat4 clipFromView =
-          glm::ortho(-radius, radius, -radius, radius, 0.5f * radius, 3.5f * radius);
       record.viewOfFace0123.x = int(out.views.size());
-      out.views.push_back({clipFromView * viewFromWorld, glm::vec4(1.0f, 2.0f * radius, lightIndex, 0)});
+      if (follow)
+        out.views.push_back(orthographicView(direction,
+                                             followedCentre(direction, *follow, bounds.center()),
+                                             follow->halfWidth, radius, lightIndex));
+      else
+        out.views.push_back(
+            orthographicView(direction, bounds.center(), radius, radius, lightIndex));
     } else {
       // The near plane scales with the scene; far reaches the farthest corner of the bounds.
       float farthest = 0.0f;

@@ -2,13 +2,14 @@
 // Turning the scene's lights into the views that shadow maps and RSMs are rendered from:
 //   point and spot lights: the six 90-degree faces of a cube around the light, skipping the faces
 //     whose frustum cannot meet the spot's cone (a spot pointing down renders no upward face);
-//   directional lights: one orthographic view covering the scene bounds.
+//   directional lights: one orthographic view covering the scene bounds, or, following the
+//     camera, a box around a point ahead of it (DirectionalFollow; thesis 6.2).
 // A cube face's texel subtends (2 tan(fov/2) / N)^2 / (1 + x^2 + y^2)^(3/2) sr at the light, so an
 // RSM texel's reflected flux is albedo * I(w) * that solid angle, whatever the surface's slope.
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <optional>
+#include <vector>
 
 #include "framework/math/bounds.h"
 #include "framework/scene/scene.h"
@@ -68,8 +69,31 @@ SharedLightViews<SharedLight, SharedView> sharedLightViews(const LightViews& rec
   return shared;
 }
 
+// A directional light's view that follows the camera, as the thesis's shadow camera follows its
+// main camera (seed 000, 6.2): `halfWidth` metres each side of `centre` across the light, and
+// along the light over the whole scene (so every occluder of the box casts into it). The texels
+// then cover only that region, more finely than a box around the whole scene, and nothing outside
+// it is lit directly or injected.
+// With `texel` > 0 the centre is moved to the nearest multiple of `texel` along the view's two
+// image axes first (the thesis's "rotate back to the axes, round to whole texels, rotate
+// forward"): the texel grid then stays fixed in the world while the camera moves, so the maps only
+// ever shift by whole texels. `texel` = 0 follows every move (an ablation: sub-texel moves resample
+// the maps, and shadows and VPLs shimmer).
+struct DirectionalFollow {
+  glm::vec3 centre{0.0f};
+  float halfWidth = 1.0f;  // metres
+  float texel = 0.0f;      // snapping step, metres (0: none)
+};
+
+// The snapping step that keeps both maps' texel grids fixed: a whole number of texels of the RSM
+// (rsmResolution per side) and of the shadow map (shadowResolution) over the box's width.
+float directionalSnapStep(float halfWidth, int rsmResolution, int shadowResolution);
+
 // Throws an Error when a light can't be used (zero or negative intensity is allowed: it gives
-// black; non-finite values and degenerate directions are errors).
-LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& sceneBounds);
+// black; non-finite values and degenerate directions are errors). Without `follow`, a directional
+// light's view is an orthographic box around the scene's bounding sphere, which no camera move
+// changes.
+LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& sceneBounds,
+                           const std::optional<DirectionalFollow>& follow = std::nullopt);
 
 }  // namespace lpvlab

@@ -64,10 +64,13 @@ const std::vector<std::string>& Pipeline::stageNames() {
   return names;
 }
 
-
 Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
                    Strategies strategies, ShaderCompiler& shaders)
-    : settings_(settings), camera_(camera), strategies_(std::move(strategies)) {
+    : settings_(settings),
+      camera_(camera),
+      lights_(scene.lights),
+      sceneBounds_(scene.bounds()),
+      strategies_(std::move(strategies)) {
   if (scene.lights.empty())
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
@@ -83,9 +86,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const Material& m) { return m.emits(); });
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height, emissive);
-  lightMapsPass_ = std::make_unique<LightMapsPass>(
-      shaders, buildLightViews(scene.lights, scene.bounds()), settings.rsmResolution,
-      settings.shadowResolution);
+  lightMapsPass_ = std::make_unique<LightMapsPass>(shaders, lightViews(), settings.rsmResolution,
+                                                   settings.shadowResolution);
   // Direct light has a CPU kernel for every composition: it follows the backend.
   direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow,
                                              requirements_.backend != ComputeBackend::Gl);
@@ -141,18 +143,46 @@ Frame Pipeline::frame(int level) {
                .resources = &resources_[l],
                .host = &hostReadback_,
                .levels = levels_,
-               .cascadeBlendCells = settings_.cascades.blendCells};
+               .cascadeBlendCells = settings_.cascades.blendCells,
+               .level = level,
+               .geometryVersion = geometryVersion_};
 }
 
 void Pipeline::setCamera(const Camera& camera) {
   camera_ = camera;
   placeLevels();
+  if (settings_.directional.followWidth > 0.0f) lightMapsPass_->setViews(lightViews());
 }
 
 void Pipeline::moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) {
-  if (geometryMoved) scene_->updateGeometry(scene);
-  if (lightsMoved || geometryMoved)
-    lightMapsPass_->setViews(buildLightViews(scene.lights, scene.bounds()));
+  if (geometryMoved) {
+    scene_->updateGeometry(scene);
+    ++geometryVersion_;
+  }
+  if (!lightsMoved && !geometryMoved) return;
+  lights_ = scene.lights;
+  sceneBounds_ = scene.bounds();
+  lightMapsPass_->setViews(lightViews());
+}
+
+std::optional<DirectionalFollow> directionalFollow(const PipelineSettings& settings,
+                                                   const Camera& camera) {
+  const DirectionalViewSettings& directional = settings.directional;
+  if (directional.followWidth <= 0.0f) return std::nullopt;
+  // The box's centre is where the eye rule centres the finer cascade levels: view_shift of the
+  // box's width ahead of the eye (cascade_placement.h).
+  const float halfWidth = 0.5f * directional.followWidth;
+  return DirectionalFollow{
+      .centre = camera.position +
+                camera.forward * (settings.cascades.viewShift * directional.followWidth),
+      .halfWidth = halfWidth,
+      .texel = directional.snap ? directionalSnapStep(halfWidth, settings.rsmResolution,
+                                                      settings.shadowResolution)
+                                : 0.0f};
+}
+
+LightViews Pipeline::lightViews() const {
+  return buildLightViews(lights_, sceneBounds_, directionalFollow(settings_, camera_));
 }
 
 void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {

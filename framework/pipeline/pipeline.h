@@ -28,6 +28,14 @@
 
 namespace lpvlab {
 
+// How a directional light's shadow and RSM view is placed (light_views.h, [light_maps]
+// directional in docs/experiments.md).
+struct DirectionalViewSettings {
+  float followWidth = 0.0f;  // 0: a box around the whole scene; > 0: a box this wide (m) that
+                             // follows the camera, centred like the finer cascade levels
+  bool snap = true;          // the followed box moves in whole texels of both maps
+};
+
 struct PipelineSettings {
   int width = 512;             // output pixels
   int height = 512;
@@ -38,11 +46,16 @@ struct PipelineSettings {
   CascadeSettings cascades;    // levels = 1: `grid` alone
   glm::vec3 skyRadiance{0.0f}; // constant sky, W/(m^2 sr): needs an injection strategy for it
   ShadowSettings shadow;
+  DirectionalViewSettings directional;
   std::string backend = "auto"; // [compute] backend: "auto", "gl" or "cpu" (strategy.h)
   // false: no shadow maps and no direct light (the direct image stays black), for callers that
   // use the indirect light alone (lpvlab fit, whose residuals compare indirect).
   bool directLight = true;
 };
+
+// Where a directional light's view follows `camera` (nullopt: it covers the whole scene).
+std::optional<DirectionalFollow> directionalFollow(const PipelineSettings& settings,
+                                                   const Camera& camera);
 
 // Stage name -> milliseconds, for one frame.
 struct FrameTimes {
@@ -80,11 +93,13 @@ public:
   std::vector<float> readGrid(bool accumulated, int level = 0) const;
 
   // Moves the camera; finer cascade levels follow it from the next frame on (with "depth"
-  // placement each frame places them after its G-buffer; the "clear" stage includes that read-back).
+  // placement each frame places them after its G-buffer; the "clear" stage includes that
+  // read-back), and so do directional light views that follow the camera.
   void setCamera(const Camera& camera);
   // The scene moved (a frame of an animation, framework/animation/animation.h): the lights and
   // the meshes' vertices are taken again from `scene`, which holds the same lights and meshes as
-  // at construction, moved. The light views follow the scene's bounds when geometry moved.
+  // at construction, moved. The light views follow the lights, and the scene's bounds when geometry
+  // moved.
   void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved);
   // The light grids, finest first, where the last frame placed them.
   const std::vector<LightGrid>& levels() const { return levels_; }
@@ -125,9 +140,13 @@ private:
   void placeLevels(const std::optional<glm::vec3>& focus = std::nullopt);
   void clearGrids();
   void injectAll(int level);
+  // The light views for the current camera, lights and scene bounds.
+  LightViews lightViews() const;
 
   PipelineSettings settings_;
   Camera camera_;
+  std::vector<Light> lights_;  // as last placed (moveScene), with the scene's bounds then
+  Bounds sceneBounds_;
   Strategies strategies_;
   std::unique_ptr<SceneGpu> scene_;
   std::unique_ptr<GBufferPass> gbufferPass_;
@@ -141,6 +160,7 @@ private:
   GpuTimer gpuTimer_;
   std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
   HostReadback hostReadback_;        // this frame's images read back for them
+  int geometryVersion_ = 0;  // moves of the scene's geometry so far (Frame::geometryVersion)
   bool keepInjected_ = false;        // renderFrame keeps the injected grid (renderDerivatives)
   std::vector<float> injected_;
 };

@@ -130,6 +130,11 @@ public:
   // strategy's kernels on dual numbers carry (the fit takes central differences for the others).
   virtual std::vector<std::string> differentiableParameters() const { return {}; }
 
+  // Whether what a frame computes depends on the frames before it in this run (a strategy that
+  // keeps data between frames, e.g. a GV history). A resumed sequence then renders the frames
+  // before its first missing one again, unwritten, so that they match an uninterrupted run.
+  virtual bool keepsStateBetweenFrames() const { return false; }
+
   // The registered name, set by the registry when it creates the strategy.
   const std::string& name() const { return name_; }
   void setRegisteredName(std::string name) { name_ = std::move(name); }

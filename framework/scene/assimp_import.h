@@ -4,7 +4,9 @@
 // meshes, assimp_materials.cpp converts materials and their textures, assimp_lights_cameras.cpp
 // converts lights and cameras.
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <assimp/matrix4x4.h>
@@ -18,6 +20,10 @@ namespace lpvlab {
 
 // Assimp matrices are row-major, glm's are column-major.
 inline glm::mat4 toGlm(const aiMatrix4x4& m) { return glm::transpose(glm::make_mat4(&m.a1)); }
+
+// The meshes each node places, its own and its descendants': [first, last) of Scene::meshes
+// (flattening walks the tree depth first, so they are consecutive).
+using NodeMeshes = std::map<const aiNode*, std::pair<int, int>>;
 
 // The extension of `path`, lower-case, with its dot (".gltf"); empty when there is none.
 std::string lowercaseExtension(const std::string& path);
@@ -41,5 +47,13 @@ Light convertLight(const aiLight& light, const glm::mat4& toWorld, const std::st
 // A perspective camera placed by its node's transform. Throws an Error naming `path` and the
 // camera for an orthographic camera.
 Camera convertCamera(const aiCamera& camera, const glm::mat4& toWorld, const std::string& path);
+
+// The file's node animations (scene.h NodeAnimation), one per animated node and animation, from
+// Assimp's channels; the interpolation of a glTF file's samplers is read from its JSON (Assimp 5.2
+// does not pass it on). Throws an Error naming `path`, the animation and the node for what is not
+// a rigid motion lpvlab can play: a scaling key other than the node's rest scale, a node under a
+// non-uniformly scaled or animated parent, a CUBICSPLINE sampler.
+std::vector<NodeAnimation> convertNodeAnimations(const aiScene& scene, const NodeMeshes& meshes,
+                                                 const std::string& path);
 
 }  // namespace lpvlab

@@ -130,16 +130,19 @@ Mesh flattenInstance(const aiMesh& in, const glm::mat4& toWorld, const std::stri
 }
 
 // Instanced meshes are flattened: every node that references a mesh gets its own copy.
+// `placed`: the meshes each node placed (its own and its descendants').
 void flattenNode(const aiScene& scene, const aiNode& node, const glm::mat4& parentToWorld,
-                 std::vector<Mesh>& meshes) {
+                 std::vector<Mesh>& meshes, NodeMeshes& placed) {
   const glm::mat4 toWorld = parentToWorld * toGlm(node.mTransformation);
+  const int first = int(meshes.size());
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[k]];
     const std::string name = std::string(node.mName.C_Str()) + "/" + mesh.mName.C_Str();
     meshes.push_back(flattenInstance(mesh, toWorld, name));
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c)
-    flattenNode(scene, *node.mChildren[c], toWorld, meshes);
+    flattenNode(scene, *node.mChildren[c], toWorld, meshes, placed);
+  placed[&node] = {first, int(meshes.size())};
 }
 
 // Assimp names a light or camera after the node that places it.
@@ -165,7 +168,9 @@ Scene importWithAssimp(const std::string& path) {
   scene.source = path;
   for (unsigned m = 0; m < ai.mNumMeshes; ++m) requireFiniteVertices(*ai.mMeshes[m], path);
   scene.materials = convertMaterials(ai, path, scene.textures);
-  flattenNode(ai, *ai.mRootNode, glm::mat4(1.0f), scene.meshes);
+  NodeMeshes placed;
+  flattenNode(ai, *ai.mRootNode, glm::mat4(1.0f), scene.meshes, placed);
+  scene.nodeAnimations = convertNodeAnimations(ai, placed, path);
   for (unsigned l = 0; l < ai.mNumLights; ++l) {
     const aiLight& light = *ai.mLights[l];
     const aiNode& node = placingNode(ai, light.mName, path, "light");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "framework/math/bounds.h"
 
@@ -86,6 +87,25 @@ struct Camera {
 enum class CameraOrientation { Oriented, TargetAtPosition, UpAlongView };
 CameraOrientation orientCamera(Camera& camera, const glm::vec3& target, const glm::vec3& up);
 
+// A node animation of the scene file (glTF animations, read through Assimp;
+// framework/scene/assimp_animations.cpp): the rigid motion of the meshes the node and its
+// descendants place, in world space, relative to the file's rest pose. At time t a point p of
+// them as loaded goes to pivot + R(t) (p - pivot) + T(t), with T and R interpolated between
+// their keys as `interpolation` says ("linear": linear and slerp; "step"); before the first key
+// and after the last the key is held. An experiment plays it with [animation] scene_animation.
+struct NodeAnimation {
+  std::string animation;               // the file's animation (clip) name
+  std::string node;                    // the animated node
+  std::vector<int> meshes;             // indices into Scene::meshes
+  glm::dvec3 pivot{0.0};               // the node's origin at rest, world space
+  std::vector<double> translationTimes;  // seconds, increasing; empty: no translation
+  std::vector<glm::dvec3> translations;  // T, metres
+  std::string translationInterpolation = "linear";
+  std::vector<double> rotationTimes;   // seconds, increasing; empty: no rotation
+  std::vector<glm::dquat> rotations;   // R, unit
+  std::string rotationInterpolation = "linear";
+};
+
 struct Scene {
   std::string source;              // file path, or "builtin:cornell_box"
   std::vector<Mesh> meshes;
@@ -93,6 +113,7 @@ struct Scene {
   std::vector<TextureImage> textures;
   std::vector<Light> lights;
   std::vector<Camera> cameras;
+  std::vector<NodeAnimation> nodeAnimations;  // the file's, none for the built-in scenes
 
   std::size_t triangleCount() const;
   Bounds bounds() const;           // of all triangles

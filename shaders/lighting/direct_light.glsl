@@ -33,6 +33,13 @@ int viewOfFace(GpuLight light, int face) {
 real shadowVisibility(int view, vec3 p, int resolution, real depthBias) {
   vec4 clip = directView(view).clipFromWorld * vec4(p, 1.0);
   vec3 window = vec3(clip) / clip.w * real(0.5) + real(0.5);
+  // A directional light's view that follows the camera (light_views.h) covers a box: outside it
+  // the map knows nothing of occluders, and lpvlab does not light what it cannot shadow. (A view
+  // around the whole scene, and a cube face chosen by direction, hold every point they are asked
+  // about.)
+  if (directView(view).params.x == real(1.0) &&
+      (min(window.x, window.y) < real(0.0) || max(window.x, window.y) > real(1.0)))
+    return real(0.0);
   return shadowTaps3x3(view, vec2(window.x, window.y), window.z - depthBias);
 }
 

@@ -25,10 +25,11 @@ struct Loaded {
 
 // Reads `text`'s [animation] against the Cornell box, as loadExperiment does (and checks, as it
 // does, that no key went unread).
-Loaded load(const std::string& text) {
+Loaded load(const std::string& text, const std::vector<NodeAnimation>& nodeAnimations = {}) {
   Loaded l;
   l.root = toml::parse(text);
   l.scene = loadSceneByName("builtin:cornell_box");
+  l.scene.nodeAnimations = nodeAnimations;
   l.camera = l.scene.cameras.front();
   Params params(l.root, "anim.toml");
   l.animation = readAnimation(params.table("animation"), l.scene, l.camera, true);
@@ -170,6 +171,67 @@ direction = [0.5, -1, 0]
   }
   applyAnimation(l.animation, l.animation.frameTime(5), l.scene, l.camera);
   EXPECT_NEAR(l.scene.lights[0].intensity, 5.0f, 1e-5f);
+}
+
+// The scene file's node animations (scene.h NodeAnimation, read from glTF: tests/scene/
+// node_animation_test.cpp) played by name: each a rigid motion of its meshes, its keys as the
+// file gives them, interpolated as it says; "all" plays every one. Here two made by hand on the
+// Cornell box's blocks.
+TEST(AnimationFile, TheScenesNodeAnimationsPlayByName) {
+  const Scene box = loadSceneByName("builtin:cornell_box");
+  NodeAnimation slide;
+  slide.animation = "slide";
+  slide.node = "short";
+  slide.meshes = {meshNamed(box, "short block")};
+  slide.pivot = {0.2, 0.0, 0.2};
+  slide.translationTimes = {0.0, 1.0};
+  slide.translations = {{0, 0, 0}, {0.1, 0, 0}};
+  slide.rotationTimes = {0.0, 1.0};
+  slide.rotations = {glm::dquat(1, 0, 0, 0), glm::angleAxis(M_PI / 2, glm::dvec3(0, 1, 0))};
+  slide.rotationInterpolation = "step";
+  NodeAnimation lift = slide;
+  lift.animation = "lift";
+  lift.meshes = {meshNamed(box, "tall block")};
+  lift.rotationTimes.clear();
+  lift.rotations.clear();
+  lift.translations = {{0, 0, 0}, {0, 0.2, 0}};
+
+  Loaded l =
+      load("[animation]\nframes = 3\nfps = 2\nscene_animation = \"slide\"\n", {slide, lift});
+  ASSERT_EQ(l.animation.meshes.size(), 1u);
+  EXPECT_TRUE(l.animation.movesGeometry());
+  const int shortBlock = meshNamed(box, "short block");
+  for (double t : {0.0, 0.5, 1.0, 2.0}) {
+    Scene scene = l.scene;
+    applyAnimation(l.animation, t, scene, l.camera);
+    // Linear translation, the rotation held at its first key until the second (step).
+    const glm::dvec3 translation(0.1 * std::min(t, 1.0), 0, 0);
+    const glm::dquat rotation = t < 1.0 ? slide.rotations[0] : slide.rotations[1];
+    for (std::size_t v = 0; v < box.meshes[std::size_t(shortBlock)].positions.size(); ++v) {
+      const glm::dvec3 rest(box.meshes[std::size_t(shortBlock)].positions[v]);
+      const glm::dvec3 expected = slide.pivot + rotation * (rest - slide.pivot) + translation;
+      const glm::dvec3 actual(scene.meshes[std::size_t(shortBlock)].positions[v]);
+      EXPECT_NEAR(glm::distance(actual, expected), 0.0, 1e-6) << "t = " << t << ", vertex " << v;
+    }
+  }
+  const Loaded all = load("[animation]\nscene_animation = \"all\"\n", {slide, lift});
+  EXPECT_EQ(all.animation.meshes.size(), 2u);
+
+  // Unknown names list the file's; a scene without animations says so; a mesh the scene's
+  // animation moves can't also be keyed by hand.
+  std::string message =
+      errorOf([&] { load("[animation]\nscene_animation = \"walk\"\n", {slide, lift}); });
+  EXPECT_TRUE(contains(message, "animation.scene_animation")) << message;
+  EXPECT_TRUE(contains(message, "'slide', 'lift'")) << message;
+  message = errorOf([&] { load("[animation]\nscene_animation = \"all\"\n"); });
+  EXPECT_TRUE(contains(message, "has no node animations")) << message;
+  message = errorOf([&] {
+    load(std::string("[animation]\nscene_animation = \"slide\"\n") +
+             "[[animation.meshes]]\nmeshes = [\"short block\"]\n[[animation.meshes.keys]]\n"
+             "frame = 0\ntranslation = [0, 0, 0]\n",
+         {slide});
+  });
+  EXPECT_TRUE(contains(message, "already moved")) << message;
 }
 
 TEST(AnimationFile, BadAnimationsAreOneErrorNamingTheKey) {

@@ -155,6 +155,63 @@ TEST(TemporalError, TheNoiseCorrectionRemovesIndependentReferenceNoise) {
   EXPECT_GT(moved.meanSquare, 8.0 * moved.meanSquareStandardError);
 }
 
+TEST(Lighting, DemodulatingDividesByTheAlbedoAndLeavesOutDarkOrUnknownAlbedo) {
+  const float nan = std::nanf("");
+  const Image radiance = rgb(3, 1, {0.2f, 0.4f, 0.6f, 1.0f, 1.0f, 1.0f, 0.5f, 0.5f, 0.5f});
+  const Image albedo = rgb(3, 1, {0.5f, 0.8f, 0.25f, 0.5f, 0.01f, 0.5f, nan, 0.5f, 0.5f});
+  Image valid;
+  const Image lighting = demodulate(radiance, albedo, 0.02f, &valid);
+  EXPECT_FLOAT_EQ(lighting.at(0, 0, 0), 0.4f);
+  EXPECT_FLOAT_EQ(lighting.at(0, 0, 1), 0.5f);
+  EXPECT_FLOAT_EQ(lighting.at(0, 0, 2), 2.4f);
+  EXPECT_EQ(valid.pixels, (std::vector<float>{1.0f, 0.0f, 0.0f})) << "a channel below 2 %, a NaN";
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(lighting.at(1, 0, c), 0.0f);
+    EXPECT_EQ(lighting.at(2, 0, c), 0.0f);
+  }
+  // A variance divides by the albedo's square.
+  EXPECT_FLOAT_EQ(demodulate(radiance, albedo, 0.02f, nullptr, true).at(0, 0, 2), 0.6f / 0.0625f);
+  EXPECT_THROW(demodulate(radiance, Image(3, 1, 1), 0.02f), Error);
+}
+
+// A textured surface under constant light, seen half a pixel further along: the output's change is
+// the texture's contrast interpolated (a floor that has nothing to do with the light); its
+// lighting's change is exactly zero.
+TEST(Lighting, TextureDetailDropsOutOfTheLightingsChange) {
+  const int w = 64;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> texture(0.1f, 0.9f);
+  Image albedo(w, 1, 3), radiance(w, 1, 3);
+  for (int x = 0; x < w; ++x)
+    for (int c = 0; c < 3; ++c) {
+      albedo.at(x, 0, c) = texture(random);
+      radiance.at(x, 0, c) = albedo.at(x, 0, c) * 2.5f / float(M_PI);  // E = 2.5 W/m^2
+    }
+  Reprojection halfPixel;
+  halfPixel.width = w;
+  halfPixel.height = 1;
+  halfPixel.taps.resize(std::size_t(w));
+  for (int x = 0; x + 1 < w; ++x) halfPixel.taps[std::size_t(x)] = taps({{x, 0.5f}, {x + 1, 0.5f}});
+  const TemporalChange output = frameToFrameChange(radiance, radiance, halfPixel);
+  Image valid;
+  const Image lighting = demodulate(radiance, albedo, 0.02f, &valid);
+  const TemporalChange light = frameToFrameChange(lighting, lighting, halfPixel, &valid);
+  EXPECT_GT(*output.relative, 0.1);
+  EXPECT_LT(*light.relative, 1e-6);
+  EXPECT_EQ(light.pixels, w - 1);
+}
+
+TEST(Lighting, PixelsWithATapOntoALeftOutPixelAreLeftOut) {
+  const Reprojection r = twoPixels(taps({{0, 0.5f}, {1, 0.5f}}), taps({{1, 1.0f}}));
+  Image previousValid(2, 1, 1);
+  previousValid.pixels = {0.0f, 1.0f};
+  const Reprojection kept = withoutTapsOnto(r, previousValid);
+  EXPECT_EQ(kept.taps[0].count, 0);
+  EXPECT_EQ(kept.taps[1].count, 1);
+  EXPECT_EQ(kept.matched(), 1);
+  EXPECT_THROW(withoutTapsOnto(r, Image(3, 1, 1)), Error);
+}
+
 TEST(TemporalMetrics, BadInputsAreErrorsNamingTheProblem) {
   const Image a = test::patternImage(4, 4, 1);
   const Image small = test::patternImage(3, 4, 1);

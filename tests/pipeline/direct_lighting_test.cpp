@@ -8,16 +8,17 @@
 // (Against an independent method: reference_agreement_test.cpp compares the default backend's
 // direct light, the CPU's here, with the path tracer's.)
 
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-#include <tbb/global_control.h>
-
 #include "backend_comparison.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
+#include "framework/reference/camera_rays.h"
 #include "pipeline_test_support.h"
 
 namespace lpvlab {
@@ -25,19 +26,28 @@ namespace {
 
 // The direct light of an experiment (a small frame) on `backend`; with `emission`, every material
 // of its scene emits that radiance.
+// `more`: further overrides. `depth`: if given, receives the frame's depth AOV.
 Image directLight(const std::string& file, const std::string& backend,
-                  const glm::vec3& emission = glm::vec3(0.0f)) {
+                  const glm::vec3& emission = glm::vec3(0.0f),
+                  const std::vector<std::string>& more = {}, Image* depth = nullptr) {
   test::glTestContext();
-  Experiment e = loadExperiment(file, {"output.width=160", "output.height=120",
-                                       "light_maps.shadow_resolution=256",
-                                       "light_maps.rsm_resolution=32", "grid.resolution=8",
-                                       "propagation.iterations=1", "compute.backend=" + backend});
+  std::vector<std::string> overrides = {"output.width=160",
+                                        "output.height=120",
+                                        "light_maps.shadow_resolution=256",
+                                        "light_maps.rsm_resolution=32",
+                                        "grid.resolution=8",
+                                        "propagation.iterations=1",
+                                        "compute.backend=" + backend};
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  Experiment e = loadExperiment(file, overrides);
   for (Material& m : e.scene.materials) m.emission = emission;
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
   EXPECT_EQ(pipeline.computeReport().at("direct"), backend);
   pipeline.renderFrame();
-  return findAov(pipeline.readOutputs(), "direct");
+  const std::vector<NamedImage> outputs = pipeline.readOutputs();
+  if (depth) *depth = findAov(outputs, "depth");
+  return findAov(outputs, "direct");
 }
 
 std::string experiment(const std::string& name) {
@@ -55,6 +65,52 @@ TEST(DirectLighting, CpuGivesGlsImageForSpotPointAndDirectionalLights) {
               << "% of values off by more than 1e-4 of the largest (shadow comparisons), "
               << "largest difference " << d.largest / d.scale << " of the largest value\n";
   }
+}
+
+// Sponza's sun with its view an 8 m box following the camera (light_views.h): the shadow map
+// knows nothing outside the box, so what the camera sees there gets no direct light, and inside it
+// the sunlit floor and walls do; the same on both backends.
+TEST(DirectLighting, ASunViewFollowingTheCameraLightsOnlyItsBoxOnBothBackends) {
+  const std::vector<std::string> follow = {"light_maps.directional=\"camera\"",
+                                           "light_maps.directional_width=8.0"};
+  Image depth;
+  const Image cpu =
+      directLight(experiment("sponza_sun.toml"), "cpu", glm::vec3(0.0f), follow, &depth);
+  const Image gl = directLight(experiment("sponza_sun.toml"), "gl", glm::vec3(0.0f), follow);
+  test::expectSameDirectLight(cpu, gl, "sponza_sun.toml, the sun's view following the camera");
+
+  const Experiment e = loadExperiment(experiment("sponza_sun.toml"), follow);
+  const GpuView view =
+      buildLightViews(e.scene.lights, e.scene.bounds(), directionalFollow(e.settings, e.camera))
+          .views.at(0);
+  const CameraRays rays(e.camera, cpu.width, cpu.height);
+  // Margins of two shadow texels (the lookup moves 1.5 texels along the normal; the taps reach
+  // 1.5 more) and of the box's own edge.
+  const float margin = 2.0f * 2.0f / 256.0f;
+  int outside = 0, inside = 0, litInside = 0;
+  for (int y = 0; y < cpu.height; ++y)
+    for (int x = 0; x < cpu.width; ++x) {
+      const float d = depth.at(x, y, 0);
+      if (d <= 0.0f) continue;
+      const glm::vec4 clip =
+          view.clipFromWorld *
+          glm::vec4(rays.surfacePoint(float(x) + 0.5f, float(y) + 0.5f, d), 1.0f);
+      const float reach = std::max(std::abs(clip.x), std::abs(clip.y));
+      const float light = cpu.at(x, y, 0) + cpu.at(x, y, 1) + cpu.at(x, y, 2);
+      if (reach > 1.0f + 2.0f * margin) {
+        ++outside;
+        EXPECT_EQ(light, 0.0f) << "pixel " << x << ", " << y << " is outside the box";
+      } else if (reach < 1.0f - 2.0f * margin) {
+        ++inside;
+        litInside += light > 0.0f;
+      }
+    }
+  EXPECT_GT(outside, cpu.width * cpu.height / 10) << "the box leaves part of the view out";
+  EXPECT_GT(inside, cpu.width * cpu.height / 10);
+  EXPECT_GT(litInside, inside / 10) << "the sun lights the floor and walls inside the box";
+  std::cout << "[ direct ] sun view following the camera: " << outside
+            << " pixels outside its box (unlit), " << litInside << " of " << inside
+            << " inside it lit\n";
 }
 
 // A scene without emitters never renders the G-buffer's emission image (direct light reads zeros);

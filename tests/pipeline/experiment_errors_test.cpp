@@ -63,6 +63,30 @@ TEST_F(ExperimentErrors, UnsnappedCascadesThatCarryAreRefusedNamingBothKeys) {
   EXPECT_NO_THROW(loadExperiment(path, {"cascades.levels=1"}));
 }
 
+TEST_F(ExperimentErrors, AFollowingDirectionalViewNeedsItsWidthAndTheSceneViewTakesNone) {
+  const std::string unused = write("sun_scene.toml", "[light_maps]\ndirectional_width = 2.0\n");
+  std::string message = errorOf(unused);
+  EXPECT_TRUE(contains(message, unused + ":2")) << message;
+  EXPECT_TRUE(contains(message, "light_maps.directional_width")) << message;
+  EXPECT_TRUE(contains(message, "directional = \"camera\"")) << message;
+
+  const std::string missing = write("sun_camera.toml", "[light_maps]\ndirectional = \"camera\"\n");
+  message = errorOf(missing);
+  EXPECT_TRUE(contains(message, "light_maps.directional_width")) << message;
+
+  const std::string zero = write("sun_zero.toml",
+                                 "[light_maps]\ndirectional = \"camera\"\n"
+                                 "directional_width = 0.0\n");
+  message = errorOf(zero);
+  EXPECT_TRUE(contains(message, zero + ":3")) << message;
+  EXPECT_TRUE(contains(message, "directional_width")) << message;
+
+  const Experiment e = loadExperiment(
+      zero, {"light_maps.directional_width=3.5", "light_maps.directional_snap=false"});
+  EXPECT_FLOAT_EQ(e.settings.directional.followWidth, 3.5f);
+  EXPECT_FALSE(e.settings.directional.snap);
+}
+
 TEST_F(ExperimentErrors, UnknownKeyInAStrategyTableListsTheValidKeys) {
   const std::string path =
       write("typo.toml", "[propagation]\ntype = \"standard\"\niteratoins = 8\n");

@@ -78,54 +78,97 @@ public:
   Grid inject(const std::vector<std::string>& sources, int* firstOccluded = nullptr,
               bool skipFirst = true, double blockingScale = 1.0,
               ComputeBackend backend = ComputeBackend::Gl, Grid* albedo = nullptr) {
-    toml::table table;
-    toml::array list;
-    for (const std::string& source : sources) list.push_back(source);
-    table.insert("sources", list);
-    table.insert("skip_first_iteration", skipFirst);
-    table.insert("blocking_scale", blockingScale);
-    Params params(table, "occlusion test", "occlusion");
-    auto strategy = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
-    params.finish();
-    // The GV as the pipeline allocates it, from the strategy's own declaration (which fixes its
-    // first occluded iteration).
-    const std::map<std::string, ResourceAllocator> resources = resolveResources(
-        {{"occlusion test", declared(*strategy)}, {"a propagation", gvReader(albedo != nullptr)}});
-    EXPECT_EQ(resources.count(std::string(kGeometryVolume.name)), 1u);
-    // Nobody uses the albedo unless the propagation bounces.
-    EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), albedo ? 1u : 0u);
-    Requirements requirements;
-    requirements.resources = resources;
-    requirements.backend = backend;
-    strategy->prepare({.shaders = shaders_, .grid = grid_.geometry, .requirements = requirements});
-    ResourceTable levelResources;
-    for (const auto& [name, allocate] : resources)
-      levelResources.adopt(name, allocate({grid_.geometry, 1, backend}));
-    GeometryVolume& gv = *levelResources.find(kGeometryVolume);
-    gv.clear();
-    if (albedo) levelResources.find(kSurfaceAlbedo)->clear();
-    host_.newFrame();
-    Frame frame{.scene = scene_.get(), .camera = &experiment_.camera,
-                .gbuffer = gbufferPass_->gbuffer(), .lightMaps = lightMapsPass_->lightMaps(),
-                .lightGrid = grid_, .indirect = indirect_, .resources = &levelResources,
-                .host = &host_};
-    strategy->inject(frame);
-    glFinish();
-    checkGl("occlusion test");
-    if (firstOccluded) *firstOccluded = gv.firstOccludedIteration;
-    Grid blocking(std::size_t(gv.geometry.cellCount()) * 4);
-    gv.blocking.download(blocking.data(), blocking.size() * sizeof(float));
-    if (albedo) {
-      albedo->resize(std::size_t(gv.geometry.cellCount()) * 4);
-      levelResources.find(kSurfaceAlbedo)->albedo.download(albedo->data(), albedo->size() * sizeof(float));
-    }
-    return blocking;
+    Filling filling(*this, sources, skipFirst, blockingScale, false, backend, albedo != nullptr);
+    const GvFrame frame = filling.inject(experiment_.camera, 0);
+    if (firstOccluded) *firstOccluded = filling.gv().firstOccludedIteration;
+    if (albedo) *albedo = frame.albedo;
+    return frame.blocking;
+  }
+
+  // The GV and its albedo after each of a sequence of frames (a camera and the geometry's version
+  // each: Frame::geometryVersion), one strategy filling it frame after frame as the pipeline does
+  // (cleared, then injected), with or without `history`.
+  struct GvFrame {
+    Grid blocking, albedo;
+  };
+  std::vector<GvFrame> injectFrames(const std::vector<std::string>& sources,
+                                    const std::vector<std::pair<Camera, int>>& frames, bool history,
+                                    ComputeBackend backend = ComputeBackend::Gl) {
+    Filling filling(*this, sources, true, 1.0, history, backend, true);
+    std::vector<GvFrame> out;
+    for (const auto& [camera, version] : frames) out.push_back(filling.inject(camera, version));
+    gbufferPass_->render(*scene_, experiment_.camera);  // as the other tests expect it
+    return out;
   }
 
   const Experiment& experiment() const { return experiment_; }
   double cellSize() const { return grid_.geometry.cellSize; }
 
 private:
+  // One geometry_volume strategy, prepared once, with the level's resources as the pipeline
+  // allocates them from the strategy's own declaration (which fixes its first occluded iteration).
+  class Filling {
+  public:
+    Filling(GvScene& scene, const std::vector<std::string>& sources, bool skipFirst,
+            double blockingScale, bool history, ComputeBackend backend, bool withAlbedo)
+        : scene_(scene), withAlbedo_(withAlbedo) {
+      toml::table table;
+      toml::array list;
+      for (const std::string& source : sources) list.push_back(source);
+      table.insert("sources", list);
+      table.insert("skip_first_iteration", skipFirst);
+      table.insert("blocking_scale", blockingScale);
+      table.insert("history", history);
+      Params params(table, "occlusion test", "occlusion");
+      strategy_ = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
+      params.finish();
+      const std::map<std::string, ResourceAllocator> resources = resolveResources(
+          {{"occlusion test", declared(*strategy_)}, {"a propagation", gvReader(withAlbedo)}});
+      EXPECT_EQ(resources.count(std::string(kGeometryVolume.name)), 1u);
+      // Nobody uses the albedo unless the propagation bounces.
+      EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), withAlbedo ? 1u : 0u);
+      Requirements requirements;
+      requirements.resources = resources;
+      requirements.backend = backend;
+      strategy_->prepare({.shaders = scene.shaders_, .grid = scene.grid_.geometry,
+                          .requirements = requirements});
+      for (const auto& [name, allocate] : resources)
+        resources_.adopt(name, allocate({scene.grid_.geometry, 1, backend}));
+    }
+
+    GeometryVolume& gv() { return *resources_.find(kGeometryVolume); }
+
+    GvFrame inject(const Camera& camera, int geometryVersion) {
+      scene_.gbufferPass_->render(*scene_.scene_, camera);
+      gv().clear();
+      if (withAlbedo_) resources_.find(kSurfaceAlbedo)->clear();
+      scene_.host_.newFrame();
+      Frame frame{.scene = scene_.scene_.get(), .camera = &camera,
+                  .gbuffer = scene_.gbufferPass_->gbuffer(),
+                  .lightMaps = scene_.lightMapsPass_->lightMaps(), .lightGrid = scene_.grid_,
+                  .indirect = scene_.indirect_, .resources = &resources_, .host = &scene_.host_,
+                  .geometryVersion = geometryVersion};
+      strategy_->inject(frame);
+      glFinish();
+      checkGl("occlusion test");
+      GvFrame out;
+      out.blocking.resize(std::size_t(gv().geometry.cellCount()) * 4);
+      gv().blocking.download(out.blocking.data(), out.blocking.size() * sizeof(float));
+      if (withAlbedo_) {
+        out.albedo.resize(std::size_t(gv().geometry.cellCount()) * 4);
+        resources_.find(kSurfaceAlbedo)->albedo.download(out.albedo.data(),
+                                                         out.albedo.size() * sizeof(float));
+      }
+      return out;
+    }
+
+  private:
+    GvScene& scene_;
+    bool withAlbedo_;
+    std::unique_ptr<OcclusionStrategy> strategy_;
+    ResourceTable resources_;
+  };
+
   static Experiment load() {
     test::glTestContext();
     return loadExperiment("", {"output.width=128", "output.height=128",
@@ -275,6 +318,61 @@ TEST(Occlusion, CpuBackendFillsTheGvAndAlbedoOfTheGlKernels) {
     EXPECT_EQ(oneThread, cpu) << what;
     EXPECT_EQ(oneThreadAlbedo, cpuAlbedo) << what;
   }
+}
+
+// With `history` (thesis 4.3), each frame's GV is merged with the GV of the frames before by the
+// same rule as two sources: per cell the whole cell, and its albedo sums, of the larger c0. The
+// camera first looks into the box from outside, then from inside at the left wall; the second
+// frame keeps what the first saw and the second does not. When the geometry moves
+// (Frame::geometryVersion) the history starts anew. The CPU backend keeps the same history.
+TEST(Occlusion, AGvHistoryKeepsPerCellTheLargerC0OfTheFramesBeforeWithItsAlbedo) {
+  GvScene scene;
+  const Camera outside = scene.experiment().camera;
+  Camera inside = outside;
+  inside.position = {0.45f, 0.3f, 0.3f};
+  ASSERT_EQ(orientCamera(inside, {0.0f, 0.3f, 0.3f}, {0, 1, 0}), CameraOrientation::Oriented);
+  const std::vector<std::pair<Camera, int>> frames = {{outside, 0}, {inside, 0}, {inside, 1}};
+  const auto alone = scene.injectFrames({"camera"}, frames, false);
+  const auto kept = scene.injectFrames({"camera"}, frames, true);
+  const auto keptOnCpu = scene.injectFrames({"camera"}, frames, true, ComputeBackend::Cpu);
+  const std::size_t cells = alone[0].blocking.size() / 4;
+  double scale = 0.0;
+  for (const auto& frame : alone)
+    for (float v : frame.blocking) scale = std::max(scale, double(std::abs(v)));
+  const double tolerance = 1e-4 * scale;  // the atomics add in any order
+  ASSERT_GT(gvArea(alone[0].blocking), 0.5);
+  ASSERT_GT(gvArea(alone[1].blocking), 0.1);
+
+  // The first frame has no history; after the geometry moved, only the frame's own surfels.
+  EXPECT_LT(test::maxDifference(kept[0].blocking, alone[0].blocking), tolerance);
+  EXPECT_LT(test::maxDifference(kept[2].blocking, alone[2].blocking), tolerance);
+  EXPECT_LT(test::maxDifference(kept[2].albedo, alone[2].albedo),
+            1e-4 * test::maxAbs(alone[2].albedo));
+
+  int fromHistory = 0, fromFrame = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    const float before = alone[0].blocking[i], now = alone[1].blocking[i];
+    if (std::abs(before - now) <= tolerance) continue;  // too close to call
+    const auto& winner = before > now ? alone[0] : alone[1];
+    (before > now ? fromHistory : fromFrame)++;
+    for (int k = 0; k < 4; ++k) {
+      ASSERT_NEAR(kept[1].blocking[k * cells + i], winner.blocking[k * cells + i], tolerance)
+          << "cell " << i;
+      ASSERT_NEAR(kept[1].albedo[4 * i + k], winner.albedo[4 * i + k],
+                  1e-4 * test::maxAbs(winner.albedo))
+          << "cell " << i << ": the albedo sums come with the kept cell";
+    }
+  }
+  EXPECT_GT(fromHistory, 0) << "cells only the first frame saw keep blocking";
+  EXPECT_GT(fromFrame, 0);
+  EXPECT_GT(gvArea(kept[1].blocking), gvArea(alone[1].blocking));
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    EXPECT_LT(maxRelativeDifference(keptOnCpu[f].blocking, kept[f].blocking), 1e-4)
+        << "frame " << f;
+    EXPECT_LT(maxRelativeDifference(keptOnCpu[f].albedo, kept[f].albedo), 1e-4) << "frame " << f;
+  }
+  std::cout << "[ occlusion ] GV history, second frame: " << fromHistory
+            << " cells kept from the first, " << fromFrame << " from the frame's own surfels\n";
 }
 
 void expectSourcesError(const std::vector<std::string>& sources, const std::string& phrase) {

@@ -287,87 +287,158 @@ TEST(Sequence, ASequenceAtRestHasNoTemporalChange) {
   fs::remove_all(dir);
 }
 
-// A camera inside the box faces the back wall, which the finer cascade level covers, and moves
-// sideways by one pixel's footprint on the wall, less than a cell of that level: the wall's
-// pixels then reproject onto pixel centres, where the temporal change has no interpolation error.
-// Snapped levels do not move, so the light there does not change (up to float rounding);
-// unsnapped levels follow the camera, and it does (thesis 6.10: snapping "removes flickering when
-// the camera moves").
-TEST(Sequence, SnappedCascadesDoNotFlickerUnderASubCellCameraMoveAndUnsnappedOnesDo) {
-  const GlContext& context = test::glTestContext();
-  const fs::path dir = fs::temp_directory_path() / "lpvlab_sequence_snap";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  Camera box = makeCornellBox().cameras.front();
-  box.position = {0.278f, 0.45f, 0.25f};  // above the tall block, which stands at z = 0.25-0.46
-  const int size = 96;
-  const float wallDepth = 0.5592f - box.position.z;  // the back wall, seen head-on
-  const float footprint = 2.0f * wallDepth * std::tan(box.verticalFov / 2.0f) / float(size);
-  std::ostringstream file;
-  file.precision(9);
-  file << "[output]\nwidth = " << size << "\nheight = "
-       << size
-       // Coarse cells of 5 cm, the grid reaching 12 cm behind the wall; the finer level (2.5 cm
-       // cells, 30 cm wide) is centred 30 cm ahead of the eye, so the wall (at z = 0.56) is well
-       // inside it, past its band of blending with the coarse level, and it follows the eye.
-       << "\n[grid]\norigin = [-0.02, -0.02, -0.02]\ncell_size = 0.05\ncells = [12, 12, 14]\n"
-          "[cascades]\nlevels = 2\ncarry = false\nview_shift = 1.0\nblend_cells = 0.5\n"
-          "[occlusion]\ntype = \"none\"\n[timing]\nwarmup = 0\n"
-          "[animation]\nframes = 2\nfps = 1\nvideo = false\n[animation.camera]\n"
-          "interpolation = \"linear\"\n";
-  for (int frame = 0; frame < 2; ++frame) {
-    const float x = box.position.x + float(frame) * footprint;
-    file << "[[animation.camera.keys]]\nframe = " << frame << "\nposition = [" << x << ", "
-         << box.position.y << ", " << box.position.z << "]\nlook_at = [" << x << ", "
-         << box.position.y << ", 0.55]\n";
-  }
-  std::ofstream(dir / "e.toml") << file.str();
+// A camera inside the box, above the tall block, faces the back wall head-on and moves sideways
+// by one pixel's footprint on the wall: the wall's pixels then reproject onto pixel centres, where
+// the temporal change has no interpolation error. What follows the camera (finer cascade levels,
+// a directional light's view) may move with it, and then the light at rest changes.
+class SubPixelCameraMove {
+public:
+  static constexpr int kSize = 96;
 
-  std::map<bool, double> exactChange, recordedChange;
-  for (bool snap : {true, false}) {
-    Experiment e = loadExperiment((dir / "e.toml").string(),
-                                  {std::string("cascades.snap=") + (snap ? "true" : "false")});
+  // `settings`: the experiment's TOML before its [animation] table.
+  SubPixelCameraMove(const fs::path& dir, const std::string& settings) : dir_(dir) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    Camera box = makeCornellBox().cameras.front();
+    box.position = {0.278f, 0.45f, 0.25f};  // above the tall block, which stands at z = 0.25-0.46
+    const float wallDepth = 0.5592f - box.position.z;  // the back wall, seen head-on
+    footprint_ = 2.0f * wallDepth * std::tan(box.verticalFov / 2.0f) / float(kSize);
+    std::ostringstream file;
+    file.precision(9);
+    file << "[output]\nwidth = " << kSize << "\nheight = " << kSize << "\n"
+         << settings
+         << "[timing]\nwarmup = 0\n[animation]\nframes = 2\nfps = 1\nvideo = false\n"
+            "[animation.camera]\ninterpolation = \"linear\"\n";
+    for (int frame = 0; frame < 2; ++frame) {
+      const float x = box.position.x + float(frame) * footprint_;
+      file << "[[animation.camera.keys]]\nframe = " << frame << "\nposition = [" << x << ", "
+           << box.position.y << ", " << box.position.z << "]\nlook_at = [" << x << ", "
+           << box.position.y << ", 0.55]\n";
+    }
+    std::ofstream(dir / "e.toml") << file.str();
+  }
+  ~SubPixelCameraMove() { fs::remove_all(dir_); }
+
+  float footprint() const { return footprint_; }
+  Experiment load(const std::string& override) const {
+    return loadExperiment((dir_ / "e.toml").string(), {override});
+  }
+
+  // The relative change of the indirect light from frame 0 to 1: on the pixels that reproject
+  // onto pixel centres, and as the manifest records it (every reprojected pixel).
+  struct Change {
+    double onCentres = 0.0;
+    double recorded = 0.0;
+    double lighting = 0.0;  // the recorded change of the indirect light over the albedo
+  };
+  Change run(Experiment& e, const GlContext& context, const std::string& name) const {
+    const fs::path run = dir_ / name;
+    const nlohmann::json manifest = runExperiment(e, context, run.string());
+    const auto frame0 = readExr((run / (frameStem(0, 2) + ".exr")).string());
+    const auto frame1 = readExr((run / (frameStem(1, 2) + ".exr")).string());
     const Camera before = cameraAt(e.animation, 0.0, e.camera);
     const Camera after = cameraAt(e.animation, 1.0, e.camera);
+    const Reprojection reprojection =
+        reprojectThroughDepth({after, findAov(frame1, "depth"), findAov(frame1, "normal")},
+                              {before, findAov(frame0, "depth"), findAov(frame0, "normal")});
+    Image onCentres(kSize, kSize, 1);
+    int count = 0;
+    for (std::size_t p = 0; p < reprojection.taps.size(); ++p)
+      count += (onCentres.pixels[p] = reprojection.taps[p].count == 1);
+    EXPECT_GT(count, kSize * kSize / 8) << "the back wall's pixels reproject onto pixel centres";
+    const nlohmann::json& t = manifest["sequence"]["frame_records"][1]["temporal"];
+    EXPECT_TRUE(t["at_rest"].get<bool>());
+    return {*frameToFrameChange(findAov(frame1, "indirect"), findAov(frame0, "indirect"),
+                                reprojection, &onCentres)
+                 .relative,
+            t["change"]["indirect"]["relative"].get<double>(),
+            t["change"]["indirect_lighting"]["relative"].get<double>()};
+  }
+
+private:
+  fs::path dir_;
+  float footprint_ = 0.0f;
+};
+
+// Checks that what snaps stays put (zero change, up to float rounding: the same world point is
+// rebuilt from another pixel's depth, and a position within 1/1000 pixel of a centre counts as
+// on it) and what follows every move flickers.
+void expectSnappingRemovesTheFlicker(const std::map<bool, SubPixelCameraMove::Change>& change,
+                                     const std::string& what) {
+  EXPECT_LT(change.at(true).onCentres, 1e-4);
+  EXPECT_GT(change.at(false).onCentres, 20.0 * change.at(true).onCentres);
+  // Over every reprojected pixel (interpolation included), the unsnapped one flickers more, in
+  // the output and in its lighting (the box's albedo is constant per wall, so the two differ only
+  // at the walls' edges).
+  EXPECT_GT(change.at(false).recorded, change.at(true).recorded);
+  EXPECT_GT(change.at(false).lighting, 20.0 * change.at(true).lighting);
+  std::cout << "[ sequence ] " << what << ": relative change of the indirect light at rest, "
+            << "snapped " << change.at(true).recorded << ", unsnapped " << change.at(false).recorded
+            << "; on the pixels reprojected onto pixel centres, snapped "
+            << change.at(true).onCentres << ", unsnapped " << change.at(false).onCentres << "\n";
+}
+
+// The finer cascade level covers the back wall and the move is less than a cell of it: snapped
+// levels do not move, unsnapped levels follow the camera (thesis 6.10: snapping "removes
+// flickering when the camera moves").
+TEST(Sequence, SnappedCascadesDoNotFlickerUnderASubCellCameraMoveAndUnsnappedOnesDo) {
+  const GlContext& context = test::glTestContext();
+  // Coarse cells of 5 cm, the grid reaching 12 cm behind the wall; the finer level (2.5 cm cells,
+  // 30 cm wide) is centred 30 cm ahead of the eye, so the wall (at z = 0.56) is well inside it,
+  // past its band of blending with the coarse level, and it follows the eye.
+  const SubPixelCameraMove move(
+      fs::temp_directory_path() / "lpvlab_sequence_snap",
+      "[grid]\norigin = [-0.02, -0.02, -0.02]\ncell_size = 0.05\ncells = [12, 12, 14]\n"
+      "[cascades]\nlevels = 2\ncarry = false\nview_shift = 1.0\nblend_cells = 0.5\n"
+      "[occlusion]\ntype = \"none\"\n");
+  std::map<bool, SubPixelCameraMove::Change> change;
+  for (bool snap : {true, false}) {
+    Experiment e = move.load(std::string("cascades.snap=") + (snap ? "true" : "false"));
     const auto levelsAt = [&](const Camera& c) {
       return placeCascadeLevels(e.settings.grid, 2, c.position, c.forward,
                                 e.settings.cascades.viewShift, snap);
     };
+    const Camera before = cameraAt(e.animation, 0.0, e.camera);
+    const Camera after = cameraAt(e.animation, 1.0, e.camera);
     // What the test is about: the move stays within a cell of the finest level, so snapping
     // keeps it in place, and without snapping it moves.
     ASSERT_EQ(levelsAt(before)[0].origin == levelsAt(after)[0].origin, snap);
-    ASSERT_LT(footprint, levelsAt(before)[0].cellSize);
-
-    const fs::path run = dir / (snap ? "snapped" : "unsnapped");
-    const nlohmann::json manifest = runExperiment(e, context, run.string());
-    const auto frame0 = readExr((run / (frameStem(0, 2) + ".exr")).string());
-    const auto frame1 = readExr((run / (frameStem(1, 2) + ".exr")).string());
-    const Reprojection reprojection =
-        reprojectThroughDepth({after, findAov(frame1, "depth"), findAov(frame1, "normal")},
-                              {before, findAov(frame0, "depth"), findAov(frame0, "normal")});
-    Image onCentres(size, size, 1);
-    int count = 0;
-    for (std::size_t p = 0; p < reprojection.taps.size(); ++p)
-      count += (onCentres.pixels[p] = reprojection.taps[p].count == 1);
-    ASSERT_GT(count, size * size / 8) << "the back wall's pixels reproject onto pixel centres";
-    exactChange[snap] = *frameToFrameChange(findAov(frame1, "indirect"),
-                                            findAov(frame0, "indirect"), reprojection, &onCentres)
-                             .relative;
-    const nlohmann::json& t = manifest["sequence"]["frame_records"][1]["temporal"];
-    EXPECT_TRUE(t["at_rest"].get<bool>());
-    recordedChange[snap] = t["change"]["indirect"]["relative"].get<double>();
+    ASSERT_LT(move.footprint(), levelsAt(before)[0].cellSize);
+    change[snap] = move.run(e, context, snap ? "snapped" : "unsnapped");
   }
-  // Zero up to float rounding: the same world point is rebuilt from another pixel's depth, and
-  // a position within 1/1000 pixel of a centre counts as on it.
-  EXPECT_LT(exactChange[true], 1e-4);
-  EXPECT_GT(exactChange[false], 20.0 * exactChange[true]);
-  // Over every reprojected pixel (interpolation included), the unsnapped levels flicker more.
-  EXPECT_GT(recordedChange[false], recordedChange[true]);
-  std::cout << "[ sequence ] relative change of the indirect light at rest, snapped "
-            << recordedChange[true] << ", unsnapped " << recordedChange[false]
-            << "; on the pixels reprojected onto pixel centres, snapped " << exactChange[true]
-            << ", unsnapped " << exactChange[false] << "\n";
-  fs::remove_all(dir);
+  expectSnappingRemovesTheFlicker(change, "cascades");
+}
+
+// A sun shining in through the box's open front, its view a 40 cm box following the camera
+// (thesis 6.2's shadow camera): snapped to whole texels, a sub-texel move leaves it in place;
+// unsnapped it follows, the RSM and shadow map are resampled, and the light at rest changes.
+TEST(Sequence,
+     ASnappedFollowingSunViewDoesNotFlickerUnderASubTexelCameraMoveAndAnUnsnappedOneDoes) {
+  const GlContext& context = test::glTestContext();
+  const SubPixelCameraMove move(
+      fs::temp_directory_path() / "lpvlab_sequence_sun_snap",
+      "[scene]\nreplace_lights = true\n[[lights]]\ntype = \"directional\"\n"
+      "direction = [0.25, -0.4, 1.0]\nintensity = 20.0\n"
+      "[light_maps]\nrsm_resolution = 64\nshadow_resolution = 256\ndirectional = \"camera\"\n"
+      "directional_width = 0.4\n[grid]\nresolution = 16\n[occlusion]\ntype = \"none\"\n");
+  std::map<bool, SubPixelCameraMove::Change> change;
+  for (bool snap : {true, false}) {
+    Experiment e =
+        move.load(std::string("light_maps.directional_snap=") + (snap ? "true" : "false"));
+    const auto viewAt = [&](const Camera& c) {
+      const LightViews views =
+          buildLightViews(e.scene.lights, e.scene.bounds(), directionalFollow(e.settings, c));
+      return views.views.at(0).clipFromWorld;
+    };
+    // What the test is about: the move is less than a texel, so snapping keeps the view in
+    // place, and without snapping it moves.
+    ASSERT_EQ(viewAt(cameraAt(e.animation, 0.0, e.camera)) ==
+                  viewAt(cameraAt(e.animation, 1.0, e.camera)),
+              snap);
+    ASSERT_LT(move.footprint(), e.settings.directional.followWidth / 64.0f);
+    change[snap] = move.run(e, context, snap ? "snapped" : "unsnapped");
+  }
+  expectSnappingRemovesTheFlicker(change, "sun view following the camera");
 }
 
 TEST(Sequence, AnInterruptedSequenceResumesAtItsFirstMissingFrameAndMakesTheVideo) {
@@ -442,6 +513,54 @@ look_at = [0.3, 0.25, 0.3]
   Experiment changed = loadExperiment(file.string(), {"propagation.iterations=7"});
   const std::string message = test::errorOf([&] { runExperiment(changed, context, run.string()); });
   EXPECT_NE(message.find("a frame of another configuration"), std::string::npos) << message;
+  fs::remove_all(dir);
+}
+
+// A GV history (geometry_volume's `history`) makes each frame depend on the frames before: a
+// resumed sequence renders those again, unwritten, and its frames are the uninterrupted run's.
+// The camera turns inside the box, so the history holds surfaces the later frames no longer see,
+// and its frames differ from those without it (else this would test nothing).
+TEST(Sequence, AResumedSequenceWithAGvHistoryRendersTheUninterruptedFrames) {
+  const GlContext& context = test::glTestContext();
+  const fs::path dir = fs::temp_directory_path() / "lpvlab_sequence_history";
+  fs::remove_all(dir);
+  const fs::path file = writeExperiment(dir, R"(
+[occlusion]
+type = "geometry_volume"
+sources = ["camera"]
+history = true
+[animation]
+frames = 4
+fps = 4
+video = false
+[animation.camera]
+[[animation.camera.keys]]
+frame = 0
+position = [0.45, 0.3, 0.25]
+look_at = [0.0, 0.25, 0.35]
+[[animation.camera.keys]]
+frame = 3
+position = [0.3, 0.3, 0.2]
+look_at = [0.5, 0.25, 0.56]
+)");
+  const fs::path run = dir / "run";
+  Experiment whole = loadExperiment(file.string());
+  runExperiment(whole, context, run.string());
+  const auto frame3 = readExr((run / (frameStem(3, 4) + ".exr")).string());
+  Experiment without = loadExperiment(file.string(), {"occlusion.history=false"});
+  runExperiment(without, context, (dir / "without").string());
+  EXPECT_GT(largestDifference(readExr((dir / "without" / (frameStem(3, 4) + ".exr")).string()),
+                              frame3),
+            0.0f)
+      << "the history changes what the last frame's GV blocks";
+
+  // As a kill after frame 1 leaves it.
+  for (int f : {2, 3}) fs::remove(run / (frameStem(f, 4) + ".json"));
+  fs::remove(run / "manifest.json");
+  Experiment again = loadExperiment(file.string());
+  const nlohmann::json manifest = runExperiment(again, context, run.string());
+  EXPECT_EQ(manifest["sequence"]["resumed_at_frame"].get<int>(), 2);
+  EXPECT_EQ(largestDifference(readExr((run / (frameStem(3, 4) + ".exr")).string()), frame3), 0.0f);
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 #include "scene/scene_test_support.h"
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <map>
@@ -116,6 +117,33 @@ int GltfWriter::addImage(const std::string& bytes, const std::string& mimeType) 
   const int view = addView(bytes.data(), bytes.size());
   json["images"].push_back({{"bufferView", view}, {"mimeType", mimeType}});
   return static_cast<int>(json["images"].size()) - 1;
+}
+
+void GltfWriter::addAnimationChannel(const std::string& animation, int node,
+                                     const std::string& path, const std::vector<float>& times,
+                                     const std::vector<float>& values,
+                                     const std::string& interpolation) {
+  constexpr int kFloat = 5126;
+  if (!json.contains("animations")) json["animations"] = nlohmann::json::array();
+  nlohmann::json* clip = nullptr;
+  for (nlohmann::json& a : json["animations"])
+    if (a["name"] == animation) clip = &a;
+  if (!clip) {
+    json["animations"].push_back({{"name", animation},
+                                  {"channels", nlohmann::json::array()},
+                                  {"samplers", nlohmann::json::array()}});
+    clip = &json["animations"].back();
+  }
+  const int input = addAccessor(times.data(), times.size(), kFloat, "SCALAR", sizeof(float));
+  json["accessors"][input]["min"] = {*std::min_element(times.begin(), times.end())};  // required
+  json["accessors"][input]["max"] = {*std::max_element(times.begin(), times.end())};
+  const std::size_t width = path == "rotation" ? 4 : 3;
+  const int output = addAccessor(values.data(), values.size() / width, kFloat,
+                                 width == 4 ? "VEC4" : "VEC3", width * sizeof(float));
+  (*clip)["samplers"].push_back(
+      {{"input", input}, {"output", output}, {"interpolation", interpolation}});
+  (*clip)["channels"].push_back({{"sampler", (*clip)["samplers"].size() - 1},
+                                 {"target", {{"node", node}, {"path", path}}}});
 }
 
 void GltfWriter::writeGltf(const std::string& path) const {

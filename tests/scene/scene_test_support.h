@@ -57,6 +57,12 @@ public:
   nlohmann::json json;  // add nodes, materials, cameras, extensions... directly
   int addMesh(const Primitive& primitive);                       // index into "meshes"
   int addImage(const std::string& bytes, const std::string& mimeType);  // embedded in the buffer
+  // A channel of animation `animation` (created on first use, by name): `node`'s `path`
+  // ("translation", "rotation" (x, y, z, w) or "scale") keyed at `times` (seconds) with `values`
+  // (3 or 4 floats per key; 3 times that for "CUBICSPLINE": in-tangent, value, out-tangent).
+  void addAnimationChannel(const std::string& animation, int node, const std::string& path,
+                           const std::vector<float>& times, const std::vector<float>& values,
+                           const std::string& interpolation = "LINEAR");
   void writeGltf(const std::string& path) const;  // and <stem>.bin beside it
   void writeGlb(const std::string& path) const;
 

@@ -13,6 +13,12 @@
 // a weighted mean, not a sum, so both sources add to the one albedo buffer without merging.
 // docs/variants.md#geometry_volume has the mathematics. On the CPU backend the same surfels are
 // summed per cell without atomics (geometry_volume_cpu.h).
+// With `history`, the GV of the frames before is kept and merged into each frame's by the same
+// rule, with its albedo: "for static scenes the GV need not be built anew each frame; the GV of
+// previous frames can be used and the new RSMs' information added" (thesis 4.3). Surfaces the
+// camera or a light saw once keep blocking after they leave the view. A level's history starts
+// anew when its GV moves (a cascade level following the camera to other cells) or the scene's
+// geometry moves (Frame::geometryVersion); lights may move, since the GV holds only surfaces.
 //
 // | parameter            | type     | default             | meaning                              |
 // |----------------------|----------|---------------------|--------------------------------------|
@@ -27,6 +33,9 @@
 // |                      |          |                     | fit (docs/fitting.md): the GV is     |
 // |                      |          |                     | linear in it; the transmittance      |
 // |                      |          |                     | clamp(1 - B, 0, 1) only where B < 1  |
+// | history              | bool     | false               | merge in the GV of the frames before |
+// |                      |          |                     | while the geometry and the GV's      |
+// |                      |          |                     | placement stay put (thesis 4.3)      |
 
 #include <algorithm>
 #include <cmath>
@@ -63,9 +72,9 @@ class GeometryVolumeOcclusion final : public OcclusionStrategy {
 public:
   explicit GeometryVolumeOcclusion(Params& params)
       : skipFirstIteration_(params.get<bool>("skip_first_iteration", true)),
-        blockingScale_(params.get<float>("blocking_scale", 1.0f, {.min = 0.0f, .max = 100.0f})) {
-    const auto sources =
-        params.get<std::vector<std::string>>("sources", {"light", "camera"});
+        blockingScale_(params.get<float>("blocking_scale", 1.0f, {.min = 0.0f, .max = 100.0f})),
+        keepHistory_(params.get<bool>("history", false)) {
+    const auto sources = params.get<std::vector<std::string>>("sources", {"light", "camera"});
     for (const std::string& source : sources) {
       if (source != "light" && source != "camera")
         throw Error(params.where("sources") + ": unknown source '" + source +
@@ -84,6 +93,7 @@ public:
     uses.produces(kSurfaceAlbedo);
   }
   int maxShOrder() const override { return 3; }  // the GV is order 1 whatever the light grid's
+  bool keepsStateBetweenFrames() const override { return keepHistory_; }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   // Per surfel (a covered G-buffer pixel or RSM texel): its position, normal and albedo source
@@ -97,7 +107,15 @@ public:
     const double bytes = 3 * 16 + (runsOnCpu(requirements) ? 2 * (4 + 8) : 2 * 4 * sums);
     const double surfels =
         ((fromLight_ ? shape.rsmTexels : 0.0) + (fromCamera_ ? shape.pixels : 0.0)) * shape.levels;
-    return {{"surfel", surfels, 20 + sums, bytes}};
+    std::vector<WorkCount> counts = {{"surfel", surfels, 20 + sums, bytes}};
+    // The history's merge and copy: per GV cell (about a light-grid cell), the frame's and the
+    // history's 4 coefficients (and albedo sums) read, one compare, the kept cell written to both
+    // (4 B each).
+    if (keepHistory_) {
+      const double floats = requirements.has(kSurfaceAlbedo) ? 8.0 : 4.0;
+      counts.push_back({"history-cell", shape.cells * shape.levels, 1, 4 * floats * 4});
+    }
+    return counts;
   }
 
   void prepare(const StrategySetup& setup) override {
@@ -107,6 +125,7 @@ public:
     withAlbedo_ = setup.requirements.has(kSurfaceAlbedo);
     if (!active_) return;
     onCpu_ = runsOnCpu(setup.requirements);
+    if (keepHistory_) prepareHistories(setup);
     if (onCpu_) {  // the host copies, allocated once (each frame refills them)
       const std::size_t gvCells = std::size_t(GeometryVolume::placementFor(grid).cellCount());
       hostBlocking_.assign(gvCells * GeometryVolume::kCoefficients, 0.0f);
@@ -117,6 +136,8 @@ public:
     const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
     if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
     if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);
+    if (keepHistory_)
+      mergeHistory_ = shaders.compute("occlusion/gv_merge.comp", {SpecConstant::b(0, withAlbedo_)});
     if (fromCamera_ && fromLight_) {
       merge_ = shaders.compute("occlusion/gv_merge.comp");
       const GridGeometry gv = GeometryVolume::placementFor(grid);
@@ -137,14 +158,17 @@ public:
       lightScratch_.zero();
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       injectLightViews(frame, lightScratch_);
-      using namespace merge_kernel;
-      merge_.use();
-      gv.blocking.bindStorage(BUFFER_TARGET);
-      lightScratch_.bindStorage(BUFFER_OTHER);
-      const int cells = gv.geometry.cellCount();
-      glUniform1i(LOCATION_CELLS, cells);
-      dispatchCovering({cells, 1, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                       GL_SHADER_STORAGE_BARRIER_BIT);
+      mergeOnGl(merge_, gv.blocking, lightScratch_, nullptr, nullptr);
+    }
+    if (keepHistory_) {
+      History& history = historyOf(frame);
+      SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
+      if (history.valid)
+        mergeOnGl(mergeHistory_, gv.blocking, history.blocking, albedo ? &albedo->albedo : nullptr,
+                  &history.albedo);
+      history.blocking.copyFrom(gv.blocking);
+      if (albedo) history.albedo.copyFrom(albedo->albedo);
+      history.valid = true;
     }
   }
 
@@ -164,10 +188,69 @@ public:
   }
 
   std::size_t memoryBytes() const override {
-    return lightScratch_.size() + (hostBlocking_.size() + hostLight_.size() + hostAlbedo_.size()) * sizeof(float);
+    std::size_t bytes =
+        lightScratch_.size() +
+        (hostBlocking_.size() + hostLight_.size() + hostAlbedo_.size()) * sizeof(float);
+    for (const History& history : histories_)
+      bytes += history.blocking.size() + history.albedo.size() +
+               (history.hostBlocking.capacity() + history.hostAlbedo.capacity()) * sizeof(float);
+    return bytes;
   }
 
 private:
+  // A level's GV of the frames before (with its albedo sums when they are used), on the side the
+  // strategy runs; `valid` once a frame filled it, until the GV or the geometry moves.
+  struct History {
+    bool valid = false;
+    GridGeometry placement;
+    int geometryVersion = 0;
+    gl::Buffer blocking, albedo;
+    std::vector<float> hostBlocking, hostAlbedo;
+  };
+
+  void prepareHistories(const StrategySetup& setup) {
+    const GridGeometry gv = GeometryVolume::placementFor(setup.grid);
+    const std::size_t cells = std::size_t(gv.cellCount());
+    histories_.resize(std::size_t(setup.requirements.cascadeLevels));
+    if (onCpu_) return;  // the host vectors take each frame's size when first kept
+    for (History& history : histories_) {
+      history.blocking = gl::Buffer(cells * GeometryVolume::kCoefficients * sizeof(float),
+                                    "geometry volume history");
+      if (withAlbedo_) history.albedo = gl::Buffer(cells * 4 * sizeof(float), "GV albedo history");
+    }
+  }
+
+  // The frame's level's history, emptied first when the GV or the geometry moved since it was kept.
+  History& historyOf(const Frame& frame) {
+    History& history = histories_.at(std::size_t(frame.level));
+    const GridGeometry& placement = frame.get(kGeometryVolume).geometry;
+    if (history.valid && (placement.origin != history.placement.origin ||
+                          placement.cellSize != history.placement.cellSize ||
+                          placement.resolution != history.placement.resolution ||
+                          frame.geometryVersion != history.geometryVersion))
+      history.valid = false;
+    history.placement = placement;
+    history.geometryVersion = frame.geometryVersion;
+    return history;
+  }
+
+  // gv_merge.comp: `other` into `target` by the larger c0 (with the albedo buffers when given).
+  static void mergeOnGl(const Program& program, const gl::Buffer& target, const gl::Buffer& other,
+                        const gl::Buffer* targetAlbedo, const gl::Buffer* otherAlbedo) {
+    using namespace merge_kernel;
+    program.use();
+    target.bindStorage(BUFFER_TARGET);
+    other.bindStorage(BUFFER_OTHER);
+    if (targetAlbedo && otherAlbedo) {
+      targetAlbedo->bindStorage(BUFFER_TARGET_ALBEDO);
+      otherAlbedo->bindStorage(BUFFER_OTHER_ALBEDO);
+    }
+    const int cells = int(target.size() / (GeometryVolume::kCoefficients * sizeof(float)));
+    glUniform1i(LOCATION_CELLS, cells);
+    dispatchCovering({cells, 1, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
   // What both injection kernels read first (gv_surfel_interface.glsl): the GV's placement, the
   // blocking scale, the surfels' positions, normals and what gives their albedo, the GV they add
   // to and, when it is used, the GV's albedo.
@@ -212,6 +295,16 @@ private:
     GeometryVolume& gv = frame.get(kGeometryVolume);
     SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
     buildOnCpu(frame, blockingScale_, hostBlocking_, albedo ? &hostAlbedo_ : nullptr);
+    if (keepHistory_) {
+      History& history = historyOf(frame);
+      if (history.valid)
+        mergeGeometryVolumesCpu(hostBlocking_.data(), history.hostBlocking.data(),
+                                gv.geometry.cellCount(), albedo ? hostAlbedo_.data() : nullptr,
+                                albedo ? history.hostAlbedo.data() : nullptr);
+      history.hostBlocking = hostBlocking_;
+      if (albedo) history.hostAlbedo = hostAlbedo_;
+      history.valid = true;
+    }
     uploadFloats(hostBlocking_, gv.blocking);
     if (albedo) uploadFloats(hostAlbedo_, albedo->albedo);
   }
@@ -266,6 +359,9 @@ private:
 
   bool skipFirstIteration_;
   float blockingScale_;
+  bool keepHistory_;
+  std::vector<History> histories_;  // per cascade level, with `history`
+  Program mergeHistory_;
   bool fromLight_ = false, fromCamera_ = false;
   bool active_ = false;
   bool withAlbedo_ = false;

@@ -124,10 +124,14 @@ void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvT
       target);
 }
 
-void mergeGeometryVolumesCpu(float* first, const float* other, int cells) {
+void mergeGeometryVolumesCpu(float* first, const float* other, int cells, float* firstAlbedo,
+                             const float* otherAlbedo) {
   for (std::size_t i = 0; i < std::size_t(cells); ++i)
-    if (shared::gvMergeTakesOther(first[i], other[i]))
+    if (shared::gvMergeTakesOther(first[i], other[i])) {
       for (std::size_t k = 0; k < 4; ++k) first[k * cells + i] = other[k * cells + i];
+      if (firstAlbedo && otherAlbedo)
+        for (std::size_t k = 0; k < 4; ++k) firstAlbedo[4 * i + k] = otherAlbedo[4 * i + k];
+    }
 }
 
 }  // namespace lpvlab

@@ -38,7 +38,10 @@ void addCameraSurfelsCpu(const GBufferImages& gbuffer, const glm::vec3& cameraPo
 // of different sizes or a layer without its view.
 void addRsmSurfelsCpu(const RsmImages& rsm, const LightViews& records, const GvTarget& target);
 
-// Merging two sources' GVs by the larger coefficients (gvMergeTakesOther): into `first`.
-void mergeGeometryVolumesCpu(float* first, const float* other, int cells);
+// Merging two sources' GVs by the larger coefficients (gvMergeTakesOther): into `first`. With
+// albedo buffers (4 floats per cell), a cell taken from `other` takes its albedo sums too (the GV
+// of the frames before, merged into a frame's; gv_merge.comp's WITH_ALBEDO).
+void mergeGeometryVolumesCpu(float* first, const float* other, int cells,
+                             float* firstAlbedo = nullptr, const float* otherAlbedo = nullptr);
 
 }  // namespace lpvlab
