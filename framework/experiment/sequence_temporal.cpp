@@ -21,12 +21,6 @@ std::string varianceName(const std::string& aov) { return aov + "_variance"; }
 constexpr float kMinimumAlbedo = 0.02f;
 const char* const kLightingSuffix = "_lighting";
 
-const Image* findOptional(const std::vector<NamedImage>& aovs, const std::string& name) {
-  for (const NamedImage& aov : aovs)
-    if (aov.name == name) return &aov.image;
-  return nullptr;
-}
-
 // Both frames' lighting (an output over its albedo AOV): the images, the current pixels it
 // leaves in and the reprojection without taps onto previous pixels it leaves out.
 struct Lighting {
@@ -117,8 +111,8 @@ nlohmann::json temporalRecord(const FrameState& now, const FrameState& before,
 
     // The lighting's error: each side over its own albedo (the path tracer's first-hit albedo),
     // the references' variances over its square; pixels either side leaves out are left out.
-    const Image* refAlbedoNow = findOptional(refNow, "albedo");
-    const Image* refAlbedoBefore = findOptional(refBefore, "albedo");
+    const Image* refAlbedoNow = findAovOrNull(refNow, "albedo");
+    const Image* refAlbedoBefore = findAovOrNull(refBefore, "albedo");
     if (!refAlbedoNow || !refAlbedoBefore) continue;
     const Lighting refLighting(references.now, *refAlbedoNow, references.before, *refAlbedoBefore);
     std::optional<Lighting> refVariance;

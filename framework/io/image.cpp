@@ -156,12 +156,16 @@ float middleGreyExposure(const Image& rgb) {
   return std::log2(0.18f / *middle);
 }
 
+const Image* findAovOrNull(const std::vector<NamedImage>& aovs, const std::string& name) {
+  for (const NamedImage& aov : aovs)
+    if (aov.name == name) return &aov.image;
+  return nullptr;
+}
+
 const Image& findAov(const std::vector<NamedImage>& aovs, const std::string& name) {
+  if (const Image* found = findAovOrNull(aovs, name)) return *found;
   std::string names;
-  for (const NamedImage& aov : aovs) {
-    if (aov.name == name) return aov.image;
-    names += (names.empty() ? "" : ", ") + aov.name;
-  }
+  for (const NamedImage& aov : aovs) names += (names.empty() ? "" : ", ") + aov.name;
   throw Error("no output named '" + name + "' (there are: " + names + ")");
 }
 

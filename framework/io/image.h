@@ -32,6 +32,8 @@ struct NamedImage {
 
 // The AOV called `name`; throws an Error listing the names there are when it is missing.
 const Image& findAov(const std::vector<NamedImage>& aovs, const std::string& name);
+// The AOV called `name`, or null when there is none.
+const Image* findAovOrNull(const std::vector<NamedImage>& aovs, const std::string& name);
 
 // Writes all AOVs (same size) into one multi-channel float EXR; `metadata` key/values become
 // string attributes in the header (e.g. the run's configuration hash).

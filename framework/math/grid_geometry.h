@@ -13,6 +13,7 @@ struct GridGeometry {
   glm::ivec3 resolution{1}; // cells along x, y, z
 
   int cellCount() const { return resolution.x * resolution.y * resolution.z; }
+  bool operator==(const GridGeometry&) const = default;
   glm::vec3 extent() const { return glm::vec3(resolution) * cellSize; }
 
   // Cubic cells fitted to `bounds`: `cellsAlongLongestAxis` cells span the longest axis of the

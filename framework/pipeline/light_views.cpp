@@ -37,13 +37,18 @@ void checkLight(const Light& light) {
     throwAt(where, "cone angles must satisfy 0 <= inner <= outer <= pi/2 and outer > 0");
 }
 
+// The up vector of a light's orthographic view (glm::lookAt's), for any direction but straight up
+// or down, where it takes x.
+glm::vec3 lightViewUp(const glm::vec3& direction) {
+  return std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+}
+
 // The orthographic view of a light shining along `direction` (unit): a box `halfWidth` each side
 // of `centre` across the light, and 1.5 `sceneRadius` each side of it along the light (the scene's
 // bounding sphere, when `centre` is level with the sphere's centre along the light, well inside).
 GpuView orthographicView(const glm::vec3& direction, const glm::vec3& centre, float halfWidth,
                          float sceneRadius, int lightIndex) {
-  const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * sceneRadius, centre, up);
+  const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * sceneRadius, centre, lightViewUp(direction));
   const glm::mat4 clipFromView = glm::ortho(-halfWidth, halfWidth, -halfWidth, halfWidth,
                                             0.5f * sceneRadius, 3.5f * sceneRadius);
   return {clipFromView * viewFromWorld, glm::vec4(1.0f, 2.0f * halfWidth, float(lightIndex), 0)};
@@ -54,8 +59,7 @@ GpuView orthographicView(const glm::vec3& direction, const glm::vec3& centre, fl
 // light, so that the box's depth range holds the scene's bounding sphere.
 glm::vec3 followedCentre(const glm::vec3& direction, const DirectionalFollow& follow,
                          const glm::vec3& sceneCentre) {
-  const glm::vec3 up = std::abs(direction.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  const glm::vec3 right = glm::normalize(glm::cross(direction, up));
+  const glm::vec3 right = glm::normalize(glm::cross(direction, lightViewUp(direction)));
   const glm::vec3 imageUp = glm::cross(right, direction);
   // Coordinates in double: a camera kilometres from the origin still snaps to millimetre steps.
   auto snapped = [&](const glm::vec3& axis) {
@@ -107,12 +111,8 @@ LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bound
     } else {
       // The near plane scales with the scene; far reaches the farthest corner of the bounds.
       float farthest = 0.0f;
-      for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
-                          (corner & 2) ? bounds.max.y : bounds.min.y,
-                          (corner & 4) ? bounds.max.z : bounds.min.z);
-        farthest = std::max(farthest, glm::length(p - light.position));
-      }
+      for (int corner = 0; corner < 8; ++corner)
+        farthest = std::max(farthest, glm::length(bounds.corner(corner) - light.position));
       const float nearPlane = std::max(1e-4f, 1e-4f * diagonal);
       const float farPlane = std::max(farthest * 1.01f, 2.0f * nearPlane);
       const glm::mat4 clipFromView = glm::perspective(0.5f * float(M_PI), 1.0f, nearPlane, farPlane);

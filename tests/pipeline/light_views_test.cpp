@@ -107,9 +107,7 @@ TEST(DirectionalViews, AFollowedViewHoldsItsPointAndTheSceneAlongTheLight) {
       EXPECT_NEAR(centre.x, 1.0, halfStep / kHalfWidth + 1e-5);
       EXPECT_NEAR(centre.y, 1.0, halfStep / kHalfWidth + 1e-5);
       for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? kScene.max.x : kScene.min.x,
-                          (corner & 2) ? kScene.max.y : kScene.min.y,
-                          (corner & 4) ? kScene.max.z : kScene.min.z);
+        const glm::vec3 p = kScene.corner(corner);
         const double depth = texelCoordinates(views[i], p, 2).z;
         EXPECT_GT(depth, -1.0);
         EXPECT_LT(depth, 1.0);
@@ -125,10 +123,7 @@ TEST(DirectionalViews, TheSceneViewHoldsTheWholeScene) {
   ASSERT_EQ(built.views.size(), 1u);
   EXPECT_NEAR(built.views[0].params.y, glm::length(kScene.extent()), 1e-5);
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? kScene.max.x : kScene.min.x,
-                      (corner & 2) ? kScene.max.y : kScene.min.y,
-                      (corner & 4) ? kScene.max.z : kScene.min.z);
-    const glm::dvec3 at = texelCoordinates(built.views[0], p, 2);
+    const glm::dvec3 at = texelCoordinates(built.views[0], kScene.corner(corner), 2);
     for (double c : {at.x, at.y}) {
       EXPECT_GT(c, 0.0);
       EXPECT_LT(c, 2.0);

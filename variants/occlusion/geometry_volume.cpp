@@ -224,10 +224,8 @@ private:
   History& historyOf(const Frame& frame) {
     History& history = histories_.at(std::size_t(frame.level));
     const GridGeometry& placement = frame.get(kGeometryVolume).geometry;
-    if (history.valid && (placement.origin != history.placement.origin ||
-                          placement.cellSize != history.placement.cellSize ||
-                          placement.resolution != history.placement.resolution ||
-                          frame.geometryVersion != history.geometryVersion))
+    if (history.valid &&
+        (placement != history.placement || frame.geometryVersion != history.geometryVersion))
       history.valid = false;
     history.placement = placement;
     history.geometryVersion = frame.geometryVersion;
