@@ -12,6 +12,10 @@ find_package(embree 3 CONFIG REQUIRED)    # ray queries of the reference path tr
 find_package(Ceres 2.1 REQUIRED)          # `lpvlab fit`: nonlinear least squares, covariance
 find_package(TBB REQUIRED)                # threads of the CPU kernels
 find_package(benchmark REQUIRED)          # CPU kernel benchmarks (tests/benchmarks)
+# CGAL 5.5 (header-only): incremental instant radiosity's Delaunay triangulation of its VPLs.
+# Its CMake config sets the build type when none is given; lpvlab's default stays RelWithDebInfo.
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+find_package(CGAL 5.5 CONFIG REQUIRED)
 # OpenImageIO 2.4's CMake config names /usr/include/opencv4; its pkg-config module works.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)   # offscreen GL 4.5 core on llvmpipe

@@ -18,6 +18,7 @@ packages=(
   libtbb-dev                       # oneTBB: threads of the CPU kernels
   libbenchmark-dev                 # Google Benchmark: CPU kernel benchmarks
   libceres-dev                     # Ceres Solver 2.1: `lpvlab fit` (least squares, covariance)
+  libcgal-dev                      # CGAL 5.5: Delaunay triangulations (incremental instant radiosity)
   libtomlplusplus-dev              # experiment files
   nlohmann-json3-dev               # manifests
   libcli11-dev                     # command line

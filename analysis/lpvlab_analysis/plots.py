@@ -84,6 +84,9 @@ def stage_times(agg, param, path, prefix="gpu_ms."):
     (summary.one_at_a_time)."""
     sl = S.one_at_a_time(agg, param)
     stages = [s for s in STAGE_ORDER if prefix + s in sl.columns and sl[prefix + s].notna().any()]
+    # A method's own stages (docs/methods.md) that the list above does not know, after them.
+    stages += sorted(c[len(prefix):] for c in sl.columns
+                     if c.startswith(prefix) and c[len(prefix):] not in S.STAGES and sl[c].notna().any())
     if sl[param].nunique() < 2 or not stages:
         return None
     variants = sorted(set(sl["variant"]))

@@ -28,6 +28,7 @@ from . import equal_time as ET
 from . import fsutil
 from . import gpu_estimate as G
 from . import images
+from . import methods
 from . import plots
 from . import sequences
 from . import summary as S
@@ -105,7 +106,7 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
             if r is not None:
                 ref_cache[key] = out_ref
                 trio.append(("reference indirect1 (path traced)", _rel(out_ref, out_dir)))
-                trio.append(("LPV indirect (same exposure)", _rel(out_run, out_dir)))
+                trio.append((f"{row['variant']}: indirect (same exposure)", _rel(out_run, out_dir)))
                 done = True
         if not done:
             comb = os.path.join(run_dir, "combined.png")
@@ -240,6 +241,22 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
         body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs gpu_ms.total "
                     "(no reference comparison in this sweep?).</p>")
 
+    if methods.has_methods(agg):
+        _log("plot: methods")
+        body.append("<h2>Methods</h2>")
+        body.append("<p class='note'>Every indirect-light method of the sweep on one speed/accuracy plot "
+                    "(coloured by method; LPV by its strategies), and each configuration's error against the "
+                    "LPV baseline series at equal total time (ratio below 1, bold: the method beats spending "
+                    "that time on LPV). Each method's images are under <i>Images per configuration</i>: the "
+                    "reference, the result and the error map side by side.</p>")
+        p = plots.speed_accuracy(methods.by_method(agg), os.path.join(img_dir, "methods_speed_accuracy.png"),
+                                 metric=metric)
+        if p:
+            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        body.append(methods.to_html(agg, metric))
+        fsutil.write_text(os.path.join(out_dir, "methods.md"), methods.to_markdown(agg, metric))
+        body.append("<p class='note'>Markdown version: <a href='methods.md'>methods.md</a></p>")
+
     body.append("<h2>Ablation table</h2>")
     body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")
     body.append(tables.to_html(agg))
@@ -311,7 +328,7 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
         body.append("<p class='note'>OpenImageIO Python binding unavailable: showing each run's combined.png "
                     "and error map only (no tone-mapped reference).</p>")
     else:
-        body.append("<p class='note'>Reference (path-traced indirect1) and result (LPV indirect) are tone-mapped "
+        body.append("<p class='note'>Reference (path-traced indirect1) and result (the run's indirect) are tone-mapped "
                     "from the EXRs with the same exposure, set by the reference.</p>")
     for _, row in agg.iterrows():
         trio, _, run_dir = imgs[row["config_id"]]

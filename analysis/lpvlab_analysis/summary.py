@@ -14,9 +14,12 @@ import numpy as np
 import pandas as pd
 
 STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "occlusion", "injection",
-          "propagation", "indirect", "total"]
+          "propagation", "vpls", "indirect", "total"]
 TYPE_PARAMS = ["param.injection.type", "param.occlusion.type", "param.propagation.type",
                "param.rendering.type"]
+# [indirect] method: "lpv" (the strategies above) or another indirect-light method, whose rows
+# have no LPV type columns.
+METHOD_PARAM = "param.indirect.method"
 HIGHER_IS_BETTER = {"psnr", "ssim"}
 DEFAULT_METRIC = "metric.indirect_vs_indirect1.rmse"
 
@@ -115,15 +118,23 @@ def is_numeric_param(df, col):
 def variant_label(row, categorical_swept):
     """Label of the algorithm variant of a configuration.
 
-    injection/occlusion/propagation/rendering types joined by '/', followed by the
+    injection/occlusion/propagation/rendering types joined by '/' (another indirect method: its
+    name, param.indirect.method), followed by the
     swept parameters that are categorical (strings), e.g.
     'rsm_vpl/none/standard/trilinear scene.file=a.obj'. Swept *numeric* parameters
     (iterations, grid resolution, ...) are left out on purpose: they are the
     x axes of the plots, and points of one variant share a colour across them.
     """
-    parts = [str(row.get(c, "?")) for c in TYPE_PARAMS if c in row.index]
-    label = "/".join(parts) if parts else "default"
-    extra = [f"{c[len('param.'):]}={row[c]}" for c in categorical_swept if c not in TYPE_PARAMS]
+    method = row.get(METHOD_PARAM)
+    if isinstance(method, str) and method not in ("", "lpv", "nan"):
+        label = method
+    else:
+        parts = [str(row.get(c, "?")) for c in TYPE_PARAMS if c in row.index]
+        label = "/".join(parts) if parts else "default"
+    # A whole [indirect] table swept (a JSON object per row) is the method's settings: named by
+    # the method and the series, not spelled out in the legend.
+    extra = [f"{c[len('param.'):]}={row[c]}" for c in categorical_swept
+             if c not in TYPE_PARAMS and c != METHOD_PARAM and not str(row[c]).startswith("{")]
     return " ".join([label] + extra)
 
 
@@ -138,8 +149,10 @@ def aggregate(df):
 
     Columns: config_id, config_name, run_dir, repeats, param.*, median
     gpu_ms.*/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant' and
-    'label'. Timings are medians over repeats (NaN repeats ignored); other
-    columns take the first non-missing value of the configuration.
+    'label'. Timings are medians over repeats (NaN repeats ignored); metric.*,
+    temporal.* and method.* figures their means (a sequence's frames differ; a
+    static run's repeats share the run's); other columns take the first
+    non-missing value of the configuration.
     """
     timing = [c for c in df.columns if c.startswith(("gpu_ms.", "wall_ms."))]
     rows = []
@@ -150,6 +163,10 @@ def aggregate(df):
                 continue
             if c in timing:
                 r[c] = float(np.nanmedian(g[c].values)) if g[c].notna().any() else math.nan
+            elif c.startswith(("metric.", "temporal.", "method.")) and pd.api.types.is_numeric_dtype(g[c]):
+                # A sequence's rows are its frames, each with its own figures: their mean (a
+                # static run's repeats all have the run's). An infinite PSNR stays infinite.
+                r[c] = float(np.nanmean(g[c].values)) if g[c].notna().any() else math.nan
             else:
                 nn = g[c].dropna()
                 r[c] = nn.iloc[0] if len(nn) else (math.nan if pd.api.types.is_numeric_dtype(g[c]) else "")

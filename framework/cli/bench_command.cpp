@@ -25,6 +25,12 @@ int benchCommand(const Options& options) {
       overrides.push_back("grid.margin=0");
       overrides.push_back("propagation.iterations=" + std::to_string(iterations));
       Experiment e = loadExperiment(options.experiment, overrides);
+      if (e.strategies.method)
+        throw Error((options.experiment.empty() ? std::string("the built-in default")
+                                                 : options.experiment) +
+                    ": indirect.method = \"" + e.strategies.method->name() +
+                    "\": lpvlab bench measures LPV propagation over grid sizes and iterations; "
+                    "time another method with lpvlab run or lpvlab sweep");
       if (!context) {
         context = GlContext::create(e.glBackend);
         std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "

@@ -28,7 +28,8 @@ std::string resourceLine(const ResourceUses& uses) {
 // The strategies of each stage in pipeline order, with the resources each produces and consumes
 // (named_resources.h) and whether it has a CPU kernel ([compute] backend), with its default
 // parameters; their parameters are documented in the header of variants/<stage>/<name>.cpp and in
-// docs/variants.md.
+// docs/variants.md. Then the indirect methods beside LPV with their parameters' defaults
+// (variants/methods/, docs/methods.md).
 int listCommand() {
   std::string stage;
   for (const CatalogueEntry& entry : strategyCatalogue()) {
@@ -39,6 +40,12 @@ int listCommand() {
     std::cout << "      (CPU backend: "
               << (entry.cpuRefusal.empty() ? "yes" : "no, " + entry.cpuRefusal) << ")\n";
   }
+  // The other indirect-light methods, which replace the stages above (docs/methods.md).
+  std::cout << "[indirect] method =\n"
+            << "  lpv: the stages above (the default)\n";
+  for (const MethodCatalogueEntry& method : methodCatalogue())
+    std::cout << "  " << method.name << ": " << method.description << "\n"
+              << "      (" << method.parameters << ")\n";
   return 0;
 }
 

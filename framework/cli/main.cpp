@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
   fit->add_option("-o,--out", options.out, "Fit directory (default: runs/<file stem>-fit)");
   fit->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
 
-  app.add_subcommand("list", "List the strategies of every stage");
+  app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
   info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
       ->required();

@@ -40,10 +40,14 @@ int runCommand(const Options& options) {
     std::cout << std::left << std::setw(14) << stage << std::right << std::fixed
               << std::setprecision(3) << std::setw(10) << summary["median"].get<double>() << "  ("
               << summary["q1"].get<double>() << "-" << summary["q3"].get<double>() << ")\n";
-  std::cout << "propagation throughput: " << std::scientific << std::setprecision(3)
-            << manifest["propagation_cell_iterations_per_second"].get<double>()
-            << " cell-iterations/s\n"
-            << "wrote " << out
+  if (manifest.contains("propagation_cell_iterations_per_second"))
+    std::cout << "propagation throughput: " << std::scientific << std::setprecision(3)
+              << manifest["propagation_cell_iterations_per_second"].get<double>()
+              << " cell-iterations/s\n";
+  if (manifest.contains("indirect_method"))
+    std::cout << "indirect method " << manifest["indirect_method"]["name"].get<std::string>()
+              << ": " << manifest["indirect_method"]["statistics"].dump() << "\n";
+  std::cout << "wrote " << out
             << (!animation.animated() ? "/{images.exr, combined.png, manifest.json}\n"
                 : manifest["outputs"].contains("video") ? "/{frames/, video.mp4, manifest.json}\n"
                                                         : "/{frames/, manifest.json}\n");

@@ -331,6 +331,19 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
     e.comparison.regions.push_back(r);
   }
 
+  // [indirect] method: "lpv" (the strategies below) or a registered method with its parameters
+  // in the same table (framework/pipeline/indirect_method.h).
+  Params indirect = params.table("indirect");
+  std::vector<std::string> methods = {"lpv"};
+  for (const std::string& name : Registry<IndirectMethod>::instance().names()) methods.push_back(name);
+  const std::string method = indirect.getChoice("method", "lpv", methods);
+  if (method != "lpv") {
+    e.strategies.method = Registry<IndirectMethod>::instance().entries().at(method).factory(indirect);
+    e.strategies.method->setRegisteredName(method);
+  }
+
+  // The LPV strategies are read whatever the method, so that one file can sweep
+  // indirect.method over LPV and the other methods (their keys are checked either way).
   Params occlusion = params.table("occlusion");
   e.strategies.injection = createStage<InjectionStrategy>(params.table("injection"), "rsm_vpl");
   e.strategies.occlusion = Registry<OcclusionStrategy>::instance().create(occlusion, "none");
@@ -339,15 +352,22 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   e.strategies.rendering = createStage<RenderingStrategy>(params.table("rendering"), "trilinear");
 
   params.finish();
-  try {
-    // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.
-    resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance,
-                        e.settings.cascades.levels,
-                        e.settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl);
-  } catch (const Error& error) {
-    throw Error(file + ": " + error.what());
+  if (!e.strategies.method) {
+    try {
+      // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.
+      resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance,
+                          e.settings.cascades.levels,
+                          e.settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl);
+    } catch (const Error& error) {
+      throw Error(file + ": " + error.what());
+    }
   }
   e.configuration = params.resolved();
+  // Another method's run records none of LPV's keys (a summary's param.propagation.* columns are
+  // then empty on its rows, not LPV defaults it never used).
+  if (e.strategies.method)
+    for (const char* lpvTable : {"grid", "cascades", "occlusion", "injection", "propagation", "rendering"})
+      e.configuration.erase(lpvTable);
   e.configuration["scene"]["resolved_path"] = e.scene.source;
   e.configuration["camera"]["resolved"] = {
       {"name", e.camera.name},
@@ -355,7 +375,7 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
       {"forward", {e.camera.forward.x, e.camera.forward.y, e.camera.forward.z}},
       {"vertical_fov_deg", e.camera.verticalFov / kDegrees}};
   const GridGeometry& g = e.settings.grid;
-  e.configuration["grid"]["resolved"] = {
+  if (!e.strategies.method) e.configuration["grid"]["resolved"] = {
       {"origin", {g.origin.x, g.origin.y, g.origin.z}},
       {"cell_size", g.cellSize},
       {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}};

@@ -40,6 +40,11 @@ TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup) {
   return report;
 }
 
+double medianGpuMs(const TimingReport& timing, const std::string& stage) {
+  const auto found = timing.gpuMs.find(stage);
+  return found == timing.gpuMs.end() ? 0.0 : found->second.median;
+}
+
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
   for (int i = 0; i < warmup; ++i) pipeline.renderFrame();
   std::vector<FrameTimes> frames;
@@ -59,13 +64,15 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   const TimingReport timing = measureFrames(pipeline, experiment.warmupFrames, experiment.repeats);
   std::vector<NamedImage> aovs = pipeline.readOutputs();
   requireFiniteImages(aovs);
-  const InjectionBalance balance = pipeline.measureInjection();
+  // LPV's injection bookkeeping (another method injects into no grid).
+  std::optional<InjectionBalance> balance;
+  if (!pipeline.strategies().method) balance = pipeline.measureInjection();
 
   const std::string hash = sceneHash(experiment.scene);
   nlohmann::json manifest =
-      describeRun(experiment, context, pipeline, hash, timing.gpuMs.at("propagation").median);
+      describeRun(experiment, context, pipeline, hash, medianGpuMs(timing, "propagation"));
   manifest["timing"] = timing.toJson();
-  manifest["injection_flux_W"] = injectionFluxJson(balance);
+  if (balance) manifest["injection_flux_W"] = injectionFluxJson(*balance);
   manifest["outputs"] = {
       {"exr", "images.exr"},
       {"png", "combined.png"},

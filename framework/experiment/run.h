@@ -30,6 +30,9 @@ struct TimingReport {
 
 // The timings of `frames` (in order) summarised per stage, after `warmup` untimed frames.
 TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup);
+// A stage's median device time (ms), 0 when the run has no such stage (another indirect method
+// has no "propagation").
+double medianGpuMs(const TimingReport& timing, const std::string& stage);
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
 

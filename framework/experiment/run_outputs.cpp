@@ -128,7 +128,7 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
                            const Pipeline& pipeline, const std::string& sceneHash,
                            double propagationMs) {
   const int iterations = pipeline.strategies().propagation->iterations();
-  return {{"lpvlab_version", LPVLAB_VERSION},
+  nlohmann::json description = {{"lpvlab_version", LPVLAB_VERSION},
           {"experiment", experiment.name},
           {"experiment_file", experiment.file.empty() ? "(built-in default)" : experiment.file},
           {"created_utc", utcTimestamp()},
@@ -155,6 +155,14 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
           {"memory_bytes", pipeline.memoryReport()},
           {"work", pipeline.workReport()},
           {"gpu_work", pipeline.workReport(true)}};
+  if (const IndirectMethod* method = pipeline.strategies().method.get()) {
+    // No light grid: what the method's last frame did instead.
+    description.erase("propagation_cell_iterations_per_second");
+    description.erase("cascade_levels");
+    description["indirect_method"] = {{"name", method->name()},
+                                      {"statistics", method->statistics()}};
+  }
+  return description;
 }
 
 }  // namespace lpvlab

@@ -164,9 +164,12 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   // A composition whose frames depend on the frames before (a GV history) renders the frames
   // before `first` again, unwritten, so a resumed sequence matches an uninterrupted one.
   const auto strategies = experiment.strategies.all();
-  const bool replay = first > 0 && std::any_of(strategies.begin(), strategies.end(), [](auto& s) {
-                        return s.second->keepsStateBetweenFrames();
-                      });
+  const IndirectMethod* method = experiment.strategies.method.get();
+  const bool keepsState =
+      method ? method->keepsStateBetweenFrames()
+             : std::any_of(strategies.begin(), strategies.end(),
+                           [](auto& s) { return s.second->keepsStateBetweenFrames(); });
+  const bool replay = first > 0 && keepsState;
   const int start = replay ? 0 : first;
   if (replay)
     std::cerr << "lpvlab: " << experiment.name << ": rendering frames 0-" << first - 1
@@ -223,6 +226,10 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                              {"gpu_ms", times.gpuMs},
                              {"wall_ms", times.wallMs},
                              {"png_exposure_stops", *exposure}};
+    // Another indirect method's figures of this frame (incremental instant radiosity's removals
+    // and insertions differ from frame to frame).
+    if (const IndirectMethod* method = pipeline.strategies().method.get())
+      record["indirect_method"] = method->statistics();
     FrameState state{experiment.camera, hash, aovs, {}};
     if (experiment.compareWithReference) {
       state.reference = frameReference(frame);
@@ -264,7 +271,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   const TimingReport timing = timingReport(times, experiment.warmupFrames);
   nlohmann::json manifest =
       describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
-                  timing.gpuMs.at("propagation").median);
+                  medianGpuMs(timing, "propagation"));
   manifest["timing"] = timing.toJson();
   manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
   manifest["sequence"] = {{"frames", animation.frames},

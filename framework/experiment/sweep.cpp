@@ -387,7 +387,7 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
     for (const auto& c : index.value("configurations", nlohmann::json::array()))
       names[c.value("id", "")] = c.value("name", "");
   }
-  const std::vector<std::string> fixed = {"injection.type",   "occlusion.type",
+  const std::vector<std::string> fixed = {"indirect.method",  "injection.type",   "occlusion.type",
                                           "propagation.type", "rendering.type",
                                           "grid.resolution",  "grid.sh_order",
                                           "cascades.levels",  "propagation.iterations",
@@ -416,8 +416,22 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;
   std::set<std::string> temporalColumns;
+  // Another indirect method's figures (its manifest's indirect_method.statistics): each number,
+  // as method.<path> (e.g. method.clamp.removed_fraction).
+  std::map<std::string, std::map<std::string, double>> methodById;
+  std::set<std::string> methodColumns;
   for (const auto& [id, m] : manifests) {
     reading = (root / id / "manifest.json").string();
+    if (const auto* statistics = findPath(m, "indirect_method.statistics"); statistics) {
+      const nlohmann::json flat = statistics->flatten();  // "/clamp/c" -> value
+      for (const auto& [path, value] : flat.items())
+        if (value.is_number()) {
+          std::string column = "method" + path;
+          std::replace(column.begin(), column.end(), '/', '.');
+          methodById[id][column] = value.get<double>();
+          methodColumns.insert(column);
+        }
+    }
     workById[id] = workColumns(m);
     for (const auto& [key, _] : workById[id]) workKeys.insert(key);
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
@@ -451,6 +465,7 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   header.push_back("cells");
   for (const std::string& k : workKeys) header.push_back(k);
   for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
+  for (const std::string& column : methodColumns) header.push_back(column);
   if (!temporalColumns.empty()) header.push_back("temporal.at_rest");
   for (const std::string& column : temporalColumns) header.push_back(column);
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
@@ -515,6 +530,11 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
           if (entry.contains("metrics") && entry["metrics"].contains(metric)) v = &entry["metrics"][metric];
         }
         row.push_back(jsonText(v));
+      }
+      for (const std::string& column : methodColumns) {
+        const auto& figures = methodById[id];
+        const auto found = figures.find(column);
+        row.push_back(found == figures.end() ? "" : nlohmann::json(found->second).dump());
       }
       if (!temporalColumns.empty()) {
         row.push_back(jsonText(frame ? findPath(*frame, "temporal.at_rest") : nullptr));

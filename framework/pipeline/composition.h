@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "framework/pipeline/indirect_method.h"
 #include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
@@ -19,6 +20,9 @@ struct Strategies {
   std::unique_ptr<OcclusionStrategy> occlusion;
   std::unique_ptr<PropagationStrategy> propagation;
   std::vector<std::unique_ptr<RenderingStrategy>> rendering;  // run in order, adding to `indirect`
+  // [indirect] method: null for LPV (the strategies above); else the method that replaces LPV's
+  // stages, and the strategies above are not run.
+  std::unique_ptr<IndirectMethod> method;
 
   // Every strategy with the experiment-file table it came from, e.g. ("propagation", strategy).
   std::vector<std::pair<std::string, Strategy*>> all() const;

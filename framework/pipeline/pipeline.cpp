@@ -75,12 +75,22 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
                 "under [[lights]] in the experiment");
-  requirements_ = resolveRequirements(
-      strategies_, settings.shOrder, settings.skyRadiance, settings.cascades.levels,
-      resolveBackend(settings.backend, reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
+  const ComputeBackend backend =
+      resolveBackend(settings.backend, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  IndirectMethod* method = strategies_.method.get();
+  // With another indirect method the LPV strategies are not run: nothing of theirs is checked,
+  // allocated or prepared.
+  if (method)
+    requirements_.backend = backend;
+  else
+    requirements_ = resolveRequirements(strategies_, settings.shOrder, settings.skyRadiance,
+                                        settings.cascades.levels, backend);
 
-  for (const auto& [table, strategy] : strategies_.all())
-    if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
+  if (!method)
+    for (const auto& [table, strategy] : strategies_.all())
+      if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
+  if (method && method->runsOnCpu())
+    for (const std::string& stage : method->stageNames()) cpuStages_.insert(stage);
 
   scene_ = std::make_unique<SceneGpu>(scene);
   const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(),
@@ -92,6 +102,13 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow,
                                              requirements_.backend != ComputeBackend::Gl);
   if (direct_->onCpu()) cpuStages_.insert("direct");
+  directImage_ = DualImage(settings.width, settings.height, "direct");
+  indirectImage_ = DualImage(settings.width, settings.height, "indirect");
+  if (method) {
+    method->prepare(MethodSetup{.scene = scene, .settings = settings_, .shaders = shaders});
+    checkGl("indirect method setup");
+    return;
+  }
   // Every level has the grid's cell counts, so strategies size their scratch once, from `grid`.
   for (int level = 0; level < requirements_.cascadeLevels; ++level) {
     levels_.emplace_back(settings.grid, requirements_.shOrder);
@@ -106,8 +123,6 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     carry_ = std::make_unique<CascadeCarry>(shaders, requirements_.shOrder, carryOnCpu);
     if (carryOnCpu) cpuStages_.insert("injection");
   }
-  directImage_ = DualImage(settings.width, settings.height, "direct");
-  indirectImage_ = DualImage(settings.width, settings.height, "indirect");
   const StrategySetup setup{.shaders = shaders,
                             .grid = settings.grid,
                             .requirements = requirements_,
@@ -159,6 +174,7 @@ void Pipeline::moveScene(const Scene& scene, bool lightsMoved, bool geometryMove
     scene_->updateGeometry(scene);
     ++geometryVersion_;
   }
+  if (strategies_.method) strategies_.method->moveScene(scene, lightsMoved, geometryMoved);
   if (!lightsMoved && !geometryMoved) return;
   lights_ = scene.lights;
   sceneBounds_ = scene.bounds();
@@ -186,6 +202,7 @@ LightViews Pipeline::lightViews() const {
 }
 
 void Pipeline::placeLevels(const std::optional<glm::vec3>& focus) {
+  if (levels_.empty()) return;  // another indirect method: no light grid
   const std::vector<GridGeometry> placed =
       focus ? placeCascadeLevels(settings_.grid, int(levels_.size()), *focus,
                                  settings_.cascades.snap)
@@ -216,7 +233,6 @@ void Pipeline::injectAll(int level) {
 
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
-  const int levels = int(levels_.size());
   hostReadback_.newFrame();
   if (settings_.directLight)
     stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
@@ -227,6 +243,32 @@ FrameTimes Pipeline::renderFrame() {
       direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,
                       hostReadback_);
     });
+  if (strategies_.method) {
+    indirectImage_.zero();
+    MethodFrame frame{.camera = camera_,
+                      .gbuffer = gbufferPass_->gbuffer(),
+                      .lightMaps = lightMapsPass_->lightMaps(),
+                      .host = hostReadback_,
+                      .indirect = indirectImage_,
+                      .stage = [&](const std::string& name, const std::function<void()>& work) {
+                        stage(name, times, work);
+                      }};
+    strategies_.method->render(frame);
+  } else {
+    renderLpvStages(times);
+  }
+  times.gpuMs = gpuTimer_.collectMs();
+  // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
+  // timestamps do not see: its device time is its wall time (transfers to and from GL included).
+  for (const std::string& stage : cpuStages_)
+    if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end())
+      times.gpuMs[stage] = wall->second;
+  checkGl("frame");
+  return times;
+}
+
+void Pipeline::renderLpvStages(FrameTimes& times) {
+  const int levels = int(levels_.size());
   stage("clear", times, [&] {
     if (levels > 1 && settings_.cascades.placement == CascadePlacement::Depth)
       placeLevels(visibleFocus(visiblePositions(gbufferPass_->gbuffer())));
@@ -258,14 +300,6 @@ FrameTimes Pipeline::renderFrame() {
     Frame frame = this->frame(0);
     for (const auto& rendering : strategies_.rendering) rendering->render(frame);
   });
-  times.gpuMs = gpuTimer_.collectMs();
-  // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
-  // timestamps do not see: its device time is its wall time (transfers to and from GL included).
-  for (const std::string& stage : cpuStages_)
-    if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end())
-      times.gpuMs[stage] = wall->second;
-  checkGl("frame");
-  return times;
 }
 
 std::vector<NamedImage> Pipeline::readOutputs() const {
@@ -284,6 +318,7 @@ std::vector<NamedImage> Pipeline::readOutputs() const {
 }
 
 std::vector<float> Pipeline::readGrid(bool accumulated, int level) const {
+  if (levels_.empty()) throw Error("the run's indirect method has no light grid");
   const LightGrid& grid = levels_.at(std::size_t(level));
   std::vector<float> data(grid.floatsPerGrid());
   (accumulated ? grid.accumulated : grid.current).download(data.data(), data.size() * sizeof(float));
@@ -291,6 +326,7 @@ std::vector<float> Pipeline::readGrid(bool accumulated, int level) const {
 }
 
 InjectionBalance Pipeline::measureInjection() {
+  if (strategies_.method) throw Error("the run's indirect method injects nothing into a grid");
   const int coarsest = int(levels_.size()) - 1;
   Frame frame = this->frame(coarsest);
   const LightGrid& grid = levels_.back();
@@ -314,24 +350,25 @@ InjectionBalance Pipeline::measureInjection() {
 }
 
 nlohmann::json Pipeline::computeReport() const {
+  nlohmann::json report = {{"backend", backendName(requirements_.backend)},
+                           {"raster_passes", "gl"},
+                           {"direct", direct_->onCpu() ? "cpu" : "gl"}};
+  if (const IndirectMethod* method = strategies_.method.get()) {
+    report["indirect_method"] = {{"name", method->name()},
+                                 {"runs_on", method->runsOnCpu() ? "cpu" : "gl"}};
+    return report;
+  }
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [table, strategy] : strategies_.all())
     stages[table] = strategy->runsOnCpu(requirements_) ? "cpu" : "gl";
-  return {{"backend", backendName(requirements_.backend)},
-          {"raster_passes", "gl"},
-          {"direct", direct_->onCpu() ? "cpu" : "gl"},
-          {"strategies", stages}};
+  report["strategies"] = stages;
+  return report;
 }
 
 nlohmann::json Pipeline::workReport(bool glKernels) const {
   const LightMaps& maps = lightMapsPass_->lightMaps();
   const double pixels = double(settings_.width) * settings_.height;
-  FrameShape shape;
-  shape.cells = double(settings_.grid.cellCount());
-  shape.levels = int(levels_.size());
-  shape.coefficients = levels_.front().coefficients;
-  shape.rsmTexels = double(maps.views) * maps.rsmResolution * maps.rsmResolution;
-  shape.pixels = pixels;
+  const double rsmTexels = double(maps.views) * maps.rsmResolution * maps.rsmResolution;
   const auto entry = [](const WorkCount& w) {
     return nlohmann::json{{"unit", w.unit},
                           {"units", w.units},
@@ -343,9 +380,23 @@ nlohmann::json Pipeline::workReport(bool glKernels) const {
   nlohmann::json report = nlohmann::json::object();
   const double shadowTexels = double(maps.views) * maps.shadowResolution * maps.shadowResolution;
   report["shadow_maps"] = {entry({"texel", shadowTexels})};
-  report["rsm"] = {entry({"texel", shape.rsmTexels})};
+  report["rsm"] = {entry({"texel", rsmTexels})};
   report["gbuffer"] = {entry({"pixel", pixels})};
   report["direct"] = {entry(direct_->work(pixels, maps.lightCount, glKernels))};
+  if (const IndirectMethod* method = strategies_.method.get()) {
+    // A method counts what its last frame did, on whichever side it runs.
+    for (const auto& [stage, counts] : method->work()) {
+      report[stage] = nlohmann::json::array();
+      for (const WorkCount& w : counts) report[stage].push_back(entry(w));
+    }
+    return report;
+  }
+  FrameShape shape;
+  shape.cells = double(settings_.grid.cellCount());
+  shape.levels = int(levels_.size());
+  shape.coefficients = levels_.front().coefficients;
+  shape.rsmTexels = rsmTexels;
+  shape.pixels = pixels;
   Requirements requirements = requirements_;
   if (glKernels) requirements.backend = ComputeBackend::Gl;
   for (const auto& [table, strategy] : strategies_.all()) {
@@ -374,8 +425,11 @@ nlohmann::json Pipeline::memoryReport() const {
   for (const ResourceTable& resources : resources_)
     for (const auto& [name, size] : resources.memoryBytes())
       bytes[name] = bytes.value(name, std::size_t(0)) + size;
-  for (const auto& [table, strategy] : strategies_.all())
-    bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();
+  if (strategies_.method)
+    bytes["indirect_method"] = strategies_.method->memoryBytes();
+  else
+    for (const auto& [table, strategy] : strategies_.all())
+      bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();
   std::size_t total = 0;
   for (const auto& [name, value] : bytes.items()) total += value.get<std::size_t>();
   bytes["total"] = total;

@@ -139,6 +139,8 @@ private:
   // Places the finer cascade levels around `focus` ("depth" placement), or by the eye rule.
   void placeLevels(const std::optional<glm::vec3>& focus = std::nullopt);
   void clearGrids();
+  // Stages clear to indirect: LPV's strategies (when the experiment has no other method).
+  void renderLpvStages(FrameTimes& times);
   void injectAll(int level);
   // The light views for the current camera, lights and scene bounds.
   LightViews lightViews() const;

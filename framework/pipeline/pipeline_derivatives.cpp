@@ -26,6 +26,8 @@ std::string Pipeline::derivativeRefusal(const std::string& key) const {
   const std::size_t dot = key.rfind('.');
   if (dot == std::string::npos) return "'" + key + "' is not <table>.<name>";
   const std::string table = key.substr(0, dot), name = key.substr(dot + 1);
+  if (strategies_.method)
+    return "indirect method \"" + strategies_.method->name() + "\" has no kernels on dual numbers";
   const Strategy* owner = nullptr;
   for (const auto& [t, strategy] : strategies_.all())
     if (t == table) owner = strategy;

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include "framework/core/parameters.h"
+#include "framework/pipeline/indirect_method.h"
 #include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
@@ -32,6 +33,21 @@ std::vector<CatalogueEntry> strategyCatalogue() {
   addStage<OcclusionStrategy>("occlusion", entries);
   addStage<PropagationStrategy>("propagation", entries);
   addStage<RenderingStrategy>("rendering", entries);
+  return entries;
+}
+
+std::vector<MethodCatalogueEntry> methodCatalogue() {
+  std::vector<MethodCatalogueEntry> entries;
+  for (const auto& [name, entry] : Registry<IndirectMethod>::instance().entries()) {
+    const toml::table defaults;
+    Params params(defaults, "the method catalogue", "indirect");
+    entry.factory(params);
+    std::string parameters;
+    const nlohmann::json resolved = params.resolved();
+    for (const auto& [key, value] : resolved.items())
+      parameters += (parameters.empty() ? "" : ", ") + key + " = " + value.dump();
+    entries.push_back({name, entry.description, parameters});
+  }
   return entries;
 }
 

@@ -21,6 +21,15 @@ struct CatalogueEntry {
 // In pipeline order, each stage's strategies by name.
 std::vector<CatalogueEntry> strategyCatalogue();
 
+// Every registered indirect method other than LPV ([indirect] method, indirect_method.h) with its
+// parameters' defaults (a JSON object of key -> value).
+struct MethodCatalogueEntry {
+  std::string name;
+  std::string description;
+  std::string parameters;  // "key = value, ..." as the method reads them by default
+};
+std::vector<MethodCatalogueEntry> methodCatalogue();
+
 // `[<stage>] type = "<name>"` of every registered strategy that produces `resource` with its
 // default parameters.
 std::vector<std::string> producersOf(const std::string& resource);

@@ -235,4 +235,35 @@ void EmbreeScene::occluded(ShadowPacket& packet) const {
   }
 }
 
+SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::vec3& origin,
+                          const glm::vec3& direction) {
+  const GeometryRecord& geometry = scene.geometry(hit.geomID);
+  const TriangleFrame& frame = geometry.triangles[hit.primID];
+  SurfacePoint x;
+  x.geometry = &geometry;
+  // Along the ray: its rounding (~1e-7 of the distance) is far below the offsets of new rays.
+  x.position = origin + hit.distance * direction;
+  x.geometricNormal = frame.unitNormal;
+  x.shadingNormal = frame.unitNormal;
+  x.uv = glm::vec2(0.0f);  // never read for untextured materials
+  if (!frame.flat || geometry.material->texture) {
+    const std::uint32_t* corner = geometry.indices + 3 * std::size_t(hit.primID);
+    const float w = 1.0f - hit.u - hit.v;
+    if (!frame.flat) {
+      const glm::vec3 interpolated = w * geometry.normals[corner[0]] +
+                                     hit.u * geometry.normals[corner[1]] +
+                                     hit.v * geometry.normals[corner[2]];
+      const float length2 = glm::dot(interpolated, interpolated);
+      // Vertex normals that cancel out (or are missing as zeros) leave the geometric normal.
+      if (length2 > 1e-12f && std::isfinite(length2))
+        x.shadingNormal = interpolated / std::sqrt(length2);
+    }
+    if (geometry.material->texture)
+      x.uv = w * geometry.uvs[corner[0]] + hit.u * geometry.uvs[corner[1]] +
+             hit.v * geometry.uvs[corner[2]];
+  }
+  if (glm::dot(x.shadingNormal, direction) > 0.0f) x.shadingNormal = -x.shadingNormal;
+  return x;
+}
+
 }  // namespace lpvlab

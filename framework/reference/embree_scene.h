@@ -71,4 +71,26 @@ private:
   float epsilon_ = 0.0f;
 };
 
+// A ray's hit on the scene's surface.
+struct SurfacePoint {
+  glm::vec3 position;
+  glm::vec3 geometricNormal;  // unit, as wound (either side)
+  glm::vec3 shadingNormal;    // unit, turned to the side the ray came from
+  glm::vec2 uv;               // zero for untextured materials (never read)
+  const GeometryRecord* geometry;
+};
+
+// The point `hit` of the ray origin + t direction, with its shading normal (the vertex normals
+// interpolated, the geometric one where they cancel) and texture coordinates.
+SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::vec3& origin,
+                       const glm::vec3& direction);
+
+// Start of a ray leaving x along `direction`: moved off the surface along the geometric normal,
+// to the side the ray leaves on, so it cannot hit x's own triangle again.
+inline glm::vec3 offsetRayOrigin(const EmbreeScene& scene, const SurfacePoint& x,
+                                 const glm::vec3& direction) {
+  const float side = glm::dot(x.geometricNormal, direction) > 0.0f ? 1.0f : -1.0f;
+  return x.position + (side * scene.epsilon()) * x.geometricNormal;
+}
+
 }  // namespace lpvlab

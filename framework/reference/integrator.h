@@ -66,13 +66,6 @@ public:
              std::vector<ShadowQuery>& shadows) const;
 
 private:
-  struct SurfacePoint {
-    glm::vec3 position;
-    glm::vec3 geometricNormal;  // unit, as wound (either side)
-    glm::vec3 shadingNormal;    // unit, turned to the side the ray came from
-    glm::vec2 uv;               // zero for untextured materials (never read)
-    const GeometryRecord* geometry;
-  };
 
   // A path between bounces.
   struct PathState {
@@ -82,13 +75,8 @@ private:
     int scatterings;              // surface vertices so far
   };
 
-  SurfacePoint surfaceAt(const RayHit& hit, const glm::vec3& origin,
-                         const glm::vec3& direction) const;
-  // Start of a ray leaving x along `direction`: moved off the surface along the geometric normal,
-  // to the side the ray leaves on, so it cannot hit x's own triangle again.
   glm::vec3 offsetOrigin(const SurfacePoint& x, const glm::vec3& direction) const {
-    const float side = glm::dot(x.geometricNormal, direction) > 0.0f ? 1.0f : -1.0f;
-    return x.position + (side * scene_.epsilon()) * x.geometricNormal;
+    return offsetRayOrigin(scene_, x, direction);
   }
   // Everything at the vertex `hit`: emission, first-hit values, next-event shadow rays (queued),
   // roulette and the continuation direction. False when the path ends there.

@@ -52,6 +52,31 @@ TEST_F(ExperimentErrors, UnknownTopLevelKey) {
   EXPECT_TRUE(contains(topMessage, "grid"));
 }
 
+TEST_F(ExperimentErrors, IndirectMethodsAndTheirParametersAreChecked) {
+  const std::string unknown = write("method.toml", "[indirect]\nmethod = \"photon_mapping\"\n");
+  const std::string message = errorOf(unknown);
+  EXPECT_TRUE(contains(message, unknown + ":2")) << message;
+  EXPECT_TRUE(contains(message, "indirect.method")) << message;
+  EXPECT_TRUE(contains(message, "instant_radiosity")) << message;  // the choices are listed
+  EXPECT_TRUE(contains(message, "lpv")) << message;
+
+  // A method's own keys: a typo, a value out of range, a bad choice.
+  const std::string typo =
+      write("typo.toml", "[indirect]\nmethod = \"instant_radiosity\"\nlight_path = 64\n");
+  const std::string typoMessage = errorOf(typo);
+  EXPECT_TRUE(contains(typoMessage, typo + ":3")) << typoMessage;
+  EXPECT_TRUE(contains(typoMessage, "indirect.light_path")) << typoMessage;
+  EXPECT_TRUE(contains(typoMessage, "light_paths")) << typoMessage;  // the valid keys
+  const std::string range = write("range.toml", "[indirect]\nmethod = \"instant_radiosity\"\n");
+  EXPECT_TRUE(contains(errorOf(range, {"indirect.clamp=-1"}), "indirect.clamp"));
+  EXPECT_TRUE(contains(errorOf(range, {"indirect.light_paths=0"}), "indirect.light_paths"));
+  EXPECT_TRUE(contains(errorOf(range, {"indirect.visibility=\"maybe\""}), "rays"));
+  EXPECT_TRUE(contains(errorOf("", {"indirect.method=rsm_gather", "indirect.pattern=spiral"}),
+                       "importance"));
+  // LPV's keys stay checked under another method (a sweep over methods shares them).
+  EXPECT_TRUE(contains(errorOf(range, {"propagation.iteratons=4"}), "propagation.iteratons"));
+}
+
 TEST_F(ExperimentErrors, UnsnappedCascadesThatCarryAreRefusedNamingBothKeys) {
   const std::string path = write("snap.toml", "[cascades]\nlevels = 3\nsnap = false\n");
   const std::string message = errorOf(path);

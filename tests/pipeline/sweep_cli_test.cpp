@@ -136,7 +136,8 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
   const Csv before = readCsv(out / "summary.csv");
   ASSERT_EQ(before.rows.size(), 6u);
   const std::vector<std::string> leading = {"config_id", "config_name", "repeat", "run_dir",
-                                            "param.propagation.iterations", "param.injection.type",
+                                            "param.propagation.iterations", "param.indirect.method",
+                                            "param.injection.type",
                                             "param.occlusion.type", "param.propagation.type",
                                             "param.rendering.type", "param.grid.resolution",
                                             "param.grid.sh_order", "param.cascades.levels",

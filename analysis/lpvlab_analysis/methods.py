@@ -1,0 +1,102 @@
+"""The indirect-light methods of a sweep side by side (issue 17, docs/methods.md).
+
+A sweep over `[indirect] method` (LPV and the many-light methods of seed 001) gets a section of
+its own: every configuration on one speed/accuracy plot, coloured by method (LPV's variants by
+their strategies), and a table with each configuration's total time, error, the ratio of its
+error to the LPV baseline's at equal time (equal_time.py: interpolated between the two baseline
+points around its time, never extrapolated) and what the method did (VPLs, gathered pairs, the
+share of the light its clamp removed; summary.csv's method.* columns).
+"""
+import html
+import math
+
+import pandas as pd
+
+from . import equal_time as ET
+from . import summary as S
+
+METHOD_COL = S.METHOD_PARAM
+FIGURES = [("method.vpls", "VPLs", "{:.0f}"),
+           ("method.gathered_pairs", "gathered pairs", "{:.3g}"),
+           ("method.clamp.removed_fraction", "clamp removed", "{:.2%}")]
+
+
+def methods_of(agg):
+    """The methods of the sweep's configurations ("lpv" where the column is missing)."""
+    if METHOD_COL not in agg.columns:
+        return pd.Series(["lpv"] * len(agg), index=agg.index)
+    return agg[METHOD_COL].fillna("lpv").astype(str).replace({"nan": "lpv", "": "lpv"})
+
+
+def has_methods(agg):
+    """Whether the sweep compares another method with LPV (or methods with each other)."""
+    methods = set(methods_of(agg))
+    return len(methods) > 1 or methods != {"lpv"}
+
+
+def by_method(agg):
+    """A copy of agg whose 'variant' is the method (LPV's rows keep their strategies' label,
+    without the swept extras), for a plot coloured by method."""
+    out = agg.copy()
+    methods = methods_of(agg)
+    out["variant"] = [("LPV " + str(v).split(" ")[0]) if m == "lpv" else m
+                      for m, v in zip(methods, agg["variant"])]
+    return out
+
+
+def table(agg, metric):
+    """One row per configuration, fastest first: configuration, method, series, total ms, error,
+    equal-time error ratio against the LPV baseline (with why it is missing), and the figures."""
+    compared = ET.compare(agg, metric).set_index("config_id") if metric in agg.columns else None
+    methods = methods_of(agg)
+    rows = []
+    for idx, r in agg.iterrows():
+        cid = str(r["config_id"])
+        row = {"configuration": str(r["config_name"]), "method": methods.loc[idx],
+               "series": str(r.get(ET.SERIES_COL, "")),
+               "total ms": float(r.get(ET.TIME_COL, math.nan)),
+               "error": float(r.get(metric, math.nan)) if metric in agg.columns else math.nan,
+               "equal-time ratio": math.nan, "why no ratio": ""}
+        if compared is not None and cid in compared.index:
+            c = compared.loc[cid]
+            row["equal-time ratio"] = float(c["time ratio"])
+            row["why no ratio"] = str(c["time status"]) if not bool(c["baseline"]) else "baseline"
+        for col, name, _ in FIGURES:
+            row[name] = float(r[col]) if col in agg.columns and pd.notna(r.get(col)) else math.nan
+        rows.append(row)
+    t = pd.DataFrame(rows)
+    return t.sort_values(["total ms", "configuration"], na_position="last", kind="mergesort").reset_index(drop=True)
+
+
+def _cell(value, fmt="{:.4g}"):
+    if isinstance(value, str):
+        return value
+    return "" if value is None or (isinstance(value, float) and math.isnan(value)) else fmt.format(value)
+
+
+def _formatted(t):
+    formats = {"total ms": "{:.1f}", "error": "{:.4g}", "equal-time ratio": "{:.3f}"}
+    formats.update({name: fmt for _, name, fmt in FIGURES})
+    return [[_cell(r[c], formats.get(c, "{:.4g}")) for c in t.columns] for _, r in t.iterrows()]
+
+
+def to_markdown(agg, metric):
+    t = table(agg, metric)
+    out = [f"Methods: {metric} (equal-time ratio: error / LPV baseline's error at the same total time)", "",
+           "| " + " | ".join(t.columns) + " |", "|" + "---|" * len(t.columns)]
+    out += ["| " + " | ".join(cells) + " |" for cells in _formatted(t)]
+    return "\n".join(out) + "\n"
+
+
+def to_html(agg, metric):
+    t = table(agg, metric)
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
+    body = []
+    for (_, r), cells in zip(t.iterrows(), _formatted(t)):
+        wins = isinstance(r["equal-time ratio"], float) and r["equal-time ratio"] < 1.0
+        tds = []
+        for c, s in zip(t.columns, cells):
+            s = html.escape(s)
+            tds.append(f"<td>{'<b>' + s + '</b>' if (c == 'equal-time ratio' and wins) else s}</td>")
+        body.append("<tr>" + "".join(tds) + "</tr>")
+    return f"<table><tr>{head}</tr>" + "".join(body) + "</table>"
