@@ -9,6 +9,7 @@ share of the light its clamp removed; summary.csv's method.* columns).
 """
 import html
 import math
+import os
 
 import pandas as pd
 
@@ -46,8 +47,15 @@ def by_method(agg):
 
 def table(agg, metric):
     """One row per configuration, fastest first: configuration, method, series, total ms, error,
-    equal-time error ratio against the LPV baseline (with why it is missing), and the figures."""
+    equal-time error ratio against the LPV baseline (with why it is missing), and the figures;
+    with several scenes a first column names each row's scene (the rows sorted by it first)."""
     compared = ET.compare(agg, metric).set_index("config_id") if metric in agg.columns else None
+    # Per scene, the baseline's fastest time and its smallest and largest errors: where a
+    # configuration lies outside the baseline's times, what can still be said of it.
+    baselines = {}
+    if compared is not None:
+        for scene, g in compared[compared["baseline"]].groupby("scene"):
+            baselines[str(scene)] = (g["total ms"].min(), g["total ms"].max(), g["error"].min(), g["error"].max())
     methods = methods_of(agg)
     rows = []
     for idx, r in agg.iterrows():
@@ -61,11 +69,35 @@ def table(agg, metric):
             c = compared.loc[cid]
             row["equal-time ratio"] = float(c["time ratio"])
             row["why no ratio"] = str(c["time status"]) if not bool(c["baseline"]) else "baseline"
+            if row["why no ratio"] == ET.OUT_OF_RANGE:
+                row["why no ratio"] = _beyond(row, baselines.get(str(c["scene"])))
         for col, name, _ in FIGURES:
             row[name] = float(r[col]) if col in agg.columns and pd.notna(r.get(col)) else math.nan
         rows.append(row)
     t = pd.DataFrame(rows)
+    # Several scenes (a report of several sweeps): a column naming each row's, sorted by it first.
+    if ET.SCENE_COL in agg.columns and agg[ET.SCENE_COL].nunique() > 1:
+        t.insert(0, "scene", [os.path.basename(str(v)) for v in agg[ET.SCENE_COL]])
+        return t.sort_values(["scene", "total ms", "configuration"], na_position="last",
+                             kind="mergesort").reset_index(drop=True)
     return t.sort_values(["total ms", "configuration"], na_position="last", kind="mergesort").reset_index(drop=True)
+
+
+def _beyond(row, baseline):
+    """Why a configuration outside the baseline's times has no equal-time ratio, and how it
+    stands against every baseline point."""
+    if baseline is None or not math.isfinite(row["error"]):
+        return ET.OUT_OF_RANGE
+    fastest, slowest, best, worst = baseline
+    faster = row["total ms"] < fastest
+    side = "faster than the fastest" if faster else "slower than the slowest"
+    if row["error"] < best:
+        verdict = "more accurate than every"
+    elif row["error"] > worst:
+        verdict = "less accurate than every"
+    else:
+        verdict = "within the errors of the"
+    return f"{side} LPV run; {verdict} LPV run"
 
 
 def _cell(value, fmt="{:.4g}"):

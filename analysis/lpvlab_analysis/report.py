@@ -23,6 +23,7 @@ import os
 import sys
 
 import numpy as np
+import pandas as pd
 
 from . import equal_time as ET
 from . import fsutil
@@ -204,15 +205,36 @@ def _thesis_section(agg, img_dir, out_dir):
     return parts
 
 
+def load_sweeps(sweep_dirs):
+    """The summaries of one or several sweep directories as one table. With several, each row's
+    run_dir becomes absolute and its config_id is prefixed with its sweep directory's name, so
+    configurations stay apart (baselines are per scene: param.scene.file)."""
+    frames = []
+    for d in sweep_dirs:
+        if not os.path.isdir(d):
+            raise S.SummaryError(f"{d}: no such sweep directory")
+        df = S.load_summary(os.path.join(d, "summary.csv"))
+        if len(sweep_dirs) > 1:
+            df["run_dir"] = [resolve_run_dir(d, row) for _, row in df.iterrows()]
+            df["run_dir"] = [os.path.abspath(r) for r in df["run_dir"]]
+            name = os.path.basename(os.path.normpath(d))
+            df["config_id"] = name + "/" + df["config_id"].astype(str)
+        frames.append(df)
+    return frames[0] if len(frames) == 1 else pd.concat(frames, ignore_index=True, sort=False)
+
+
 def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                  gpu_table=G.DEFAULT_TABLE):
-    """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. The inputs
-    (the summary, the GPU table) are read before anything is written."""
-    if not os.path.isdir(sweep_dir):
-        raise S.SummaryError(f"{sweep_dir}: no such sweep directory")
+    """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
+    may be a list of sweep directories: one report of them all, which needs out_dir. The inputs
+    (the summaries, the GPU table) are read before anything is written."""
+    sweep_dirs = list(sweep_dir) if isinstance(sweep_dir, (list, tuple)) else [sweep_dir]
+    if len(sweep_dirs) > 1 and not out_dir:
+        raise S.SummaryError("a report of several sweeps needs --out (where to write it)")
     gpus = G.load_gpus(gpu_table)
-    summary_path = os.path.join(sweep_dir, "summary.csv")
-    df = S.load_summary(summary_path)
+    df = load_sweeps(sweep_dirs)
+    sweep_dir = sweep_dirs[0]
+    summary_path = " + ".join(os.path.join(d, "summary.csv") for d in sweep_dirs)
     out_dir = out_dir or os.path.join(sweep_dir, "report")
     img_dir = os.path.join(out_dir, "img")
     os.makedirs(img_dir, exist_ok=True)
@@ -223,7 +245,7 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
     swept = S.swept_params(agg)
     numeric = [p for p in swept if S.is_numeric_param(agg, p)]
     body = [f"<h1>lpvlab sweep report</h1>",
-            f"<p class='note'>Sweep <code>{html.escape(os.path.abspath(sweep_dir))}</code>; "
+            f"<p class='note'>Sweep <code>{html.escape(', '.join(os.path.abspath(d) for d in sweep_dirs))}</code>; "
             f"{len(agg)} configurations, {len(df)} runs; generated "
             f"{datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}. "
             f"Times are medians over repeats of GPU timestamp-query times.</p>"]
@@ -352,16 +374,19 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
 
 
 def main(argv=None):
-    """CLI: report.py DIR [--metric NAME] [--out DIR/report] [--no-exr]. Exit 2 on unusable input."""
+    """CLI: report.py DIR [DIR...] [--metric NAME] [--out DIR/report] [--no-exr]. Exit 2 on
+    unusable input."""
     import argparse
     ap = argparse.ArgumentParser(description="Build an HTML report (plots, ablation table, images) of an lpvlab sweep.")
-    ap.add_argument("dir", help="sweep directory containing summary.csv and one run directory per configuration")
+    ap.add_argument("dir", nargs="+",
+                    help="sweep directory containing summary.csv and one run directory per configuration; "
+                         "several: one report of them all (needs --out)")
     ap.add_argument("--metric", default=S.DEFAULT_METRIC, help=f"error metric column (default {S.DEFAULT_METRIC})")
     ap.add_argument("--out", default=None, help="output directory (default DIR/report)")
     ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")
     a = ap.parse_args(argv)
     try:
-        idx = build_report(a.dir, a.out, a.metric, use_exr=not a.no_exr)
+        idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr)
     except (S.SummaryError, G.GpuTableError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

@@ -59,12 +59,26 @@ class MethodsTest(unittest.TestCase):
         self.assertAlmostEqual(t.loc["ir64", "equal-time ratio"], 0.01 / 0.02)
         self.assertAlmostEqual(t.loc["rsm", "equal-time ratio"], 0.04 / 0.02)
         self.assertTrue(math.isnan(t.loc["ir256", "equal-time ratio"]))  # past the baseline: no guess
-        self.assertEqual(t.loc["ir256", "why no ratio"], "out of range")
+        # Past the baseline's slowest point and below its best error.
+        self.assertEqual(t.loc["ir256", "why no ratio"],
+                         "slower than the slowest LPV run; more accurate than every LPV run")
         self.assertEqual(t.loc["lpv16", "why no ratio"], "baseline")
         self.assertEqual(t.loc["ir64", "VPLs"], 50)
         self.assertAlmostEqual(t.loc["ir64", "clamp removed"], 0.1)
         self.assertTrue(math.isnan(t.loc["rsm", "VPLs"]))
         self.assertEqual(list(M.table(frame(), RMSE)["total ms"]), [10.0, 20.0, 20.0, 40.0, 80.0])
+
+    def test_several_scenes_get_a_scene_column_and_baselines_of_their_own(self):
+        a, b = frame(), frame()
+        a["param.scene.file"] = "shared:scenes/a.gltf"
+        b["param.scene.file"] = "shared:scenes/b.gltf"
+        b["config_id"] = "b" + b["config_id"]
+        b[RMSE] = b[RMSE] * 2  # b's baseline and methods alike: the same ratios
+        t = M.table(pd.concat([a, b], ignore_index=True), RMSE)
+        self.assertEqual(list(t.columns)[0], "scene")
+        self.assertEqual(list(t["scene"]), ["a.gltf"] * 5 + ["b.gltf"] * 5)
+        ratios = t[t["configuration"] == "ir64"]["equal-time ratio"]
+        self.assertEqual([round(r, 6) for r in ratios], [0.5, 0.5])
 
     def test_markdown_and_html(self):
         md = M.to_markdown(frame(), RMSE)

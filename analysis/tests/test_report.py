@@ -52,6 +52,20 @@ class ReportTest(unittest.TestCase):
             self.assertIn("img/result_000.png", page)
         self.assertIn("../000/error_indirect.png", page)
 
+    def test_several_sweeps_in_one_report(self):
+        other = make_sweep(os.path.join(self.tmp.name, "second"))
+        out = os.path.join(self.tmp.name, "both")
+        index = report.build_report([self.dir, other], out)
+        page = self._check(index)
+        self.assertIn("12 configurations", page)  # 6 from each, kept apart by their sweep's name
+        self.assertIn("second", page)
+        with self.assertRaises(report.S.SummaryError):
+            report.build_report([self.dir, other])  # several sweeps need --out
+        r = subprocess.run([sys.executable, CLI, self.dir, other, "--out", out + "2", "--no-exr"],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(out + "2", "index.html")))
+
     def test_png_fallback_and_cli(self):
         out = os.path.join(self.tmp.name, "elsewhere")
         r = subprocess.run([sys.executable, CLI, self.dir, "--out", out, "--no-exr",

@@ -25,6 +25,8 @@ struct Options {
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
   SlurmResources slurm;                   // sweep --emit slurm: what each job asks for
   std::string metric;                     // report: the error metric of the speed/accuracy plot
+  std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
+  std::string reportOut;                  // report: where it goes ("": DIR/report)
 };
 
 // "compute: BACKEND; on the CPU: [direct, ]TABLES" from a Pipeline::computeReport().

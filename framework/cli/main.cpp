@@ -76,8 +76,13 @@ int main(int argc, char** argv) {
   summary->add_option("dir", options.out, "Sweep directory")->required();
 
   CLI::App* report = app.add_subcommand(
-      "report", "Build DIR/report/index.html: speed/accuracy plots, ablation table, images");
+      "report", "Build DIR/report/index.html: speed/accuracy plots, ablation table, images "
+                "(several sweep directories: one report of them all, written to --out)");
   report->add_option("dir", options.out, "Sweep directory (with summary.csv)")->required();
+  report->add_option("more", options.moreSweeps,
+                     "Further sweep directories in the same report (e.g. one per scene)");
+  report->add_option("--out", options.reportOut,
+                     "Report directory (default DIR/report; required with several sweeps)");
   report->add_option("--metric", options.metric,
                      "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
 

@@ -66,6 +66,9 @@ public:
   virtual void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) = 0;
   // Whether a frame depends on the frames before it (see Strategy::keepsStateBetweenFrames).
   virtual bool keepsStateBetweenFrames() const { return false; }
+  // Whether it reads the reflective shadow maps (the pipeline renders them only then: a method
+  // that makes its VPLs otherwise has no "rsm" stage).
+  virtual bool readsReflectiveShadowMaps() const = 0;
 
   // The last frame's work per stage (WorkCount, strategy.h), counted as it ran (a method's work
   // can depend on the scene: VPLs a random walk found, rays it traced).

@@ -236,7 +236,8 @@ FrameTimes Pipeline::renderFrame() {
   hostReadback_.newFrame();
   if (settings_.directLight)
     stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
-  stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
+  if (!strategies_.method || strategies_.method->readsReflectiveShadowMaps())
+    stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
   if (settings_.directLight)
     stage("direct", times, [&] {
@@ -380,7 +381,8 @@ nlohmann::json Pipeline::workReport(bool glKernels) const {
   nlohmann::json report = nlohmann::json::object();
   const double shadowTexels = double(maps.views) * maps.shadowResolution * maps.shadowResolution;
   report["shadow_maps"] = {entry({"texel", shadowTexels})};
-  report["rsm"] = {entry({"texel", rsmTexels})};
+  if (!strategies_.method || strategies_.method->readsReflectiveShadowMaps())
+    report["rsm"] = {entry({"texel", rsmTexels})};
   report["gbuffer"] = {entry({"pixel", pixels})};
   report["direct"] = {entry(direct_->work(pixels, maps.lightCount, glKernels))};
   if (const IndirectMethod* method = strategies_.method.get()) {

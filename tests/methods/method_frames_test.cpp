@@ -119,6 +119,9 @@ TEST(MethodFrames, ReportsHaveLpvsShapeWithTheMethodsStages) {
     }
     for (const char* stage : {"clear", "occlusion", "injection", "propagation"})
       EXPECT_FALSE(times.gpuMs.count(stage)) << stage;
+    // Only a method that reads the RSMs has them rendered.
+    EXPECT_EQ(times.gpuMs.count("rsm"), method.readsReflectiveShadowMaps() ? 1u : 0u);
+    EXPECT_EQ(method.readsReflectiveShadowMaps(), method.name() == "rsm_gather");
     const nlohmann::json work = pipeline.workReport();
     for (const std::string& stage : method.stageNames()) {
       ASSERT_TRUE(work.contains(stage)) << stage;

@@ -50,6 +50,7 @@ public:
   }
 
   std::vector<std::string> stageNames() const override { return {"indirect"}; }
+  bool readsReflectiveShadowMaps() const override { return true; }
 
   void prepare(const MethodSetup& setup) override {
     if (pattern_ == "all") return;
