@@ -55,11 +55,14 @@ public:
       total += luminance(power);
       cumulative_.push_back(total);
     }
-    if (!(total > 0.0) || !std::isfinite(total))
-      throw Error("light paths: the scene's lights emit no light (their power is " +
-                  std::to_string(total) + " W)");
-    for (double& c : cumulative_) c /= total;
+    if (!std::isfinite(total))
+      throw Error("light paths: the scene's lights emit an infinite power");
+    if (total > 0.0)
+      for (double& c : cumulative_) c /= total;
   }
+
+  // Lights of zero power (black, or intensity 0): no walk starts, no VPL, a black image.
+  bool dark() const { return cumulative_.empty() || !(cumulative_.back() > 0.0); }
 
   const glm::dvec3& emitted() const { return emitted_; }
 
@@ -201,6 +204,10 @@ std::vector<Vpl> traceLightPaths(const RayScene& scene, const LightPathSettings&
                                  LightPathCounts* counts) {
   if (settings.paths < 1) throw Error("light paths: at least one walk is needed");
   const Emitter emitter(scene, settings.paths);
+  if (emitter.dark()) {
+    if (counts) *counts = {};
+    return {};
+  }
   const int packets = (settings.paths + kPacketWidth - 1) / kPacketWidth;
   std::vector<PacketWalks> results(static_cast<std::size_t>(packets));
   tbb::parallel_for(tbb::blocked_range<int>(0, packets), [&](const tbb::blocked_range<int>& range) {

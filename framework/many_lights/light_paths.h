@@ -44,7 +44,7 @@ struct LightPathCounts {
 // light's disk radius).
 glm::dvec3 lightPower(const PunctualLight& light, double sceneRadius);
 
-// The walks' VPLs, in walk order. Throws an Error when the lights emit nothing.
+// The walks' VPLs, in walk order; none when the lights emit nothing.
 std::vector<Vpl> traceLightPaths(const RayScene& scene, const LightPathSettings& settings,
                                  LightPathCounts* counts = nullptr);
 
