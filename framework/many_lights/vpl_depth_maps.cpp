@@ -7,7 +7,6 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/core/error.h"
-#include "framework/many_lights/paraboloid.h"
 #include "framework/many_lights/pull_push.h"
 #include "framework/reference/embree_scene.h"
 #include "framework/reference/random.h"
@@ -24,6 +23,11 @@ bool inDisk(int column, int row, int size) {
   return glm::dot(uv, uv) <= 1.0f;
 }
 
+void keepFrames(std::span<const Vpl> vpls, VplDepthMaps& maps) {
+  maps.frames.clear();
+  for (const Vpl& vpl : vpls) maps.frames.emplace_back(vpl.normal);
+}
+
 }  // namespace
 
 bool VplDepthMaps::visible(std::size_t index, const Vpl& vpl, const glm::vec3& x,
@@ -35,7 +39,7 @@ bool VplDepthMaps::visible(std::size_t index, const Vpl& vpl, const glm::vec3& x
   const float movedDistance = glm::length(toMoved);
   if (!(movedDistance > 0.0f)) return true;
   glm::vec2 uv;
-  if (!ParaboloidFrame(vpl.normal).project(toMoved / movedDistance, uv)) return false;
+  if (!frames[index].project(toMoved / movedDistance, uv)) return false;
   const glm::ivec2 t = paraboloidTexel(uv, size);
   const float depth = map(index)[std::size_t(t.y) * size + t.x];
   return movedDistance <= depth * (1.0f + settings.relativeBias);
@@ -47,6 +51,7 @@ std::size_t renderDepthMapsByRays(const EmbreeScene& scene, std::span<const Vpl>
   const std::size_t texels = std::size_t(size) * size;
   maps.settings = settings;
   maps.depths.assign(vpls.size() * texels, kNothing);
+  keepFrames(vpls, maps);
   std::vector<std::size_t> rays(vpls.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vpls.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -64,7 +69,7 @@ std::size_t renderDepthMapsByRays(const EmbreeScene& scene, std::span<const Vpl>
     };
     for (std::size_t v = range.begin(); v != range.end(); ++v) {
       const Vpl& vpl = vpls[v];
-      const ParaboloidFrame frame(vpl.normal);
+      const ParaboloidFrame& frame = maps.frames[v];
       const glm::vec3 origin = vpl.position + scene.epsilon() * vpl.normal;
       for (int row = 0; row < size; ++row)
         for (int column = 0; column < size; ++column) {
@@ -128,6 +133,7 @@ void splatImperfectShadowMaps(const Scene& scene, const SurfacePointSampler& sam
   const std::size_t texels = std::size_t(size) * size;
   maps.settings = settings;
   maps.depths.assign(vpls.size() * texels, kHole);
+  keepFrames(vpls, maps);
   std::vector<ImperfectCounts> perVpl(vpls.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vpls.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -135,7 +141,7 @@ void splatImperfectShadowMaps(const Scene& scene, const SurfacePointSampler& sam
     std::vector<float> scratch;
     for (std::size_t v = range.begin(); v != range.end(); ++v) {
       const Vpl& vpl = vpls[v];
-      const ParaboloidFrame frame(vpl.normal);
+      const ParaboloidFrame& frame = maps.frames[v];
       float* map = maps.depths.data() + v * texels;
       ImperfectCounts& c = perVpl[v];
       sampler.sample(scene, imperfect.seed, v, imperfect.pointsPerVpl, points);

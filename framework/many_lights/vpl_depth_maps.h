@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "framework/many_lights/paraboloid.h"
 #include "framework/many_lights/vpl.h"
 
 namespace lpvlab {
@@ -38,11 +39,14 @@ struct DepthMapSettings {
 struct VplDepthMaps {
   DepthMapSettings settings;
   std::vector<float> depths;  // per VPL, size * size row by row (row 0: v = -1)
+  std::vector<ParaboloidFrame> frames;  // per VPL, made with its map (not per lookup)
 
   const float* map(std::size_t vpl) const {
     return depths.data() + vpl * std::size_t(settings.size) * settings.size;
   }
-  std::size_t memoryBytes() const { return depths.capacity() * sizeof(float); }
+  std::size_t memoryBytes() const {
+    return depths.capacity() * sizeof(float) + frames.capacity() * sizeof(ParaboloidFrame);
+  }
   // Whether `vpl` (the index-th) lights receiver x with unit normal n.
   bool visible(std::size_t index, const Vpl& vpl, const glm::vec3& x, const glm::vec3& n) const;
 };
