@@ -31,6 +31,7 @@ from . import gpu_estimate as G
 from . import images
 from . import methods
 from . import plots
+from . import radiosity
 from . import sequences
 from . import summary as S
 from . import tables
@@ -278,6 +279,21 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
         body.append(methods.to_html(agg, metric))
         fsutil.write_text(os.path.join(out_dir, "methods.md"), methods.to_markdown(agg, metric))
         body.append("<p class='note'>Markdown version: <a href='methods.md'>methods.md</a></p>")
+
+    if radiosity.has_radiosity(agg):
+        _log("plot: radiosity")
+        body.append("<h2>Radiosity</h2>")
+        body.append("<p class='note'>Radiosity solves once and then only displays its solution while nothing "
+                    "moves: in the plots above it stands at its frame time (the display). Here its error stands "
+                    "against its time to solution (meshing, form factors, the lights' first shot, the solve and "
+                    "adaptive passes), beside LPV's frame times (LPV solves anew every frame); labels are patch "
+                    "counts.</p>")
+        p = radiosity.plot(agg, os.path.join(img_dir, "radiosity_time_to_solution.png"), metric)
+        if p:
+            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        body.append(radiosity.to_html(agg, metric))
+        fsutil.write_text(os.path.join(out_dir, "radiosity.md"), radiosity.to_markdown(agg, metric))
+        body.append("<p class='note'>Markdown version: <a href='radiosity.md'>radiosity.md</a></p>")
 
     body.append("<h2>Ablation table</h2>")
     body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")

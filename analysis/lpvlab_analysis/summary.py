@@ -14,7 +14,8 @@ import numpy as np
 import pandas as pd
 
 STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "occlusion", "injection",
-          "propagation", "vpls", "indirect", "total"]
+          "propagation", "vpls", "vpl_shadow_maps", "meshing", "form_factors", "first_shot", "solve",
+          "refine", "indirect", "total"]
 TYPE_PARAMS = ["param.injection.type", "param.occlusion.type", "param.propagation.type",
                "param.rendering.type"]
 # [indirect] method: "lpv" (the strategies above) or another indirect-light method, whose rows

@@ -349,6 +349,16 @@ std::string configurationToml(const std::string& file, const SweepConfiguration&
 
 namespace {
 
+// `value` with every array left out, objects kept (nested ones too).
+nlohmann::json withoutArrays(const nlohmann::json& value) {
+  if (!value.is_object()) return value;
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [key, child] : value.items())
+    if (!child.is_array()) out[key] = withoutArrays(child);
+  return out;
+}
+
+
 // A manifest's work reports (Pipeline::workReport) as summary columns: per stage the units of
 // each kind (work.<stage>.<unit>s), and the multiply-adds and bytes of the modelled kernels; the
 // same of the GL kernels (gpu_work.<stage>.*, from the manifest's gpu_work).
@@ -416,14 +426,15 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;
   std::set<std::string> temporalColumns;
-  // Another indirect method's figures (its manifest's indirect_method.statistics): each number,
-  // as method.<path> (e.g. method.clamp.removed_fraction).
+  // Another indirect method's figures (its manifest's indirect_method.statistics): each number
+  // outside arrays, as method.<path> (e.g. method.clamp.removed_fraction); arrays (a solver's
+  // convergence log) stay in the manifest.
   std::map<std::string, std::map<std::string, double>> methodById;
   std::set<std::string> methodColumns;
   for (const auto& [id, m] : manifests) {
     reading = (root / id / "manifest.json").string();
     if (const auto* statistics = findPath(m, "indirect_method.statistics"); statistics) {
-      const nlohmann::json flat = statistics->flatten();  // "/clamp/c" -> value
+      const nlohmann::json flat = withoutArrays(*statistics).flatten();  // "/clamp/c" -> value
       for (const auto& [path, value] : flat.items())
         if (value.is_number()) {
           std::string column = "method" + path;

@@ -69,6 +69,9 @@ public:
   // Whether it reads the reflective shadow maps (the pipeline renders them only then: a method
   // that makes its VPLs otherwise has no "rsm" stage).
   virtual bool readsReflectiveShadowMaps() const = 0;
+  // Whether emissive surfaces light the scene through it (area lights): a scene lit only by them
+  // then runs (the pipeline otherwise needs a point, spot or directional light).
+  virtual bool lightsWithEmissiveSurfaces() const { return false; }
 
   // The last frame's work per stage (WorkCount, strategy.h), counted as it ran (a method's work
   // can depend on the scene: VPLs a random walk found, rays it traced).

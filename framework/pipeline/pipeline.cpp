@@ -71,7 +71,10 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
       lights_(scene.lights),
       sceneBounds_(scene.bounds()),
       strategies_(std::move(strategies)) {
-  if (scene.lights.empty())
+  const bool emissiveLight = strategies_.method && strategies_.method->lightsWithEmissiveSurfaces() &&
+                             std::any_of(scene.materials.begin(), scene.materials.end(),
+                                         [](const Material& m) { return m.emits(); });
+  if (scene.lights.empty() && !emissiveLight)
     throw Error(scene.source + ": the scene has no light the LPV pipeline can use (point, spot or "
                 "directional; emissive surfaces are shown but light nothing in LPV runs); add one "
                 "under [[lights]] in the experiment");

@@ -1,5 +1,7 @@
 #include "framework/pipeline/raster_passes.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "framework/core/error.h"
@@ -81,10 +83,14 @@ void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
 std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int views,
                                          const std::string& label) {
   const int r = resolution;
-  maps.rsmPosition = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " position");
-  maps.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " normal");
-  maps.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, views, label + " flux");
-  maps.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, views, label + " depth");
+  // A scene lit only by emissive surfaces (a method that reads them, e.g. radiosity) has no
+  // view: one layer is kept so the textures exist for the shaders' bindings; nothing draws into
+  // it, and every reader stops at `views`.
+  const int layers = std::max(views, 1);
+  maps.rsmPosition = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, label + " position");
+  maps.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, label + " normal");
+  maps.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, label + " flux");
+  maps.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, layers, label + " depth");
   std::vector<gl::Framebuffer> framebuffers(static_cast<std::size_t>(views));
   for (int layer = 0; layer < views; ++layer) {
     gl::Framebuffer& fb = framebuffers[static_cast<std::size_t>(layer)];
@@ -110,7 +116,7 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   const int r = rsmResolution, s = shadowResolution;
   rsmFramebuffers_ = allocateRsm(maps_, r, layers, "rsm");
   maps_.shadowDepth =
-      gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, s, s, layers, "shadow maps");
+      gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, s, s, std::max(layers, 1), "shadow maps");
   // Hardware depth comparison with bilinear filtering: each shadow tap is a 2x2 PCF.
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);

@@ -17,7 +17,10 @@ const std::vector<std::vector<std::string>> kMethods = {
     {"indirect.method=rsm_gather", "indirect.pattern=all", "light_maps.rsm_resolution=16"},
     {"indirect.method=instant_radiosity", "indirect.light_paths=32",
      "indirect.visibility=\"shadow_maps\"", "indirect.shadow_map_size=16"},
-    {"indirect.method=imperfect_shadow_maps", "indirect.light_paths=32", "indirect.points_per_vpl=256"}};
+    {"indirect.method=imperfect_shadow_maps", "indirect.light_paths=32", "indirect.points_per_vpl=256"},
+    {"indirect.method=radiosity", "indirect.patch_size=0.25", "indirect.form_factors=rays", "indirect.rays=64"},
+    {"indirect.method=radiosity", "indirect.patch_size=0.5", "indirect.hemicube_resolution=16",
+     "indirect.solver=shooting", "indirect.adaptive_levels=1"}};
 // Incremental instant radiosity keeps its VPLs between frames: a moved light gives it a set that
 // differs from a fresh one (its own tests: incremental_instant_radiosity_test.cpp).
 const std::vector<std::vector<std::string>> kKeepingMethods = {
