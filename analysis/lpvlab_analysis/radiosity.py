@@ -9,6 +9,7 @@ them, and tabulates patches, form-factor estimator, solver iterations and the sp
 """
 import html
 import math
+import os
 
 import matplotlib
 matplotlib.use("Agg")
@@ -85,33 +86,50 @@ def to_html(agg, metric):
     return f"<table><tr>{head}</tr>{body}</table>"
 
 
+def _scenes(agg):
+    """Each row's scene (the file's base name), "" without a scene column."""
+    if ET.SCENE_COL not in agg.columns:
+        return pd.Series([""] * len(agg), index=agg.index)
+    return agg[ET.SCENE_COL].fillna("").astype(str).map(os.path.basename)
+
+
 def plot(agg, path, metric):
     """Error against time to solution: radiosity's runs by series (labelled with their patch
-    counts), LPV's runs at their frame time (LPV solves anew every frame). None without data."""
+    counts), LPV's runs at their frame time (LPV solves anew every frame); with several scenes (a
+    report of several sweeps) one marker per scene and one LPV line per scene. None without data."""
     if metric not in agg.columns or SOLUTION_COL not in agg.columns:
         return None
+    scenes = _scenes(agg)
+    several = scenes.nunique() > 1
+    markers = dict(zip(sorted(set(scenes)), "osDv^<>p"))
     rad = agg[is_radiosity(agg)]
-    lpv = agg[methods.methods_of(agg) == "lpv"]
     points = []
-    for _, r in rad.iterrows():
+    for idx, r in rad.iterrows():
         t, e = float(r.get(SOLUTION_COL, math.nan)), float(r.get(metric, math.nan))
         if math.isfinite(t) and math.isfinite(e) and t > 0:
-            points.append((str(r.get(ET.SERIES_COL, "radiosity")), t, e, r.get("method.patches", math.nan)))
+            points.append((str(r.get(ET.SERIES_COL, "radiosity")), t, e, r.get("method.patches", math.nan),
+                           scenes.loc[idx]))
     if not points:
         return None
     fig, ax = plt.subplots(figsize=(7, 4.5))
     colours = plots._colours({p[0] for p in points})
-    for series, c in colours.items():
-        mine = [p for p in points if p[0] == series]
-        ax.scatter([p[1] for p in mine], [p[2] for p in mine], color=c, label=f"radiosity: {series}", s=30, zorder=3)
+    for (series, scene) in sorted({(p[0], p[4]) for p in points}):
+        mine = [p for p in points if p[0] == series and p[4] == scene]
+        label = f"radiosity: {series}" + (f" ({scene})" if several else "")
+        ax.scatter([p[1] for p in mine], [p[2] for p in mine], color=colours[series], marker=markers[scene],
+                   label=label, s=30, zorder=3)
         for p in mine:
             if isinstance(p[3], float) and math.isfinite(p[3]):
                 ax.annotate(f"{p[3]:.0f}", (p[1], p[2]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    lpv = agg[methods.methods_of(agg) == "lpv"]
     if ET.TIME_COL in lpv.columns and len(lpv):
-        t = lpv[ET.TIME_COL].astype(float)
-        e = lpv[metric].astype(float)
-        ok = t.notna() & e.notna()
-        ax.plot(t[ok], e[ok], "k^--", lw=0.8, ms=5, label="LPV (frame time: solves every frame)", zorder=2)
+        for scene in sorted(set(scenes.loc[lpv.index])):
+            g = lpv[scenes.loc[lpv.index] == scene].sort_values(ET.TIME_COL)
+            t, e = g[ET.TIME_COL].astype(float), g[metric].astype(float)
+            ok = t.notna() & e.notna()
+            if ok.any():
+                ax.plot(t[ok], e[ok], "k--", marker=markers[scene], lw=0.8, ms=5, zorder=2,
+                        label="LPV (frame time: solves every frame)" + (f" ({scene})" if several else ""))
     ax.set_xscale("log")
     ax.set_xlabel("time to solution (ms; radiosity: method.solution_ms.total)")
     ax.set_ylabel(metric[len("metric."):] + " (lower is better)")

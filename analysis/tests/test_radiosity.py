@@ -56,6 +56,12 @@ class RadiosityTest(unittest.TestCase):
             path = R.plot(frame(), os.path.join(tmp, "r.png"), RMSE)
             self.assertTrue(os.path.getsize(path) > 1000)
             self.assertIsNone(R.plot(frame().drop(columns=[R.SOLUTION_COL]), os.path.join(tmp, "s.png"), RMSE))
+            # Two scenes (a report of several sweeps): one marker and one LPV line per scene.
+            a, b = frame(), frame()
+            a["param.scene.file"], b["param.scene.file"] = "shared:scenes/a.obj", "shared:scenes/b.gltf"
+            both = pd.concat([a, b], ignore_index=True)
+            self.assertTrue(os.path.getsize(R.plot(both, os.path.join(tmp, "t.png"), RMSE)) > 1000)
+            self.assertEqual(sorted(set(R._scenes(both))), ["a.obj", "b.gltf"])
 
     def test_report_has_the_section_only_with_radiosity(self):
         with tempfile.TemporaryDirectory() as tmp:
