@@ -25,7 +25,8 @@ struct FormFactor {
 
 class FormFactorRows {
 public:
-  explicit FormFactorRows(std::size_t sides = 0) : rows_(sides), computed_(sides, false) {}
+  FormFactorRows() = default;
+  explicit FormFactorRows(std::size_t sides) : rows_(sides), computed_(sides, false) {}
 
   std::size_t sides() const { return rows_.size(); }
   bool has(std::size_t i) const { return computed_[i]; }

@@ -104,6 +104,8 @@ public:
 
   void render(MethodFrame& frame) override {
     work_ = {};
+    // A change starts a new solution: its time is this frame's solution stages alone.
+    if (geometryStale_ || lightsStale_) solutionMs_.clear();
     // The solution's stages time themselves too: a run's medians are of frames after the first,
     // which redo only the display while nothing moves, so the cost of reaching the solution is
     // kept apart (statistics: solution_ms), as the report shows it.
@@ -167,8 +169,8 @@ public:
   }
 
   std::map<std::string, std::vector<WorkCount>> work() const override {
-    // A row entry read by the solve: a multiply-add of RGB doubles (6 flops) and 8 bytes. A
-    // hemicube pixel read back: a lookup and an add. Rays are Embree's, counted as rays.
+    // A row entry read by the solve: a multiply-add of RGB doubles (6 flops) and 8 bytes. Form
+    // factors count hemicubes (GL's rasterisation) or rays (Embree's traversal), not modelled.
     std::map<std::string, std::vector<WorkCount>> out;
     out["meshing"] = {{"patch", work_.patches, 40.0, double(sizeof(Patch))}};
     std::vector<WorkCount> ff = {{estimator_ ? estimator_->workUnit() : "row", work_.formFactorWork, 0.0, 0.0}};
