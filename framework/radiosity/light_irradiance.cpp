@@ -6,7 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "framework/math/shared.h"
+#include "framework/reference/punctual_arrival.h"
 
 namespace lpvlab {
 
@@ -46,28 +46,12 @@ LightIrradiance lightIrradiance(const PatchMesh& mesh, const PatchRayScene& scen
     for (const glm::vec2& b : points) {
       const glm::vec3 x = pointOn(patch, b.x, b.y) + epsilon * n;
       for (const PunctualLight& light : lights) {
-        glm::vec3 toLight, arriving;
-        float distance;
-        if (light.type == LightType::Directional) {
-          toLight = -light.direction;
-          distance = std::numeric_limits<float>::infinity();
-          arriving = light.radiant;
-        } else {
-          const glm::vec3 offset = light.position - x;
-          const float distance2 = glm::dot(offset, offset);
-          if (!(distance2 > 0.0f)) continue;
-          distance = std::sqrt(distance2);
-          toLight = offset / distance;
-          const float falloff = light.type == LightType::Spot
-                                    ? float(shared::spotFalloff(glm::dot(light.direction, -toLight),
-                                                                light.cosInner, light.cosOuter))
-                                    : 1.0f;
-          arriving = light.radiant * (falloff / distance2);
-        }
-        const float cosine = glm::dot(n, toLight);
-        if (!(cosine > 0.0f) || !glm::any(glm::greaterThan(arriving, glm::vec3(0.0f)))) continue;
-        packet.set(lane, x, toLight, 0.0f, distance);
-        weights[lane++] = arriving * cosine;
+        PunctualArrival a;
+        if (!punctualArrival(light, x, a)) continue;
+        const float cosine = glm::dot(n, a.toLight);
+        if (!(cosine > 0.0f) || !glm::any(glm::greaterThan(a.arriving, glm::vec3(0.0f)))) continue;
+        packet.set(lane, x, a.toLight, 0.0f, a.distance);
+        weights[lane++] = a.arriving * cosine;
         if (lane == kPacketWidth) flush();
       }
     }

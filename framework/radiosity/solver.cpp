@@ -182,6 +182,18 @@ RadiositySolution shoot(const RadiositySystem& s, FormFactorRows& rows, const Ro
 
 }  // namespace
 
+RadiositySystem radiositySystem(const PatchMesh& mesh) {
+  RadiositySystem s;
+  for (std::size_t i = 0; i < mesh.sides(); ++i) {
+    const Patch& p = mesh.patches[i / 2];
+    s.area.push_back(p.area);
+    s.albedo.emplace_back(p.albedo);
+    s.exitance.emplace_back(p.exitance);
+  }
+  s.lightIrradiance.assign(mesh.sides(), glm::dvec3(0.0));
+  return s;
+}
+
 RadiositySolver radiositySolverFromName(const std::string& name) {
   if (name == "jacobi") return RadiositySolver::Jacobi;
   if (name == "gauss_seidel") return RadiositySolver::GaussSeidel;

@@ -36,6 +36,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/radiosity/form_factors.h"
+#include "framework/radiosity/patches.h"
 
 namespace lpvlab {
 
@@ -46,6 +47,10 @@ struct RadiositySystem {
   std::vector<glm::dvec3> lightIrradiance;  // P, W/m^2
   std::size_t sides() const { return area.size(); }
 };
+
+// The system of a patch mesh without punctual light (lightIrradiance zeros): per side its
+// patch's area, albedo and exitance.
+RadiositySystem radiositySystem(const PatchMesh& mesh);
 
 enum class RadiositySolver { Jacobi, GaussSeidel, Shooting };
 RadiositySolver radiositySolverFromName(const std::string& name);  // as the experiment names them

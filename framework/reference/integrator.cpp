@@ -7,6 +7,7 @@
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
 #include "framework/reference/hemisphere_sampling.h"
+#include "framework/reference/punctual_arrival.h"
 
 namespace lpvlab {
 
@@ -59,27 +60,11 @@ void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflect
 
   // Every punctual light: E = I falloff cos / r^2 (point, spot) or E_perp cos (directional).
   for (const PunctualLight& light : lights_.punctual()) {
-    glm::vec3 toLight, arriving;
-    float distance;
-    if (light.type == LightType::Directional) {
-      toLight = -light.direction;
-      distance = kInfinity;
-      arriving = light.radiant;
-    } else {
-      const glm::vec3 offset = light.position - x.position;
-      const float distance2 = glm::dot(offset, offset);
-      if (!(distance2 > 0.0f)) continue;
-      distance = std::sqrt(distance2);
-      toLight = offset / distance;
-      const float falloff = light.type == LightType::Spot
-                                ? float(shared::spotFalloff(glm::dot(light.direction, -toLight),
-                                                            light.cosInner, light.cosOuter))
-                                : 1.0f;
-      arriving = light.radiant * (falloff / distance2);
-    }
-    const float cosine = glm::dot(n, toLight);
-    if (cosine > 0.0f && glm::any(glm::greaterThan(arriving, glm::vec3(0.0f))))
-      queue(toLight, distance, arriving * cosine);
+    PunctualArrival a;
+    if (!punctualArrival(light, x.position, a)) continue;
+    const float cosine = glm::dot(n, a.toLight);
+    if (cosine > 0.0f && glm::any(glm::greaterThan(a.arriving, glm::vec3(0.0f))))
+      queue(a.toLight, a.distance, a.arriving * cosine);
   }
 
   // One point on one emissive triangle, MIS-weighted against the BRDF-sampled continuation; the

@@ -23,23 +23,11 @@ struct Problem {
   FormFactorRows rows;
 };
 
-RadiositySystem systemOf(const PatchMesh& mesh) {
-  RadiositySystem s;
-  for (std::size_t i = 0; i < mesh.sides(); ++i) {
-    const Patch& p = mesh.patches[i / 2];
-    s.area.push_back(p.area);
-    s.albedo.emplace_back(p.albedo);
-    s.exitance.emplace_back(p.exitance);
-  }
-  s.lightIrradiance.assign(mesh.sides(), glm::dvec3(0.0));
-  return s;
-}
-
 // Every side's row by rays.
 Problem problem(Scene scene, float patchSize, int rays) {
   Problem out{std::move(scene), {}, {}, {}};
   out.mesh = meshPatches(out.scene, patchSize, 100000);
-  out.system = systemOf(out.mesh);
+  out.system = radiositySystem(out.mesh);
   out.rows = FormFactorRows(out.mesh.sides());
   const PatchRayScene rayScene(out.scene, out.mesh);
   std::vector<std::uint32_t> all(out.mesh.sides());

@@ -264,14 +264,7 @@ private:
       estimator_ = std::make_unique<RayFormFactors>(mesh_, *rayScene_, rays_, seed_);
     rows_ = FormFactorRows(mesh_.sides());
     solver_.rowBatch = estimator_->batch();
-    system_ = {};
-    for (std::size_t s = 0; s < mesh_.sides(); ++s) {
-      const Patch& p = mesh_.patches[s / 2];
-      system_.area.push_back(p.area);
-      system_.albedo.emplace_back(p.albedo);
-      system_.exitance.emplace_back(p.exitance);
-    }
-    system_.lightIrradiance.assign(mesh_.sides(), glm::dvec3(0.0));
+    system_ = radiositySystem(mesh_);
     work_.patches += double(mesh_.patches.size());
     solved_ = false;
     lightsStale_ = true;
