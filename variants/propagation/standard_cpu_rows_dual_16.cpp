@@ -1,0 +1,9 @@
+// Standard propagation's row kernels on dual numbers for SH order 3 (16 coefficients), on every
+// instruction set: one of three translation units (standard_cpu_kernels.h says why).
+#include "variants/propagation/standard_cpu_kernels.h"
+
+namespace lpvlab {
+
+RowsFunction<Dual> standardDualRows16(const std::string& isa) { return rowsFor<16, Dual>(isa); }
+
+}  // namespace lpvlab
