@@ -30,6 +30,7 @@ from . import fsutil
 from . import gpu_estimate as G
 from . import images
 from . import methods
+from . import particles
 from . import plots
 from . import radiosity
 from . import sequences
@@ -294,6 +295,20 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
         body.append(radiosity.to_html(agg, metric))
         fsutil.write_text(os.path.join(out_dir, "radiosity.md"), radiosity.to_markdown(agg, metric))
         body.append("<p class='note'>Markdown version: <a href='radiosity.md'>radiosity.md</a></p>")
+
+    if particles.has_particles(agg):
+        _log("plot: particles")
+        body.append("<h2>Particles</h2>")
+        body.append("<p class='note'>Runs with particle systems (docs/particles.md): frame time and error "
+                    "against the number of particles alive at frame 0, one line per drawing and scene (seed 002, "
+                    "chapter 5.2, measured FPS only; here the error against the path-traced reference of the "
+                    "same particles too).</p>")
+        p = particles.plot(agg, os.path.join(img_dir, "particles_count.png"), metric)
+        if p:
+            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        body.append(particles.to_html(agg, metric))
+        fsutil.write_text(os.path.join(out_dir, "particles.md"), particles.to_markdown(agg, metric))
+        body.append("<p class='note'>Markdown version: <a href='particles.md'>particles.md</a></p>")
 
     body.append("<h2>Ablation table</h2>")
     body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")

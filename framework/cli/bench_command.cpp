@@ -9,6 +9,7 @@
 #include "framework/cli/commands.h"
 #include "framework/io/atomic_file.h"
 #include "framework/experiment/run.h"
+#include "framework/particles/particle_billboards.h"
 
 namespace lpvlab::cli {
 
@@ -37,6 +38,7 @@ int benchCommand(const Options& options) {
                   << e.warmupFrames << " warm-up + " << e.repeats << " repeats, medians (ms)\n";
       }
       Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+      const ParticleBillboardSet billboards(e.particles, e.animation.frameTime(0), shaders, pipeline);
       const std::size_t cells = pipeline.propagatedCells();  // every cascade level's
       const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
       if (!header) {

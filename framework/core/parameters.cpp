@@ -280,6 +280,27 @@ void applyOverride(toml::table& root, std::string_view assignment) {
   for (auto dot = rest.find('.'); dot != std::string_view::npos; dot = rest.find('.')) {
     const std::string part(rest.substr(0, dot));
     rest.remove_prefix(dot + 1);
+    // "name[i]": table i of the array of tables `name` ([[particles]], [[lights]]), which must
+    // exist (an override changes a table the file has; it cannot say what the others would be).
+    const auto open = part.find('[');
+    if (open != std::string::npos) {
+      const std::string name = part.substr(0, open), digits = part.substr(open + 1, part.size() - open - 2);
+      const bool number = part.back() == ']' && !digits.empty() &&
+                          digits.find_first_not_of("0123456789") == std::string::npos && digits.size() < 9;
+      if (!number)
+        throw Error("command line: override '" + path + "': '" + part +
+                    "' is not of the form name[index] (e.g. particles[0].emitters[1].rate=100)");
+      const std::size_t index = std::stoul(digits);
+      toml::array* array = table->get(name) ? table->get(name)->as_array() : nullptr;
+      if (!array || !array->is_array_of_tables())
+        throw Error("command line: override '" + path + "': '" + name +
+                    "' is not an array of tables ([[" + name + "]]) here");
+      if (index >= array->size())
+        throw Error("command line: override '" + path + "': there are " +
+                    std::to_string(array->size()) + " [[" + name + "]] tables (indices from 0)");
+      table = (*array)[index].as_table();
+      continue;
+    }
     toml::node* child = table->get(part);
     if (!child) child = &table->insert_or_assign(part, toml::table{}).first->second;
     if (!child->is_table())

@@ -78,7 +78,8 @@ private:
 };
 
 // Applies "a.b.c=value" overrides (value parsed as a TOML value, falling back to a string) to a
-// table, creating sub-tables as needed. Used for command-line overrides.
+// table, creating sub-tables as needed. "name[i]" in the path is table i of an existing array of
+// tables ("particles[0].emitters[0].rate=400"). Used for command-line overrides and sweeps.
 void applyOverride(toml::table& root, std::string_view assignment);
 
 // Reads a TOML file; a syntax error names the file, line and column.

@@ -9,6 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/sweep.h"
+#include "framework/particles/particle_file.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
@@ -18,6 +19,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr float kDegrees = float(M_PI) / 180.0f;
+// The most triangles all copies of one particle system's model may add to the scene (they are
+// stored as the scene's meshes: 30 million take about 2 GB with their vertices).
+constexpr std::size_t kMaxParticleTriangles = 30'000'000;
 
 Light readLight(Params& p) {
   Light light;
@@ -152,6 +156,18 @@ std::vector<std::unique_ptr<Interface>> createStage(Params table, const std::str
 
 }  // namespace
 
+std::vector<std::size_t> setSceneTime(Experiment& experiment, double seconds) {
+  applyAnimation(experiment.animation, seconds, experiment.scene, experiment.camera);
+  std::vector<std::size_t> alive;
+  for (const ParticleGeometry& particles : experiment.particles)
+    alive.push_back(particles.place(experiment.scene, seconds));
+  return alive;
+}
+
+bool movesGeometry(const Experiment& experiment) {
+  return experiment.animation.movesGeometry() || !experiment.particles.empty();
+}
+
 std::string sharedDirectory() {
   if (const char* env = std::getenv("LPVLAB_SHARED_DIR")) return env;
   return LPVLAB_SHARED_DIR;
@@ -205,6 +221,21 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   if (cameraGiven) e.camera = readCamera(cameraParams, e.scene);
   e.animation = readAnimation(animationParams, e.scene, e.camera, cameraGiven);
   applyAnimation(e.animation, e.animation.frameTime(0), e.scene, e.camera);
+  std::vector<Params> particleTables = params.tables("particles");
+  for (std::size_t i = 0; i < particleTables.size(); ++i) {
+    ParticleSettings settings = readParticleSettings(particleTables[i], int(i));
+    Params& table = settings.table;
+    try {
+      const std::string modelPath = resolveScenePath(settings.model, path);
+      const ParticleModel model =
+          particleModel(loadScene ? loadScene(modelPath) : loadSceneByName(modelPath), settings.modelMeshes);
+      e.particles.emplace_back(std::move(settings.system), model, e.scene, e.animation.frameTime(0),
+                               kMaxParticleTriangles, settings.drawing);
+    } catch (const Error& error) {
+      throw Error(table.where("model") + ": " + error.what());
+    }
+    table.finish();
+  }
 
   Params output = params.table("output");
   e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});

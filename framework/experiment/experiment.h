@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "framework/animation/animation.h"
+#include "framework/particles/particle_geometry.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/reference_cache.h"
 #include "framework/scene/scene.h"
@@ -50,6 +51,9 @@ struct Experiment {
   Scene scene;                  // at frame 0 of the animation (as loaded when nothing moves)
   Camera camera;
   Animation animation;  // [animation]: one frame where the file has none
+  // [[particles]]: each system's copies of its model, meshes of `scene` placed for the frame's
+  // time beside what the animation moves (setSceneTime).
+  std::vector<ParticleGeometry> particles;
   PipelineSettings settings;
   Strategies strategies;
   int warmupFrames = 2;
@@ -78,6 +82,13 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
 // [sweep] or [fit] table); `path` names it in messages and anchors relative scene files.
 Experiment loadExperiment(const toml::table& root, const std::string& path,
                           const SceneLoader& loadScene = {});
+
+// Sets `experiment`'s scene and camera to their state at `seconds`: the animation's camera,
+// lights and meshes, then the particles alive then. Returns how many particles each system has
+// alive.
+std::vector<std::size_t> setSceneTime(Experiment& experiment, double seconds);
+// Whether geometry moves between frames: meshes the animation moves, or particles.
+bool movesGeometry(const Experiment& experiment);
 
 // The folder "shared:<path>" scene references are relative to: env LPVLAB_SHARED_DIR, else the
 // build's default (the ../shared beside the source tree).

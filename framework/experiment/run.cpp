@@ -9,6 +9,7 @@
 #include "framework/experiment/sequence.h"
 #include "framework/io/atomic_file.h"
 #include "framework/metrics/metrics.h"
+#include "framework/particles/particle_billboards.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
@@ -61,6 +62,8 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   ShaderCompiler shaders;
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
                     std::move(experiment.strategies), shaders);
+  const ParticleBillboardSet billboards(experiment.particles, experiment.animation.frameTime(0),
+                                        shaders, pipeline);
   const TimingReport timing = measureFrames(pipeline, experiment.warmupFrames, experiment.repeats);
   std::vector<NamedImage> aovs = pipeline.readOutputs();
   requireFiniteImages(aovs);

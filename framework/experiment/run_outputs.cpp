@@ -122,6 +122,24 @@ nlohmann::json cascadeLevelsJson(const Pipeline& pipeline) {
   return levels;
 }
 
+// Each particle system's size: its model, the most copies alive at once (the triangles it adds to
+// the scene) and how many are alive at frame 0 (a sequence's frame records give every frame's).
+nlohmann::json particlesJson(const Experiment& experiment) {
+  nlohmann::json systems = nlohmann::json::array();
+  for (const ParticleGeometry& particles : experiment.particles) {
+    const std::size_t capacity = particles.system().capacity();
+    systems.push_back(
+        {{"name", particles.system().name},
+         {"model", particles.model().source},
+         {"model_triangles", particles.model().triangleCount()},
+         {"capacity", capacity},
+         {"triangles", capacity * particles.model().triangleCount()},
+         {"alive_at_frame_0",
+          particlesAt(particles.system(), experiment.animation.frameTime(0)).size()}});
+  }
+  return systems;
+}
+
 }  // namespace
 
 nlohmann::json describeRun(const Experiment& experiment, const GlContext& context,
@@ -155,6 +173,7 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
           {"memory_bytes", pipeline.memoryReport()},
           {"work", pipeline.workReport()},
           {"gpu_work", pipeline.workReport(true)}};
+  if (!experiment.particles.empty()) description["particles"] = particlesJson(experiment);
   if (const IndirectMethod* method = pipeline.strategies().method.get()) {
     // No light grid: what the method's last frame did instead.
     description.erase("propagation_cell_iterations_per_second");

@@ -21,6 +21,7 @@
 #include "framework/experiment/sequence_temporal.h"
 #include "framework/io/atomic_file.h"
 #include "framework/io/child_process.h"
+#include "framework/particles/particle_billboards.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
@@ -151,7 +152,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   std::optional<FrameState> previous;
   if (first > 0) {
     const int frame = first - 1;
-    applyAnimation(animation, animation.frameTime(frame), experiment.scene, experiment.camera);
+    setSceneTime(experiment, animation.frameTime(frame));
     const std::string stem = (dir / frameStem(frame, animation.frames)).string();
     previous = FrameState{experiment.camera,
                           readFrameRecord(stem + ".json").at("scene_hash").get<std::string>(),
@@ -176,20 +177,24 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
               << " again (not written): the composition keeps state between frames\n";
 
   ShaderCompiler shaders;
-  applyAnimation(animation, animation.frameTime(start), experiment.scene, experiment.camera);
+  setSceneTime(experiment, animation.frameTime(start));
   Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
                     std::move(experiment.strategies), shaders);
+  ParticleBillboardSet billboards(experiment.particles, animation.frameTime(start), shaders, pipeline);
   for (int i = 0; i < experiment.warmupFrames; ++i) pipeline.renderFrame();
-  // Places the camera, lights and meshes of `frame` in the pipeline.
+  const bool geometryMoves = movesGeometry(experiment);
+  std::vector<std::size_t> aliveParticles;  // per particle system, in the frame moved to last
+  // Places the camera, lights, meshes and particles of `frame` in the pipeline.
   const auto moveTo = [&](int frame) {
     try {
-      applyAnimation(animation, animation.frameTime(frame), experiment.scene, experiment.camera);
+      aliveParticles = setSceneTime(experiment, animation.frameTime(frame));
+      billboards.place(animation.frameTime(frame));
     } catch (const Error& error) {
       throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
     }
     if (animation.movesCamera()) pipeline.setCamera(experiment.camera);
-    if (animation.movesLights() || animation.movesGeometry())
-      pipeline.moveScene(experiment.scene, animation.movesLights(), animation.movesGeometry());
+    if (animation.movesLights() || geometryMoves)
+      pipeline.moveScene(experiment.scene, animation.movesLights(), geometryMoves);
   };
   for (int frame = start; frame < first; ++frame) {
     moveTo(frame);
@@ -226,6 +231,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                              {"gpu_ms", times.gpuMs},
                              {"wall_ms", times.wallMs},
                              {"png_exposure_stops", *exposure}};
+    for (std::size_t s = 0; s < aliveParticles.size(); ++s)
+      record["particles_alive"][experiment.particles[s].system().name] = aliveParticles[s];
     // Another indirect method's figures of this frame (incremental instant radiosity's removals
     // and insertions differ from frame to frame).
     if (const IndirectMethod* method = pipeline.strategies().method.get())
@@ -279,7 +286,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                           {"moves",
                            {{"camera", animation.movesCamera()},
                             {"lights", animation.movesLights()},
-                            {"geometry", animation.movesGeometry()}}},
+                            {"geometry", movesGeometry(experiment)}}},
                           {"resumed_at_frame", first},
                           {"temporal", temporalSummary(records)},
                           {"frame_records", records}};

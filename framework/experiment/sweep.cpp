@@ -31,20 +31,24 @@ std::string canonicalName(const std::string& path) {
   return ec ? fs::absolute(path).lexically_normal().string() : p.string();
 }
 
-// A relative scene.file of `table` (read from `file`) made absolute, so that it keeps meaning
-// the same file wherever the table is written or merged.
-void absolutizeSceneFile(toml::table& table, const std::string& file) {
-  toml::table* scene = table["scene"].as_table();
-  if (!scene) return;
-  toml::node* node = scene->get("file");
+// A relative scene file reference of `table` (read from `file`) made absolute, so that it keeps
+// meaning the same file wherever the table is written or merged: scene.file and every
+// particles[i].model.
+void absolutizeReference(toml::table& owner, const char* key, const std::string& file) {
+  toml::node* node = owner.get(key);
   if (!node || !node->is_string()) return;
   const std::string ref = node->as_string()->get();
   if (ref.rfind("builtin:", 0) == 0 || ref.rfind("shared:", 0) == 0) return;
   const fs::path p(ref);
   if (p.is_absolute()) return;
-  const std::string resolved =
-      fs::absolute(fs::path(file).parent_path() / p).lexically_normal().string();
-  scene->insert_or_assign("file", resolved);
+  owner.insert_or_assign(key, fs::absolute(fs::path(file).parent_path() / p).lexically_normal().string());
+}
+
+void absolutizeSceneFile(toml::table& table, const std::string& file) {
+  if (toml::table* scene = table["scene"].as_table()) absolutizeReference(*scene, "file", file);
+  if (toml::array* particles = table["particles"].as_array())
+    for (toml::node& system : *particles)
+      if (toml::table* t = system.as_table()) absolutizeReference(*t, "model", file);
 }
 
 toml::table readChain(const std::string& path, std::vector<std::string>& stack, bool isBase) {
@@ -426,11 +430,13 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;
   std::set<std::string> temporalColumns;
-  // Another indirect method's figures (its manifest's indirect_method.statistics): each number
-  // outside arrays, as method.<path> (e.g. method.clamp.removed_fraction); arrays (a solver's
-  // convergence log) stay in the manifest.
-  std::map<std::string, std::map<std::string, double>> methodById;
-  std::set<std::string> methodColumns;
+  // Figures of a run beside its timings: another indirect method's (its manifest's
+  // indirect_method.statistics), each number outside arrays as method.<path> (e.g.
+  // method.clamp.removed_fraction; arrays, such as a solver's convergence log, stay in the
+  // manifest), and the particles' counts summed over the systems (particles.alive at frame 0,
+  // particles.capacity, particles.triangles).
+  std::map<std::string, std::map<std::string, double>> figuresById;
+  std::set<std::string> figureColumns;
   for (const auto& [id, m] : manifests) {
     reading = (root / id / "manifest.json").string();
     if (const auto* statistics = findPath(m, "indirect_method.statistics"); statistics) {
@@ -439,10 +445,19 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
         if (value.is_number()) {
           std::string column = "method" + path;
           std::replace(column.begin(), column.end(), '/', '.');
-          methodById[id][column] = value.get<double>();
-          methodColumns.insert(column);
+          figuresById[id][column] = value.get<double>();
+          figureColumns.insert(column);
         }
     }
+    if (const auto* particles = findPath(m, "particles"); particles && particles->is_array())
+      for (const auto& system : *particles)
+        for (const auto& [figure, key] : {std::pair{"alive", "alive_at_frame_0"},
+                                          std::pair{"capacity", "capacity"},
+                                          std::pair{"triangles", "triangles"}}) {
+          const std::string column = std::string("particles.") + figure;
+          figuresById[id][column] += system.at(key).get<double>();
+          figureColumns.insert(column);
+        }
     workById[id] = workColumns(m);
     for (const auto& [key, _] : workById[id]) workKeys.insert(key);
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
@@ -476,7 +491,7 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   header.push_back("cells");
   for (const std::string& k : workKeys) header.push_back(k);
   for (const auto& [pair, metric] : metrics) header.push_back("metric." + pair + "." + metric);
-  for (const std::string& column : methodColumns) header.push_back(column);
+  for (const std::string& column : figureColumns) header.push_back(column);
   if (!temporalColumns.empty()) header.push_back("temporal.at_rest");
   for (const std::string& column : temporalColumns) header.push_back(column);
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
@@ -542,8 +557,8 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
         }
         row.push_back(jsonText(v));
       }
-      for (const std::string& column : methodColumns) {
-        const auto& figures = methodById[id];
+      for (const std::string& column : figureColumns) {
+        const auto& figures = figuresById[id];
         const auto found = figures.find(column);
         row.push_back(found == figures.end() ? "" : nlohmann::json(found->second).dump());
       }

@@ -86,6 +86,11 @@ std::unique_ptr<Pipeline> FitEvaluator::pipeline(const FitView& view, const std:
     throw Error("view '" + view.name + "': the target is " + std::to_string(view.target.width) +
                 "x" + std::to_string(view.target.height) + ", the run " +
                 std::to_string(e.settings.width) + "x" + std::to_string(e.settings.height));
+  for (const ParticleGeometry& particles : e.particles)
+    if (particles.drawing().lightField)
+      throw Error("view '" + view.name + "': particle system '" + particles.system().name +
+                  "' is drawn as a light field, which lpvlab fit does not draw (draw = \"geometry\" "
+                  "draws its particles as the scene's meshes)");
   // The residuals compare the indirect light alone: no shadow maps, no direct light (their
   // read-back for the CPU's direct light was most of a rendering's time).
   e.settings.directLight = false;

@@ -10,6 +10,18 @@
 namespace lpvlab {
 
 namespace {
+// GpuLight::positionType.w: lights_gpu.glsl's LIGHT_POINT, LIGHT_SPOT, LIGHT_DIRECTIONAL.
+constexpr int kLightPoint = 0, kLightSpot = 1, kLightDirectional = 2;
+}  // namespace
+
+glm::vec4 lightViewViewer(const LightViews& views, int view) {
+  const GpuLight& light = views.lights.at(std::size_t(views.views.at(std::size_t(view)).params.z));
+  if (int(light.positionType.w) == kLightDirectional)
+    return glm::vec4(-glm::vec3(light.directionCosOuter), 0.0f);
+  return glm::vec4(glm::vec3(light.positionType), 1.0f);
+}
+
+namespace {
 
 // Cube faces in the order +x, -x, +y, -y, +z, -z, with up vectors as in GL cube maps.
 const glm::vec3 kFaceAxis[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -87,7 +99,8 @@ LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bound
     GpuLight record{};
     const glm::vec3 direction =
         light.type == LightType::Point ? glm::vec3(0, -1, 0) : glm::normalize(light.direction);
-    const int type = light.type == LightType::Point ? 0 : light.type == LightType::Spot ? 1 : 2;
+    const int type = light.type == LightType::Point ? kLightPoint
+                     : light.type == LightType::Spot ? kLightSpot : kLightDirectional;
     record.positionType = glm::vec4(light.position, float(type));
     const bool spot = light.type == LightType::Spot;
     record.directionCosOuter =

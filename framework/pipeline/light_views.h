@@ -96,4 +96,8 @@ float directionalSnapStep(float halfWidth, int rsmResolution, int shadowResoluti
 LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& sceneBounds,
                            const std::optional<DirectionalFollow>& follow = std::nullopt);
 
+// Where view `view` looks from: its light's position (w = 1) or, for a directional light, the
+// unit direction towards the light (w = 0).
+glm::vec4 lightViewViewer(const LightViews& views, int view);
+
 }  // namespace lpvlab

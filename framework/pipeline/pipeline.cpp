@@ -238,10 +238,10 @@ FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
   hostReadback_.newFrame();
   if (settings_.directLight)
-    stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_); });
+    stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_, extras_); });
   if (!strategies_.method || strategies_.method->readsReflectiveShadowMaps())
-    stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_); });
-  stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_); });
+    stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_, extras_); });
+  stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_, extras_); });
   if (settings_.directLight)
     stage("direct", times, [&] {
       direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,

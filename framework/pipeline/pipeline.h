@@ -101,6 +101,10 @@ public:
   // at construction, moved. The light views follow the lights, and the scene's bounds when geometry
   // moved.
   void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved);
+  // Geometry the raster passes draw beside the scene's meshes (extra_geometry.h: particles'
+  // light-field billboards), from the next frame on; the caller keeps it alive as long as it
+  // renders frames.
+  void addExtraGeometry(const ExtraGeometry* extra) { extras_.push_back(extra); }
   // The light grids, finest first, where the last frame placed them.
   const std::vector<LightGrid>& levels() const { return levels_; }
   // Cells one propagation iteration updates, over every level (for cell-iterations/s).
@@ -151,6 +155,7 @@ private:
   Bounds sceneBounds_;
   Strategies strategies_;
   std::unique_ptr<SceneGpu> scene_;
+  std::vector<const ExtraGeometry*> extras_;
   std::unique_ptr<GBufferPass> gbufferPass_;
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   std::unique_ptr<DirectLighting> direct_;

@@ -69,7 +69,8 @@ glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
   return cameraClipFromWorld(camera, gbuffer_.width, gbuffer_.height);
 }
 
-void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
+void GBufferPass::render(const SceneGpu& scene, const Camera& camera,
+                         const std::vector<const ExtraGeometry*>& extras) {
   beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, gbuffer_.emissive ? 4 : 3);
   program_.use();
   const glm::mat4 clip = clipFromWorld(camera);
@@ -77,6 +78,12 @@ void GBufferPass::render(const SceneGpu& scene, const Camera& camera) {
   glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_POSITION, 1, &camera.position[0]);
   glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_FORWARD, 1, &camera.forward[0]);
   scene.draw();
+  const RasterView view{.target = RasterTarget::GBuffer,
+                        .clipFromWorld = clip,
+                        .viewer = glm::vec4(camera.position, 1.0f),
+                        .cameraPosition = camera.position,
+                        .cameraForward = camera.forward};
+  for (const ExtraGeometry* extra : extras) extra->draw(view);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -152,7 +159,7 @@ void LightMapsPass::setViews(const LightViews& views) {
 
 // Surfaces without alpha masks go through a fragment-free program, the alpha-masked ones through
 // the material's alpha test; the depth test keeps the nearest either way, so the map is the same.
-void LightMapsPass::renderShadowMaps(const SceneGpu& scene) {
+void LightMapsPass::renderShadowMaps(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras) {
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(shadowFramebuffers_[layer], maps_.shadowResolution, maps_.shadowResolution, 0);
     depthOnlyProgram_.use();
@@ -161,21 +168,31 @@ void LightMapsPass::renderShadowMaps(const SceneGpu& scene) {
     shadowProgram_.use();
     glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
     scene.draw(SceneGpu::AlphaMasks::Only);
+    const RasterView view{.target = RasterTarget::ShadowMap,
+                          .clipFromWorld = clipFromWorld_[layer],
+                          .viewer = lightViewViewer(maps_.records, layer)};
+    for (const ExtraGeometry* extra : extras) extra->draw(view);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void LightMapsPass::renderRsms(const SceneGpu& scene) {
+void LightMapsPass::renderRsms(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras) {
   using namespace rsm_kernel;
-  rsmProgram_.use();
   maps_.lightRecords.bindStorage(BUFFER_LIGHTS);
   maps_.viewRecords.bindStorage(BUFFER_VIEWS);
-  glUniform1i(LOCATION_RESOLUTION, maps_.rsmResolution);
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(rsmFramebuffers_[layer], maps_.rsmResolution, maps_.rsmResolution, 3);
+    rsmProgram_.use();  // again for each view: an extra may have bound its own program
+    glUniform1i(LOCATION_RESOLUTION, maps_.rsmResolution);
     glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
     glUniform1i(LOCATION_VIEW_INDEX, layer);
     scene.draw();
+    const RasterView view{.target = RasterTarget::Rsm,
+                          .clipFromWorld = clipFromWorld_[layer],
+                          .viewer = lightViewViewer(maps_.records, layer),
+                          .viewIndex = layer,
+                          .resolution = maps_.rsmResolution};
+    for (const ExtraGeometry* extra : extras) extra->draw(view);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

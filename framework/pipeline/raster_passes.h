@@ -9,6 +9,7 @@
 
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/extra_geometry.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/light_views.h"
 #include "framework/pipeline/scene_gpu.h"
@@ -35,8 +36,9 @@ public:
   // emissive: some material of the scene emits. Without, the emission image stays zeros and is
   // never rendered (a colour target less for the rasteriser, an image less to read back).
   GBufferPass(ShaderCompiler& shaders, int width, int height, bool emissive = true);
-  // Renders the scene from the camera (vertical FOV, aspect = width / height).
-  void render(const SceneGpu& scene, const Camera& camera);
+  // Renders the scene and the extras from the camera (vertical FOV, aspect = width / height).
+  void render(const SceneGpu& scene, const Camera& camera,
+              const std::vector<const ExtraGeometry*>& extras = {});
   const GBuffer& gbuffer() const { return gbuffer_; }
   glm::mat4 clipFromWorld(const Camera& camera) const;
 
@@ -50,8 +52,8 @@ class LightMapsPass {
 public:
   LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
                 int shadowResolution);
-  void renderShadowMaps(const SceneGpu& scene);
-  void renderRsms(const SceneGpu& scene);
+  void renderShadowMaps(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras = {});
+  void renderRsms(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras = {});
   // The lights moved (an animation): the same lights and views, placed anew. Throws if the count
   // of lights or views differs from the maps'.
   void setViews(const LightViews& views);

@@ -57,13 +57,15 @@ void SceneGpu::measureMaterialBounds(const Scene& scene) {
 
 SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
   measureMaterialBounds(scene);
-  // Group meshes by material so each material is one draw call.
-  meshOrder_.resize(scene.meshes.size());
-  for (size_t i = 0; i < meshOrder_.size(); ++i) meshOrder_[i] = int(i);
+  // Group meshes by material so each material is one draw call; meshes drawn by something else
+  // (Mesh::rasterised) are left out.
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    if (scene.meshes[i].rasterised) meshOrder_.push_back(int(i));
   std::stable_sort(meshOrder_.begin(), meshOrder_.end(), [&](int a, int b) {
     return scene.meshes[a].material < scene.meshes[b].material;
   });
-  const std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
+  std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
+  if (vertices.empty()) vertices.push_back({});  // GL buffers are not empty; nothing draws it
   std::vector<std::uint32_t> indices;
   std::uint32_t base = 0;
   for (int meshIndex : meshOrder_) {
@@ -80,6 +82,7 @@ SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
                         first, mesh.indices.size()});
   }
   for (const Mesh& mesh : scene.meshes) vertexCounts_.push_back(mesh.positions.size());
+  if (indices.empty()) indices.push_back(0);
   vertices_ = gl::Buffer(vertices.size() * sizeof(Vertex), "scene vertices", vertices.data());
   indices_ = gl::Buffer(indices.size() * sizeof(std::uint32_t), "scene indices", indices.data());
 

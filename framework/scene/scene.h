@@ -54,6 +54,10 @@ struct Mesh {
                                      // top-left corner of a texture (glTF's convention)
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from the normal side
   int material = 0;                  // index into Scene::materials
+  // false: the LPV pipeline's raster passes leave the mesh out, because something else draws it
+  // there (a particle system's copies of its model when light-field billboards show them,
+  // framework/particles); the path tracer and every other renderer see it as any mesh.
+  bool rasterised = true;
 };
 
 enum class LightType { Point, Spot, Directional };

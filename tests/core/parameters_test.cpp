@@ -219,6 +219,21 @@ TEST(ApplyOverride, ThroughANonTableIsAnError) {
   EXPECT_CONTAINS(errorOf([&] { applyOverride(root, "a.b=2"); }), "'a' is not a table");
 }
 
+TEST(ApplyOverride, IndexesArraysOfTables) {
+  toml::table root = parse("[[p]]\nrate = 1\n[[p]]\nrate = 2\n[[p.e]]\nspeed = 3\n");
+  applyOverride(root, "p[1].rate=20");
+  applyOverride(root, "p[1].e[0].speed=30.5");
+  applyOverride(root, "p[0].size=0.5");
+  EXPECT_EQ(root["p"][0]["rate"].value<int64_t>(), 1);
+  EXPECT_EQ(root["p"][1]["rate"].value<int64_t>(), 20);
+  EXPECT_EQ(root["p"][1]["e"][0]["speed"].value<double>(), 30.5);
+  EXPECT_EQ(root["p"][0]["size"].value<double>(), 0.5);
+  EXPECT_CONTAINS(errorOf([&] { applyOverride(root, "p[2].rate=1"); }), "there are 2 [[p]] tables");
+  EXPECT_CONTAINS(errorOf([&] { applyOverride(root, "q[0].rate=1"); }), "'q' is not an array of tables");
+  EXPECT_CONTAINS(errorOf([&] { applyOverride(root, "p[x].rate=1"); }), "name[index]");
+  EXPECT_CONTAINS(errorOf([&] { applyOverride(root, "p[0.rate=1"); }), "name[index]");
+}
+
 class TomlFile : public ::testing::Test {
  protected:
   void SetUp() override {

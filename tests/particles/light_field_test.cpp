@@ -1,0 +1,91 @@
+// The light field's capture (framework/particles/light_field.h) against a brute-force ray caster
+// over the model's triangles in double precision: every texel of a view is the model seen along
+// the view's direction through the texel's point of the view's plane, so where the ray hits, the
+// texel must be covered with the hit triangle's albedo and normal and the hit's offset along the
+// view direction, and where it misses, uncovered. Rasterisation samples texel centres too, so
+// only texels whose ray grazes an edge may differ.
+
+#include "framework/particles/light_field.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "framework/core/error.h"
+#include "framework/scene/scene_loader.h"
+#include "pipeline/pipeline_test_support.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/particles/light_field_views.glsl"
+LPVLAB_SHARED_GLSL_END
+
+namespace lpvlab {
+namespace {
+
+ParticleModel crystal() {
+  return particleModel(
+      loadSceneByName((std::filesystem::path(LPVLAB_SOURCE_DIR) / "experiments/models/crystal.obj").string()), {});
+}
+
+TEST(LightField, EveryViewIsTheModelSeenAlongItsDirection) {
+  test::glTestContext();
+  const ParticleModel model = crystal();
+  ShaderCompiler shaders;
+  const LightFieldSettings settings{.views = {8, 4}, .resolution = 48};
+  const LightField field(model, settings, shaders);
+  Scene modelScene;
+  modelScene.meshes = model.meshes;
+  modelScene.materials = model.materials;
+  const test::SceneRaycaster caster(modelScene);
+  const double r = field.radius();
+  const int n = settings.resolution;
+  int texels = 0, agree = 0, covered = 0, compared = 0, exact = 0;
+  double worstAlbedo = 0.0;
+  for (int j = 0; j < settings.views.y; ++j)
+    for (int i = 0; i < settings.views.x; ++i) {
+      const int layer = j * settings.views.x + i;
+      const std::vector<glm::vec4> albedo = field.read(field.albedo(), layer);
+      const std::vector<glm::vec4> normal = field.read(field.normalOffset(), layer);
+      const glm::dvec3 d = shared::lightFieldViewDirection(i, j, settings.views);
+      const glm::dvec3 up = shared::lightFieldUp(d), right = shared::lightFieldRight(d);
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const glm::dvec3 plane = r * ((2.0 * (x + 0.5) / n - 1.0) * right + (2.0 * (y + 0.5) / n - 1.0) * up);
+          const auto hit = caster.cast(plane + 2.0 * r * d, -d);
+          const glm::vec4 a = albedo[std::size_t(y * n + x)], no = normal[std::size_t(y * n + x)];
+          ++texels;
+          const bool seen = a.w > 0.5f;
+          agree += seen == bool(hit);
+          covered += bool(hit);
+          if (!hit || !seen) continue;
+          ++compared;
+          const glm::dvec3 point = plane + 2.0 * r * d - hit->t * d;
+          glm::dvec3 expectedNormal = hit->normal;
+          if (glm::dot(expectedNormal, d) < 0.0) expectedNormal = -expectedNormal;
+          // Half floats hold the offset to about 5e-4 of the model's size.
+          exact += std::abs(double(no.w) - glm::dot(point, d)) < 2e-3 &&
+                   glm::dot(glm::dvec3(no), expectedNormal) > 1.0 - 1e-3;
+          worstAlbedo = std::max(worstAlbedo, double(glm::length(glm::vec3(a) - caster.material(*hit).baseColor)));
+        }
+    }
+  std::cout << "[ light field ] " << covered << " of " << texels << " texels cover the model; capture and "
+            << "rays agree at " << agree << "; offset and normal as the ray's at " << exact << " of "
+            << compared << "; worst albedo " << worstAlbedo << "\n";
+  EXPECT_GT(covered, texels / 10);
+  EXPECT_GE(agree, texels - texels / 50);  // edge texels only
+  EXPECT_LT(worstAlbedo, 2e-3);  // one material: half-float rounding only
+  // A texel whose centre ray grazes a ridge between two faces may show the other face.
+  EXPECT_GE(exact, compared - compared / 50);
+}
+
+TEST(LightField, BadSettingsAreErrors) {
+  test::glTestContext();
+  const ParticleModel model = crystal();
+  ShaderCompiler shaders;
+  EXPECT_THROW(LightField(model, LightFieldSettings{.views = {0, 4}, .resolution = 8}, shaders), Error);
+  EXPECT_THROW(LightField(model, LightFieldSettings{.views = {4, 4}, .resolution = 0}, shaders), Error);
+}
+
+}  // namespace
+}  // namespace lpvlab
