@@ -14,6 +14,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
+#include "framework/experiment/json_path.h"
 #include "framework/experiment/sweep.h"
 #include "io/temp_dir.h"
 
@@ -212,6 +213,26 @@ TEST_F(SweepExpand, ExtendsCycleAndMissingBaseAreErrors) {
   EXPECT_TRUE(contains(e2, "m.toml"));
   EXPECT_TRUE(contains(e2, "extends"));
   EXPECT_TRUE(contains(e2, "nope.toml"));
+}
+
+}  // namespace
+}  // namespace lpvlab
+
+namespace lpvlab {
+namespace {
+
+// summary.csv's param.* columns read swept keys from the resolved configuration, arrays of tables
+// included ("particles[0].draw").
+TEST(JsonPath, IndexesArraysOfTables) {
+  const nlohmann::json j = nlohmann::json::parse(
+      R"({"particles": [{"draw": "geometry"}, {"emitters": [{"rate": 4.0}]}], "grid": {"resolution": 32}})");
+  ASSERT_NE(findPath(j, "particles[0].draw"), nullptr);
+  EXPECT_EQ(*findPath(j, "particles[0].draw"), "geometry");
+  EXPECT_EQ(*findPath(j, "particles[1].emitters[0].rate"), 4.0);
+  EXPECT_EQ(*findPath(j, "grid.resolution"), 32);
+  EXPECT_EQ(findPath(j, "particles[2].draw"), nullptr);
+  EXPECT_EQ(findPath(j, "particles[x].draw"), nullptr);
+  EXPECT_EQ(findPath(j, "grid[0].resolution"), nullptr);
 }
 
 }  // namespace
