@@ -7,7 +7,6 @@ summary.csv's particles.alive (summed over a run's systems at frame 0), particle
 the configuration's drawing (param.particles[0].draw where a sweep sets it, "geometry" else) give
 one line per drawing and scene.
 """
-import html
 import math
 import os
 
@@ -18,6 +17,7 @@ import pandas as pd  # noqa: E402
 
 from . import equal_time as ET  # noqa: E402
 from . import plots  # noqa: E402
+from . import tables  # noqa: E402
 
 ALIVE_COL = "particles.alive"
 TRIANGLES_COL = "particles.triangles"
@@ -60,33 +60,13 @@ def table(agg, metric):
 _FORMATS = {"particles": "{:.0f}", "triangles": "{:.0f}", "frame ms": "{:.1f}", "error": "{:.4g}"}
 
 
-def _cells(t):
-    out = []
-    for _, r in t.iterrows():
-        cells = []
-        for c in t.columns:
-            v = r[c]
-            if isinstance(v, str):
-                cells.append(v)
-            else:
-                cells.append("" if v is None or (isinstance(v, float) and math.isnan(v)) else _FORMATS.get(c, "{:.4g}").format(v))
-        out.append(cells)
-    return out
-
-
 def to_markdown(agg, metric):
-    t = table(agg, metric)
-    out = [f"Particles: frame time and {metric} against the particles alive", "",
-           "| " + " | ".join(t.columns) + " |", "|" + "---|" * len(t.columns)]
-    out += ["| " + " | ".join(c) + " |" for c in _cells(t)]
-    return "\n".join(out) + "\n"
+    title = f"Particles: frame time and {metric} against the particles alive"
+    return tables.markdown_table(title, table(agg, metric), _FORMATS)
 
 
 def to_html(agg, metric):
-    t = table(agg, metric)
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in cells) + "</tr>" for cells in _cells(t))
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return tables.html_table(table(agg, metric), _FORMATS)
 
 
 def plot(agg, path, metric):

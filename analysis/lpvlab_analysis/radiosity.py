@@ -7,7 +7,6 @@ the solve and any adaptive passes: summary.csv's method.solution_ms.total). This
 the error against the time to solution, with LPV's frame times (LPV's time to solution) beside
 them, and tabulates patches, form-factor estimator, solver iterations and the split of the time.
 """
-import html
 import math
 import os
 
@@ -19,6 +18,7 @@ import pandas as pd  # noqa: E402
 from . import equal_time as ET  # noqa: E402
 from . import methods  # noqa: E402
 from . import plots  # noqa: E402
+from . import tables  # noqa: E402
 
 SOLUTION_COL = "method.solution_ms.total"
 COLUMNS = [("method.patches", "patches", "{:.0f}"),
@@ -55,35 +55,19 @@ def table(agg, metric):
     return t.sort_values(["solution ms", "configuration"], na_position="last", kind="mergesort").reset_index(drop=True)
 
 
-def _cells(t):
+def _formats():
     formats = {name: fmt for _, name, fmt in COLUMNS}
     formats["error"] = "{:.4g}"
-    out = []
-    for _, r in t.iterrows():
-        cells = []
-        for c in t.columns:
-            v = r[c]
-            if isinstance(v, str):
-                cells.append(v)
-            else:
-                cells.append("" if v is None or (isinstance(v, float) and math.isnan(v)) else formats.get(c, "{:.4g}").format(v))
-        out.append(cells)
-    return out
+    return formats
 
 
 def to_markdown(agg, metric):
-    t = table(agg, metric)
-    out = [f"Radiosity: {metric} against the time to solution (solution ms) and per frame (frame ms)", "",
-           "| " + " | ".join(t.columns) + " |", "|" + "---|" * len(t.columns)]
-    out += ["| " + " | ".join(c) + " |" for c in _cells(t)]
-    return "\n".join(out) + "\n"
+    title = f"Radiosity: {metric} against the time to solution (solution ms) and per frame (frame ms)"
+    return tables.markdown_table(title, table(agg, metric), _formats())
 
 
 def to_html(agg, metric):
-    t = table(agg, metric)
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in cells) + "</tr>" for cells in _cells(t))
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return tables.html_table(table(agg, metric), _formats())
 
 
 def _scenes(agg):

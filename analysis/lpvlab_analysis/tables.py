@@ -99,3 +99,35 @@ def to_html(agg):
         out.append("<tr>" + "".join(tds) + "</tr>")
     out.append("</tbody></table>")
     return "\n".join(out)
+
+
+def formatted_cells(t, formats, default="{:.4g}"):
+    """Each row of `t` as strings: strings as they are, numbers by formats[column] (else
+    `default`), NaN and None as ""."""
+    out = []
+    for _, r in t.iterrows():
+        cells = []
+        for c in t.columns:
+            v = r[c]
+            if isinstance(v, str):
+                cells.append(v)
+            else:
+                missing = v is None or (isinstance(v, float) and math.isnan(v))
+                cells.append("" if missing else formats.get(c, default).format(v))
+        out.append(cells)
+    return out
+
+
+def markdown_table(title, t, formats):
+    """A titled markdown table of `t` (formatted_cells)."""
+    out = [title, "", "| " + " | ".join(t.columns) + " |", "|" + "---|" * len(t.columns)]
+    out += ["| " + " | ".join(c) + " |" for c in formatted_cells(t, formats)]
+    return "\n".join(out) + "\n"
+
+
+def html_table(t, formats):
+    """An HTML table of `t` (formatted_cells), escaped."""
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in cells) + "</tr>"
+                   for cells in formatted_cells(t, formats))
+    return f"<table><tr>{head}</tr>{body}</table>"

@@ -9,11 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <iostream>
 
+#include "crystal_model.h"
 #include "framework/core/error.h"
-#include "framework/scene/scene_loader.h"
 #include "pipeline/pipeline_test_support.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -23,14 +22,9 @@ LPVLAB_SHARED_GLSL_END
 namespace lpvlab {
 namespace {
 
-ParticleModel crystal() {
-  return particleModel(
-      loadSceneByName((std::filesystem::path(LPVLAB_SOURCE_DIR) / "experiments/models/crystal.obj").string()), {});
-}
-
 TEST(LightField, EveryViewIsTheModelSeenAlongItsDirection) {
   test::glTestContext();
-  const ParticleModel model = crystal();
+  const ParticleModel model = test::crystalModel();
   ShaderCompiler shaders;
   const LightFieldSettings settings{.views = {8, 4}, .resolution = 48};
   const LightField field(model, settings, shaders);
@@ -81,7 +75,7 @@ TEST(LightField, EveryViewIsTheModelSeenAlongItsDirection) {
 
 TEST(LightField, BadSettingsAreErrors) {
   test::glTestContext();
-  const ParticleModel model = crystal();
+  const ParticleModel model = test::crystalModel();
   ShaderCompiler shaders;
   EXPECT_THROW(LightField(model, LightFieldSettings{.views = {0, 4}, .resolution = 8}, shaders), Error);
   EXPECT_THROW(LightField(model, LightFieldSettings{.views = {4, 4}, .resolution = 0}, shaders), Error);

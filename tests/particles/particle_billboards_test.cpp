@@ -10,13 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 
+#include "crystal_model.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/raster_passes.h"
-#include "framework/scene/scene_loader.h"
 #include "gl/gl_test_context.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -25,11 +24,6 @@ LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
-
-ParticleModel crystal() {
-  return particleModel(
-      loadSceneByName((std::filesystem::path(LPVLAB_SOURCE_DIR) / "experiments/models/crystal.obj").string()), {});
-}
 
 // Level 0 of a 2D RGBA32F texture, rows from the bottom.
 std::vector<glm::vec4> readTexture(const gl::Texture& texture) {
@@ -41,7 +35,7 @@ std::vector<glm::vec4> readTexture(const gl::Texture& texture) {
 void expectTheCapturedView(bool interpolate) {
   test::glTestContext();
   ShaderCompiler shaders;
-  const ParticleModel model = crystal();
+  const ParticleModel model = test::crystalModel();
   const int resolution = 40;
   const ParticleDrawing drawing{.lightField = true, .views = {8, 4}, .resolution = resolution, .interpolate = interpolate};
   ParticleBillboards billboards(model, drawing, 1, shaders);
@@ -97,7 +91,7 @@ TEST(ParticleBillboards, InterpolationSeenFromACapturedDirectionShowsThatViewToo
 TEST(ParticleBillboards, MoreParticlesThanTheirCapacityAreAnError) {
   test::glTestContext();
   ShaderCompiler shaders;
-  ParticleBillboards billboards(crystal(), ParticleDrawing{.lightField = true, .views = {4, 2}, .resolution = 8}, 2, shaders);
+  ParticleBillboards billboards(test::crystalModel(), ParticleDrawing{.lightField = true, .views = {4, 2}, .resolution = 8}, 2, shaders);
   billboards.update(std::vector<Particle>(2));
   EXPECT_EQ(billboards.count(), 2u);
   EXPECT_THROW(billboards.update(std::vector<Particle>(3)), Error);
