@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "framework/core/error.h"
+#include "framework/math/view_matrix.h"
 
 namespace lpvlab {
 
@@ -60,10 +61,10 @@ glm::vec3 lightViewUp(const glm::vec3& direction) {
 // bounding sphere, when `centre` is level with the sphere's centre along the light, well inside).
 GpuView orthographicView(const glm::vec3& direction, const glm::vec3& centre, float halfWidth,
                          float sceneRadius, int lightIndex) {
-  const glm::mat4 viewFromWorld = glm::lookAt(centre - direction * 2.0f * sceneRadius, centre, lightViewUp(direction));
+  const glm::mat4 view = viewFromWorld(centre - direction * 2.0f * sceneRadius, direction, lightViewUp(direction));
   const glm::mat4 clipFromView = glm::ortho(-halfWidth, halfWidth, -halfWidth, halfWidth,
                                             0.5f * sceneRadius, 3.5f * sceneRadius);
-  return {clipFromView * viewFromWorld, glm::vec4(1.0f, 2.0f * halfWidth, float(lightIndex), 0)};
+  return {clipFromView * view, glm::vec4(1.0f, 2.0f * halfWidth, float(lightIndex), 0)};
 }
 
 // The followed box's centre: the camera's point, snapped to whole steps along the view's image
@@ -134,12 +135,11 @@ LightViews buildLightViews(const std::vector<Light>& lights, const Bounds& bound
           const float angle = std::acos(std::clamp(glm::dot(kFaceAxis[face], direction), -1.0f, 1.0f));
           if (angle > light.outerConeAngle + kFaceHalfDiagonal) continue;  // can't meet the cone
         }
-        const glm::mat4 viewFromWorld =
-            glm::lookAt(light.position, light.position + kFaceAxis[face], kFaceUp[face]);
+        const glm::mat4 faceView = viewFromWorld(light.position, kFaceAxis[face], kFaceUp[face]);
         const int view = int(out.views.size());
         if (face < 4) record.viewOfFace0123[face] = view;
         else record.viewOfFace45[face - 4] = view;
-        out.views.push_back({clipFromView * viewFromWorld, glm::vec4(0.0f, 1.0f, lightIndex, 0)});
+        out.views.push_back({clipFromView * faceView, glm::vec4(0.0f, 1.0f, lightIndex, 0)});
       }
     }
     out.lights.push_back(record);

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "framework/core/error.h"
+#include "framework/math/view_matrix.h"
 
 namespace lpvlab {
 
@@ -58,11 +59,10 @@ GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height, bool em
 }
 
 glm::mat4 cameraClipFromWorld(const Camera& camera, int width, int height) {
-  const glm::mat4 viewFromWorld =
-      glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
+  const glm::mat4 view = viewFromWorld(camera.position, camera.forward, camera.up);
   const glm::mat4 clipFromView = glm::perspective(camera.verticalFov, float(width) / float(height),
                                                   camera.nearPlane, camera.farPlane);
-  return clipFromView * viewFromWorld;
+  return clipFromView * view;
 }
 
 glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/core/error.h"
+#include "framework/math/view_matrix.h"
 
 namespace lpvlab {
 
@@ -125,10 +126,10 @@ void HemicubeFormFactors::renderBatch(const std::uint32_t* sides, std::size_t co
       glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
       glDrawArrays(GL_TRIANGLES, 0, vertexCount);
     };
-    draw(topProjection * glm::lookAt(eye, eye + n, t), y0, res);
+    draw(topProjection * viewFromWorld(eye, n, t), y0, res);
     const glm::vec3 across[4] = {t, -t, b, -b};
     for (int face = 0; face < 4; ++face)
-      draw(sideProjection * glm::lookAt(eye, eye + across[face], n), y0 + res + face * half, half);
+      draw(sideProjection * viewFromWorld(eye, across[face], n), y0 + res + face * half, half);
   }
   glBindVertexArray(0);
   glGetTextureImage(items_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "framework/core/error.h"
+#include "framework/math/view_matrix.h"
 
 namespace lpvlab {
 
@@ -29,15 +30,14 @@ CameraRays::CameraRays(const Camera& camera, int width, int height) {
   if (!(camera.nearPlane > 0.0f && camera.farPlane > camera.nearPlane))
     throwAt(where, "needs 0 < near plane < far plane");
 
-  const glm::mat4 viewFromWorld =
-      glm::lookAt(camera.position, camera.position + camera.forward, camera.up);
+  const glm::mat4 view = viewFromWorld(camera.position, camera.forward, camera.up);
   const glm::mat4 clipFromView = glm::perspective(camera.verticalFov, float(width) / float(height),
                                                   camera.nearPlane, camera.farPlane);
   // lookAt's rows are the view axes in world space (right, up, backwards); perspective's
   // diagonal holds 1 / (aspect tan(fov/2)) and 1 / tan(fov/2), the inverse image-plane extents.
-  const glm::vec3 right(viewFromWorld[0][0], viewFromWorld[1][0], viewFromWorld[2][0]);
-  const glm::vec3 up(viewFromWorld[0][1], viewFromWorld[1][1], viewFromWorld[2][1]);
-  const glm::vec3 backwards(viewFromWorld[0][2], viewFromWorld[1][2], viewFromWorld[2][2]);
+  const glm::vec3 right(view[0][0], view[1][0], view[2][0]);
+  const glm::vec3 up(view[0][1], view[1][1], view[2][1]);
+  const glm::vec3 backwards(view[0][2], view[1][2], view[2][2]);
   for (const glm::vec3& axis : {right, up, backwards})
     if (!std::isfinite(axis.x + axis.y + axis.z) || glm::length(axis) < 0.5f)
       throwAt(where, "forward and up must be non-zero and not parallel");

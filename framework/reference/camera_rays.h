@@ -1,6 +1,6 @@
 #pragma once
 // Camera rays exactly as the LPV pipeline's G-buffer sees the scene: the view of
-// glm::lookAt(position, position + forward, up) and the projection of
+// viewFromWorld(position, forward, up) (glm::lookAt's, framework/math/view_matrix.h) and the projection of
 // glm::perspective(verticalFov, width / height), with image row 0 at the top. The ray through
 // image position (px, py) in pixels ((0, 0) the top-left corner of the top-left pixel) is the
 // line of points that project there; rays start and stop at the camera's near and far planes
