@@ -225,6 +225,15 @@ def load_sweeps(sweep_dirs):
     return frames[0] if len(frames) == 1 else pd.concat(frames, ignore_index=True, sort=False)
 
 
+def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
+    """A section's plot (where it drew one) and table, with the table as Markdown beside the report."""
+    if plot_path:
+        body.append(f"<img class='plot' src='{_rel(plot_path, out_dir)}'>")
+    body.append(html)
+    fsutil.write_text(os.path.join(out_dir, md_name), markdown)
+    body.append(f"<p class='note'>Markdown version: <a href='{md_name}'>{md_name}</a></p>")
+
+
 def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                  gpu_table=G.DEFAULT_TABLE):
     """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
@@ -275,11 +284,8 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                     "reference, the result and the error map side by side.</p>")
         p = plots.speed_accuracy(methods.by_method(agg), os.path.join(img_dir, "methods_speed_accuracy.png"),
                                  metric=metric)
-        if p:
-            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
-        body.append(methods.to_html(agg, metric))
-        fsutil.write_text(os.path.join(out_dir, "methods.md"), methods.to_markdown(agg, metric))
-        body.append("<p class='note'>Markdown version: <a href='methods.md'>methods.md</a></p>")
+        _figure_and_table(body, out_dir, p, methods.to_html(agg, metric), "methods.md",
+                          methods.to_markdown(agg, metric))
 
     if radiosity.has_radiosity(agg):
         _log("plot: radiosity")
@@ -290,11 +296,8 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                     "adaptive passes), beside LPV's frame times (LPV solves anew every frame); labels are patch "
                     "counts.</p>")
         p = radiosity.plot(agg, os.path.join(img_dir, "radiosity_time_to_solution.png"), metric)
-        if p:
-            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
-        body.append(radiosity.to_html(agg, metric))
-        fsutil.write_text(os.path.join(out_dir, "radiosity.md"), radiosity.to_markdown(agg, metric))
-        body.append("<p class='note'>Markdown version: <a href='radiosity.md'>radiosity.md</a></p>")
+        _figure_and_table(body, out_dir, p, radiosity.to_html(agg, metric), "radiosity.md",
+                          radiosity.to_markdown(agg, metric))
 
     if particles.has_particles(agg):
         _log("plot: particles")
@@ -304,11 +307,15 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
                     "chapter 5.2, measured FPS only; here the error against the path-traced reference of the "
                     "same particles too).</p>")
         p = particles.plot(agg, os.path.join(img_dir, "particles_count.png"), metric)
-        if p:
-            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
-        body.append(particles.to_html(agg, metric))
-        fsutil.write_text(os.path.join(out_dir, "particles.md"), particles.to_markdown(agg, metric))
-        body.append("<p class='note'>Markdown version: <a href='particles.md'>particles.md</a></p>")
+        _figure_and_table(body, out_dir, p, particles.to_html(agg, metric), "particles.md",
+                          particles.to_markdown(agg, metric))
+        if particles.has_resolution_sweep(agg):
+            body.append("<p class='note'>Light-field particles against the light field's resolution: texels per "
+                        "view side, one line per view grid (colour) and view selection (solid: blended, dashed: "
+                        "nearest), seed 002, chapter 5.2.2.</p>")
+            p = particles.plot_resolution(agg, os.path.join(img_dir, "particles_resolution.png"), metric)
+            _figure_and_table(body, out_dir, p, particles.resolution_html(agg, metric), "particles_resolution.md",
+                              particles.resolution_markdown(agg, metric))
 
     body.append("<h2>Ablation table</h2>")
     body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")

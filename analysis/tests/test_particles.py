@@ -1,5 +1,7 @@
-"""The particles section (particles.py): its table by drawing, scene and count, its plot, and the
-section in a report only when a sweep has runs with particles; on hand-made frames."""
+"""The particles section (particles.py): its table by drawing, scene and count, its plot, the
+light-field resolution table and plot, and the section in a report only when a sweep has runs
+with particles (the resolution part only for light fields at several resolutions); on hand-made
+frames."""
 import math
 import os
 import tempfile
@@ -24,6 +26,24 @@ def frame():
     for i, (name, draw, alive, t, e) in enumerate(rows):
         out.append({"config_id": f"{i:03d}", "config_name": name, P.DRAW_COL: draw,
                     P.ALIVE_COL: alive, P.TRIANGLES_COL: alive * 8, "gpu_ms.total": t, RMSE: e})
+    return pd.DataFrame(out)
+
+
+def resolution_frame():
+    """Light fields of 12 000 particles at 16, 32 and 64 texels, 8 x 4 and 16 x 8 views, blended or
+    not, and one geometry run of the same particles."""
+    out = []
+    for views in ((8, 4), (16, 8)):
+        for interpolate in (True, False):
+            for texels in (16, 32, 64):
+                name = f"{views[0]}x{views[1]}-{texels}-{'b' if interpolate else 'n'}"
+                out.append({"config_id": f"{len(out):03d}", "config_name": name, P.DRAW_COL: "light_field",
+                            P.AZIMUTHS_COL: views[0], P.ELEVATIONS_COL: views[1], P.INTERPOLATE_COL: interpolate,
+                            P.RESOLUTION_COL: texels, P.ALIVE_COL: 12000.0, P.TRIANGLES_COL: 96000.0,
+                            "gpu_ms.total": 1000.0 + texels * (2 if interpolate else 1),
+                            RMSE: 0.05 + 0.1 / texels / views[0]})
+    out.append({"config_id": "999", "config_name": "geometry", P.DRAW_COL: "geometry", P.ALIVE_COL: 12000.0,
+                P.TRIANGLES_COL: 96000.0, "gpu_ms.total": 300.0, RMSE: 0.055})
     return pd.DataFrame(out)
 
 
@@ -52,6 +72,26 @@ class ParticlesTest(unittest.TestCase):
             self.assertTrue(os.path.getsize(path) > 1000)
             self.assertIsNone(P.plot(frame()[frame()["config_name"] == "none"], os.path.join(tmp, "q.png"), RMSE))
 
+    def test_resolution_table_has_the_light_fields_by_views_blending_and_texels(self):
+        t = P.resolution_table(resolution_frame(), RMSE)
+        self.assertEqual(len(t), 12)  # not the geometry run
+        self.assertEqual(list(t["texels"][:3]), [16.0, 32.0, 64.0])
+        row = t.set_index("configuration").loc["16x8-32-n"]
+        self.assertEqual(row["views"], "16 x 8")
+        self.assertEqual(row["blending"], "nearest")
+        self.assertEqual(row["frame ms"], 1032.0)
+        self.assertAlmostEqual(row["error"], 0.05 + 0.1 / 32 / 16)
+        self.assertEqual(t.set_index("configuration").loc["8x4-64-b"]["blending"], "blended")
+        self.assertTrue(P.has_resolution_sweep(resolution_frame()))
+        self.assertFalse(P.has_resolution_sweep(frame()))  # counts, no resolutions
+        self.assertIn("| 8x4-16-b | 8 x 4 | blended | 16 | 12000 | 1032.0 |",
+                      P.resolution_markdown(resolution_frame(), RMSE))
+        with tempfile.TemporaryDirectory() as tmp:
+            self.assertTrue(os.path.getsize(P.plot_resolution(resolution_frame(), os.path.join(tmp, "r.png"), RMSE)) > 1000)
+            self.assertIsNone(P.plot_resolution(frame(), os.path.join(tmp, "s.png"), RMSE))
+            # One count only: the count plot has nothing to draw.
+            self.assertIsNone(P.plot(resolution_frame(), os.path.join(tmp, "c.png"), RMSE))
+
     def test_report_has_the_section_only_with_particles(self):
         with tempfile.TemporaryDirectory() as tmp:
             sweep = make_sweep(tmp)
@@ -65,6 +105,13 @@ class ParticlesTest(unittest.TestCase):
             self.assertIn("<h2>Particles</h2>", page)
             self.assertIn("particles_count.png", page)
             self.assertTrue(os.path.isfile(os.path.join(sweep, "report", "particles.md")))
+            self.assertNotIn("particles_resolution.png", page)
+            d[P.DRAW_COL] = "light_field"
+            d[P.RESOLUTION_COL] = [16 * (1 + i % 3) for i in range(len(d))]
+            d.to_csv(path, index=False)
+            page = open(report.build_report(sweep)).read()
+            self.assertIn("particles_resolution.png", page)
+            self.assertTrue(os.path.isfile(os.path.join(sweep, "report", "particles_resolution.md")))
 
 
 if __name__ == "__main__":

@@ -426,6 +426,14 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
     manifests.push_back({id, readJson(sub / "manifest.json")});
     result.complete.push_back(id);
   }
+  // Particle systems' drawing, where a sweep does not set it: the report tells geometry from light
+  // fields by it.
+  const bool anyParticles = std::any_of(manifests.begin(), manifests.end(), [](const auto& m) {
+    const auto* p = findPath(m.second, "particles");
+    return p && p->is_array() && !p->empty();
+  });
+  if (anyParticles && std::find(params.begin(), params.end(), "particles[0].draw") == params.end())
+    params.push_back("particles[0].draw");
   std::set<std::string> stages, memoryGroups, workKeys;
   std::map<std::string, std::map<std::string, double>> workById;
   std::set<std::pair<std::string, std::string>> metrics;

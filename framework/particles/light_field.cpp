@@ -28,6 +28,30 @@ glm::vec3 viewDirection(int i, int j, glm::ivec2 views) {
   return glm::vec3(shared::lightFieldViewDirection(i, j, views));
 }
 
+// Each view's image of the model: its vertices projected onto the view's axes (a triangle's image
+// lies within its corners'), widened by a texel each side for rasterisation at texel centres
+// and clamped to the square.
+std::vector<glm::vec4> imageBounds(const ParticleModel& model, const LightFieldSettings& settings, float radius) {
+  const float texel = 2.0f / float(settings.resolution);
+  std::vector<glm::vec4> bounds;
+  for (int j = 0; j < settings.views.y; ++j)
+    for (int i = 0; i < settings.views.x; ++i) {
+      const glm::dvec3 d = shared::lightFieldViewDirection(i, j, settings.views);
+      const glm::vec3 right(shared::lightFieldRight(d)), up(shared::lightFieldUp(d));
+      glm::vec2 lo(1.0f), hi(-1.0f);
+      for (const Mesh& mesh : model.meshes)
+        for (const glm::vec3& p : mesh.positions) {
+          const glm::vec2 image(glm::dot(p, right) / radius, glm::dot(p, up) / radius);
+          lo = glm::min(lo, image);
+          hi = glm::max(hi, image);
+        }
+      lo = glm::clamp(lo - texel, -1.0f, 1.0f);
+      hi = glm::clamp(hi + texel, -1.0f, 1.0f);
+      bounds.emplace_back(lo, hi);
+    }
+  return bounds;
+}
+
 }  // namespace
 
 glm::mat4 LightField::clipFromObject(int i, int j, glm::ivec2 views, float radius) {
@@ -87,6 +111,8 @@ LightField::LightField(const ParticleModel& model, const LightFieldSettings& set
       gpu.draw();
     }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  viewBounds_ = imageBounds(model, settings, radius_);
+  viewBoundsBuffer_ = gl::Buffer(viewBounds_.size() * sizeof(glm::vec4), "light field view bounds", viewBounds_.data());
   for (const gl::Texture* t : {&albedo_, &normalOffset_}) {
     glGenerateTextureMipmap(t->id());
     glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

@@ -17,6 +17,11 @@
 // The seed renders views into one atlas texture on demand (its cache table); here every view is
 // captured when the light field is made: an experiment's particles may be seen from any
 // direction, and on llvmpipe capturing 16 x 8 views of the crystal at 64^2 takes milliseconds.
+//
+// Each view also has the bounds of the model's image in it (its vertices projected onto the
+// view's axes, a texel wider each side), in units of the radius ([-1, 1] the whole square): a
+// billboard need not cover more than what its views show (billboard.vert), which on the crystal
+// is about half of the square.
 
 #include <vector>
 
@@ -43,6 +48,10 @@ public:
   const gl::Texture& normalOffset() const { return normalOffset_; }
   const LightFieldSettings& settings() const { return settings_; }
   float radius() const { return radius_; }
+  // Per layer: (right min, up min, right max, up max) of the model's image, in units of radius(),
+  // within [-1, 1]; as a storage buffer of vec4 for the billboards.
+  const std::vector<glm::vec4>& viewBounds() const { return viewBounds_; }
+  const gl::Buffer& viewBoundsBuffer() const { return viewBoundsBuffer_; }
   std::size_t memoryBytes() const;  // every level of both arrays
 
   // Level 0 of one layer of albedo() or normalOffset(), texel (x, y) at [y * resolution + x].
@@ -56,6 +65,8 @@ private:
   LightFieldSettings settings_;
   float radius_ = 0.0f;
   gl::Texture albedo_, normalOffset_;
+  std::vector<glm::vec4> viewBounds_;
+  gl::Buffer viewBoundsBuffer_;
 };
 
 }  // namespace lpvlab

@@ -56,7 +56,9 @@ void ParticleBillboards::draw(const RasterView& view) const {
   glUniform4fv(LOCATION_VIEWER, 1, &view.viewer[0]);
   glUniform2i(LOCATION_VIEW_GRID, drawing_.views.x, drawing_.views.y);
   glUniform1f(LOCATION_RADIUS, field_.radius());
-  glUniform1i(LOCATION_INTERPOLATE, drawing_.interpolate ? 1 : 0);
+  const bool interpolate =
+      drawing_.interpolate && (view.target != RasterTarget::ShadowMap || drawing_.interpolateShadows);
+  glUniform1i(LOCATION_INTERPOLATE, interpolate ? 1 : 0);
   if (view.target == RasterTarget::GBuffer) {
     glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_POSITION, 1, &view.cameraPosition[0]);
     glUniform3fv(gbuffer_kernel::LOCATION_CAMERA_FORWARD, 1, &view.cameraForward[0]);
@@ -65,6 +67,7 @@ void ParticleBillboards::draw(const RasterView& view) const {
     glUniform1i(rsm_kernel::LOCATION_RESOLUTION, view.resolution);
   }
   instances_.bindStorage(BUFFER_INSTANCES);
+  field_.viewBoundsBuffer().bindStorage(BUFFER_VIEW_BOUNDS);
   glBindTextureUnit(UNIT_LIGHT_FIELD_ALBEDO, field_.albedo().id());
   glBindTextureUnit(UNIT_LIGHT_FIELD_NORMAL, field_.normalOffset().id());
   glBindVertexArray(vertexArray_);

@@ -104,6 +104,7 @@ ParticleSettings readParticleSettings(Params p, int index) {
                             p.get<int>("elevations", 8, {.min = 1, .max = 1024})};
   settings.drawing.resolution = p.get<int>("resolution", 64, {.min = 1, .max = 4096});
   settings.drawing.interpolate = p.get<bool>("interpolate", true);
+  settings.drawing.interpolateShadows = p.get<bool>("interpolate_shadows", false);
   readOverLife(p, system);
   std::vector<Params> emitters = p.tables("emitters");
   if (emitters.empty())

@@ -47,6 +47,9 @@ struct ParticleDrawing {
   glm::ivec2 views{16, 8};  // the light field's azimuths x elevations
   int resolution = 64;      // texels per side of a view
   bool interpolate = true;  // blend the four views around the direction (false: the nearest)
+  // The shadow maps blend too (else they take the nearest view: a shadow needs the silhouette's
+  // depth alone, and one view costs a quarter of four; docs/particles.md measures both).
+  bool interpolateShadows = false;
 };
 
 class ParticleGeometry {

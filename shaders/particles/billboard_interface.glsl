@@ -8,5 +8,6 @@ const int LOCATION_VIEW_GRID = 5;     // uniform ivec2 viewGrid: azimuths, eleva
 const int LOCATION_RADIUS = 6;        // uniform float radius: a view's half-width, model units
 const int LOCATION_INTERPOLATE = 7;   // uniform int interpolate: 1 blends four views, 0 the nearest
 const int BUFFER_INSTANCES = 3;       // storage buffer: ParticleInstance[]
+const int BUFFER_VIEW_BOUNDS = 4;     // storage buffer: vec4 per light-field view, its image's bounds
 const int UNIT_LIGHT_FIELD_ALBEDO = 1;  // texture unit: sampler2DArray albedo (premultiplied)
 const int UNIT_LIGHT_FIELD_NORMAL = 2;  // texture unit: sampler2DArray normal and offset (premultiplied)

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 
 #include "crystal_model.h"
@@ -71,6 +72,45 @@ TEST(LightField, EveryViewIsTheModelSeenAlongItsDirection) {
   EXPECT_LT(worstAlbedo, 2e-3);  // one material: half-float rounding only
   // A texel whose centre ray grazes a ridge between two faces may show the other face.
   EXPECT_GE(exact, compared - compared / 50);
+}
+
+// The bounds of each view's image (what the billboards cut their squares to) hold every texel the
+// capture covered, and are tight: each edge within a few texels of a covered texel's centre (a
+// texel's margin, half a texel to the centre, and the crystal's pointed tips, whose last texel
+// centres fall short of the vertex).
+TEST(LightField, EachViewsBoundsHoldItsImageTightly) {
+  test::glTestContext();
+  const ParticleModel model = test::crystalModel();
+  ShaderCompiler shaders;
+  const LightFieldSettings settings{.views = {8, 4}, .resolution = 48};
+  const LightField field(model, settings, shaders);
+  ASSERT_EQ(field.viewBounds().size(), std::size_t(settings.views.x * settings.views.y));
+  const int n = settings.resolution;
+  const float texel = 2.0f / float(n);
+  int outside = 0;
+  float loosest = 0.0f;  // texels
+  double area = 0.0;
+  for (int layer = 0; layer < int(field.viewBounds().size()); ++layer) {
+    const glm::vec4 b = field.viewBounds()[std::size_t(layer)];
+    const std::vector<glm::vec4> albedo = field.read(field.albedo(), layer);
+    glm::vec2 lo(1.0f), hi(-1.0f);  // of the covered texels' centres
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        if (albedo[std::size_t(y * n + x)].w <= 0.0f) continue;
+        const glm::vec2 centre(2.0f * (x + 0.5f) / n - 1.0f, 2.0f * (y + 0.5f) / n - 1.0f);
+        outside += centre.x < b.x || centre.y < b.y || centre.x > b.z || centre.y > b.w;
+        lo = glm::min(lo, centre);
+        hi = glm::max(hi, centre);
+      }
+    loosest = std::max({loosest, (lo.x - b.x) / texel, (lo.y - b.y) / texel, (b.z - hi.x) / texel,
+                        (b.w - hi.y) / texel});
+    area += double(b.z - b.x) * double(b.w - b.y) / 4.0;
+  }
+  std::cout << "[ light field ] view bounds: " << outside << " covered texels outside, the loosest edge "
+            << loosest << " texels from a covered texel's centre; mean area "
+            << area / double(field.viewBounds().size()) << " of the square\n";
+  EXPECT_EQ(outside, 0);
+  EXPECT_LT(loosest, 4.0f);
 }
 
 TEST(LightField, BadSettingsAreErrors) {

@@ -45,14 +45,7 @@ void expectTheCapturedView(bool interpolate) {
   particle.size = size;  // orientation: identity, so object and world directions agree
   billboards.update({particle});
 
-  // A triangle far outside every view: the G-buffer pass needs a scene.
-  Scene empty;
-  empty.materials.push_back(Material{});
-  empty.meshes.push_back(Mesh{.positions = {{-500, -500, -500}, {-501, -500, -500}, {-500, -501, -500}},
-                              .normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}},
-                              .uvs = {{0, 0}, {0, 0}, {0, 0}},
-                              .indices = {0, 1, 2}});
-  const SceneGpu gpu(empty);
+  const SceneGpu gpu(test::nothingInView());
   GBufferPass pass(shaders, resolution, resolution, false);
   const double halfWidth = size * billboards.lightField().radius();
   int texels = 0, agree = 0, covered = 0, close = 0;

@@ -6,20 +6,35 @@
 //   c. a sequence moves them: every frame's record counts the live particles and has a scene
 //      hash of its own, and its images stay finite;
 //   d. one large particle drawn as a light field and as geometry covers the same pixels and gets
-//      the same direct and indirect light, within the tolerances the test states.
+//      the same direct and indirect light, within the tolerances the test states;
+//   e. a light-field particle, turned and seen from one of its captured directions, lit only by a
+//      light grid that holds the same linear intensity I(w) = I0 + I1 a.w in every cell, gets at
+//      every pixel the closed form albedo (I0 - 2/3 I1 a.n) / s^2 of the surface a ray finds
+//      there, for SH orders 1 and 2, nearest and interpolated views.
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/run.h"
+#include "framework/experiment/sweep.h"
 #include "framework/particles/particle_billboards.h"
 #include "framework/pipeline/pipeline.h"
+#include "framework/pipeline/raster_passes.h"
 #include "io/temp_dir.h"
+#include "particles/crystal_model.h"
 #include "pipeline_test_support.h"
+#include "rendering_rig.h"
+
+LPVLAB_SHARED_GLSL_BEGIN
+#include "shaders/particles/light_field_views.glsl"
+LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
@@ -133,6 +148,53 @@ TEST(Particles, ASequenceMovesThemFrameByFrame) {
   }
 }
 
+// A sweep's summary.csv counts each run's particles over its systems and names the first system's
+// drawing even where no sweep sets it (the report's particle sections need it); a sweep without
+// particles has no such columns.
+TEST(Particles, TheSweepSummaryHasTheirCountsAndDrawing) {
+  test::TempDir dir;
+  const auto write = [&](const std::string& id, nlohmann::json manifest) {  // one timed repeat
+    manifest["timing"] = {{"samples", {{"gpu_ms", {{"total", {12.5}}}}}}};
+    std::filesystem::create_directories(dir.path() / id);
+    std::ofstream(dir.path() / id / "manifest.json") << manifest.dump();
+  };
+  const auto table = [&]() {
+    writeSweepSummary(dir.path().string());
+    std::ifstream csv(dir.path() / "summary.csv");
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(csv, line);) {
+      rows.emplace_back();
+      std::stringstream fields(line);
+      for (std::string field; std::getline(fields, field, ',');) rows.back().push_back(field);
+      if (!line.empty() && line.back() == ',') rows.back().push_back("");
+    }
+    return rows;
+  };
+  const auto column = [](const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+    const auto at = std::find(rows.at(0).begin(), rows.at(0).end(), name);
+    return at == rows[0].end() ? -1 : int(at - rows[0].begin());
+  };
+  write("a", {{"configuration", {{"grid", {{"resolution", 32}}}}}});
+  std::vector<std::vector<std::string>> rows = table();
+  EXPECT_EQ(column(rows, "param.particles[0].draw"), -1);
+  EXPECT_EQ(column(rows, "particles.alive"), -1);
+
+  write("b", {{"configuration", {{"particles", {{{"draw", "light_field"}}, {{"draw", "geometry"}}}}}},
+              {"particles", {{{"alive_at_frame_0", 10}, {"capacity", 20}, {"triangles", 160}},
+                             {{"alive_at_frame_0", 5}, {"capacity", 6}, {"triangles", 48}}}}});
+  rows = table();
+  ASSERT_EQ(rows.size(), 3u);  // header, a, b
+  const int draw = column(rows, "param.particles[0].draw"), alive = column(rows, "particles.alive"),
+            triangles = column(rows, "particles.triangles");
+  ASSERT_GE(draw, 0);
+  ASSERT_GE(alive, 0);
+  ASSERT_GE(triangles, 0);
+  EXPECT_EQ(rows[1].at(std::size_t(draw)), "");
+  EXPECT_EQ(rows[2].at(std::size_t(draw)), "light_field");
+  EXPECT_EQ(std::stod(rows[2].at(std::size_t(alive))), 15.0);
+  EXPECT_EQ(std::stod(rows[2].at(std::size_t(triangles))), 208.0);
+}
+
 // One crystal, 0.2 m, still, unturned, in the middle of the box, at frame 0, in a 192^2 image.
 std::vector<std::string> oneParticle(const std::string& draw) {
   return smallFrame({"particles[0].emitters[0].rate=0.01", "particles[0].emitters[0].lifetime=100.0",
@@ -179,6 +241,112 @@ TEST(Particles, ALightFieldParticleLooksAndIsLitLikeItsGeometry) {
   EXPECT_GE(double(both) / either, 0.85);            // coverage: the silhouettes agree but at edges
   EXPECT_NEAR(directF / directG, 1.0, 0.1);          // blended normals and the billboard's shadow
   EXPECT_NEAR(indirectF / indirectG, 1.0, 0.1);      // the same grid, read at the same points
+}
+
+// The light grid's cells hold intensity I(w) = I0 + I1 a.w (W/sr, light travelling along w), the
+// same in every cell. Its SH coefficients in closed form (sh.glsl's basis: Y00 = 1 / (2 sqrt(pi)),
+// (Y1-1, Y10, Y11) = sqrt(3 / (4 pi)) (-y, z, -x)): c0 = 2 sqrt(pi) I0, c1m = I1 <a.w, Y1m> with
+// <w_j, Y1m> = (4 pi / 3) of Y1m's factor of w_j. A surface with normal n receives
+// E = integral I(w) max(0, -w.n) dw = pi I0 - (2 pi / 3) I1 a.n, and a Lambertian one of albedo
+// rho sends rho E / (pi s^2) (the grid's intensity spread over a cell's face s^2: sh.glsl).
+struct LinearIntensity {
+  glm::dvec3 i0, i1;  // per channel
+  glm::dvec3 a;       // unit
+  std::vector<double> coefficients(int channel, int count) const {
+    const double y1 = 0.5 * std::sqrt(3.0 / M_PI), toBand1 = 4.0 * M_PI / 3.0 * y1;
+    std::vector<double> c(std::size_t(count), 0.0);
+    c[0] = 2.0 * std::sqrt(M_PI) * i0[channel];
+    c[1] = -toBand1 * i1[channel] * a.y;
+    c[2] = toBand1 * i1[channel] * a.z;
+    c[3] = -toBand1 * i1[channel] * a.x;
+    return c;
+  }
+  glm::dvec3 radiance(glm::dvec3 albedo, glm::dvec3 n, double cellSize) const {
+    return albedo * (i0 - 2.0 / 3.0 * i1 * glm::dot(a, n)) / (cellSize * cellSize);
+  }
+};
+
+TEST(Particles, ALightFieldParticleInAUniformGridGetsTheClosedFormRadiance) {
+  test::glTestContext();
+  ShaderCompiler shaders;
+  const ParticleModel model = test::crystalModel();
+  Scene modelScene;
+  modelScene.meshes = model.meshes;
+  modelScene.materials = model.materials;
+  const test::SceneRaycaster caster(modelScene);
+  const SceneGpu gpu(test::nothingInView());
+
+  Particle particle;
+  particle.position = {0.4, 1.1, 2.3};
+  particle.size = 0.5;
+  particle.orientation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, -1.0, 0.5)));
+  const GridGeometry geometry{glm::vec3(-0.6f, 0.1f, 1.3f), 0.25f, glm::ivec3(8)};
+  const LinearIntensity light{.i0 = {2e-3, 1.2e-3, 0.7e-3}, .i1 = {1.5e-3, 1.0e-3, 0.2e-3},
+                              .a = glm::normalize(glm::dvec3(0.4, -1.0, 0.3))};
+  const int resolution = 40;
+  const double distance = 1000.0;
+  for (bool interpolate : {false, true}) {
+    const ParticleDrawing drawing{.lightField = true, .views = {8, 4}, .resolution = resolution,
+                                  .interpolate = interpolate};
+    ParticleBillboards billboards(model, drawing, 1, shaders);
+    billboards.update({particle});
+    const double halfWidth = particle.size * billboards.lightField().radius();
+    GBufferPass pass(shaders, resolution, resolution, false);
+    for (int order = 1; order <= 2; ++order) {
+      test::HandGrid grid(geometry, order);
+      grid.fill([&](glm::ivec3, int channel, std::vector<double>& c) {
+        c = light.coefficients(channel, grid.coefficients());
+      });
+      int pixels = 0, agree = 0, compared = 0, close = 0;
+      for (const auto& [i, j] : {std::pair{1, 1}, std::pair{4, 2}, std::pair{7, 0}}) {
+        // The view's direction and up vector in object space, turned into the world.
+        const glm::dvec3 d = particle.orientation * shared::lightFieldViewDirection(i, j, drawing.views);
+        const glm::dvec3 up = particle.orientation * shared::lightFieldUp(shared::lightFieldViewDirection(i, j, drawing.views));
+        Camera camera;
+        camera.position = glm::vec3(particle.position + distance * d);
+        camera.forward = glm::vec3(-d);
+        camera.up = glm::vec3(up);
+        camera.verticalFov = float(2.0 * std::atan(halfWidth / distance));
+        camera.nearPlane = float(distance - 2.0);
+        camera.farPlane = float(distance + 2.0);
+        pass.render(gpu, camera, {&billboards});
+        const std::vector<glm::dvec3> out =
+            test::renderGBuffer("trilinear", {}, {grid}, pass.gbuffer(), camera);
+        std::vector<float> covered(std::size_t(resolution) * resolution * 4);
+        glGetTextureImage(pass.gbuffer().position.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(covered.size() * sizeof(float)),
+                          covered.data());
+        // Each pixel's centre ray, into the model's frame (centred, largest extent 1).
+        const glm::dvec3 eye(camera.position), forward(camera.forward);
+        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
+        const glm::dvec3 cameraUp = glm::cross(right, forward);
+        const double tanHalf = std::tan(0.5 * double(camera.verticalFov));
+        const glm::dquat toObject = glm::conjugate(particle.orientation);
+        for (int y = 0; y < resolution; ++y)
+          for (int x = 0; x < resolution; ++x) {
+            const std::size_t p = std::size_t(y) * resolution + std::size_t(x);
+            const glm::dvec3 ray = glm::normalize(forward + tanHalf * ((2.0 * (x + 0.5) / resolution - 1.0) * right +
+                                                                       (2.0 * (y + 0.5) / resolution - 1.0) * cameraUp));
+            const auto hit = caster.cast(toObject * (eye - particle.position) / particle.size, toObject * ray);
+            const bool seen = covered[4 * p + 3] > 0.5f;
+            ++pixels;
+            agree += seen == bool(hit);
+            if (!hit || !seen) continue;
+            ++compared;
+            glm::dvec3 n = particle.orientation * hit->normal;
+            if (glm::dot(n, ray) > 0.0) n = -n;
+            const glm::dvec3 expected =
+                light.radiance(glm::dvec3(caster.material(*hit).baseColor), n, double(geometry.cellSize));
+            close += glm::length(out[p] - expected) < 5e-3 * glm::length(expected);
+          }
+      }
+      std::cout << "[ particles ] uniform grid, order " << order << (interpolate ? ", interpolated" : ", nearest")
+                << ": coverage as the rays' at " << agree << " of " << pixels << " pixels, radiance within 0.5 % of"
+                << " the closed form at " << close << " of " << compared << "\n";
+      EXPECT_GT(compared, pixels / 10);
+      EXPECT_GE(agree, pixels - pixels / 50);      // edge pixels only
+      EXPECT_GE(close, compared - compared / 50);  // a pixel whose ray grazes a ridge shows either face
+    }
+  }
 }
 
 }  // namespace

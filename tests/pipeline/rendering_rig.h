@@ -1,6 +1,6 @@
 #pragma once
-// A rendering strategy run on a hand-made G-buffer (one row of pixels with chosen positions,
-// normals and albedos) and hand-made light grids: one grid, or the levels of a cascade.
+// A rendering strategy run on a G-buffer (a rendered one, or one row of pixels with chosen
+// positions, normals and albedos) and hand-made light grids: one grid, or the levels of a cascade.
 
 #include <memory>
 #include <string>
@@ -62,15 +62,15 @@ struct HandGrid {
   }
 };
 
-// Renders `pixels` (one row) with the strategy `type` and its [rendering] table `table`, from the
-// cascade `levels` (finest first, all with the same cell counts and SH order) blended over
+// Renders the G-buffer `gbuffer` with the strategy `type` and its [rendering] table `table`, from
+// the cascade `levels` (finest first, all with the same cell counts and SH order) blended over
 // `blendCells` cells; the output is zeroed first, as the pipeline does. `backend` chooses where
-// the strategy runs (ComputeBackend::Cpu refuses one without a CPU kernel).
-inline std::vector<dvec3> renderPixels(const std::string& type, toml::table table,
-                                       const std::vector<HandGrid>& levels,
-                                       const std::vector<SurfacePixel>& pixels,
-                                       const glm::vec3& cameraPosition, float blendCells = 0.0f,
-                                       ComputeBackend backend = ComputeBackend::Gl) {
+// the strategy runs (ComputeBackend::Cpu refuses one without a CPU kernel). Returns the indirect
+// radiance per pixel, rows from the bottom.
+inline std::vector<dvec3> renderGBuffer(const std::string& type, toml::table table,
+                                        const std::vector<HandGrid>& levels, const GBuffer& gbuffer,
+                                        const Camera& camera, float blendCells = 0.0f,
+                                        ComputeBackend backend = ComputeBackend::Gl) {
   const HandGrid& grid = levels.front();
   test::glTestContext();
   table.insert_or_assign("type", type);
@@ -89,7 +89,28 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
     lightGrids.emplace_back(level.geometry, level.order);
     lightGrids.back().accumulated.upload(level.data.data(), level.data.size() * sizeof(float));
   }
+  DualImage indirect(gbuffer.width, gbuffer.height, "indirect (test)");  // zeros
+  const LightMaps noLightMaps;
+  HostReadback host;
+  Frame frame{.camera = &camera, .gbuffer = gbuffer, .lightMaps = noLightMaps,
+              .lightGrid = lightGrids.front(), .indirect = indirect, .host = &host,
+              .levels = lightGrids, .cascadeBlendCells = blendCells};
+  rendering->render(frame);
+  const HostImage& out = indirect.hostRead();
+  checkGl("rendering variants test");
+  std::vector<dvec3> result;
+  for (std::size_t i = 0; i < std::size_t(gbuffer.width) * std::size_t(gbuffer.height); ++i)
+    result.emplace_back(out.texels[i]);
+  return result;
+}
 
+// renderGBuffer on a G-buffer of one row holding `pixels`, seen from `cameraPosition`.
+inline std::vector<dvec3> renderPixels(const std::string& type, toml::table table,
+                                       const std::vector<HandGrid>& levels,
+                                       const std::vector<SurfacePixel>& pixels,
+                                       const glm::vec3& cameraPosition, float blendCells = 0.0f,
+                                       ComputeBackend backend = ComputeBackend::Gl) {
+  test::glTestContext();
   const int w = int(pixels.size());
   GBuffer gbuffer;
   gbuffer.width = w;
@@ -109,20 +130,9 @@ inline std::vector<dvec3> renderPixels(const std::string& type, toml::table tabl
   gbuffer.position = texture(position, "position (test)");
   gbuffer.normal = texture(normal, "normal (test)");
   gbuffer.albedo = texture(albedo, "albedo (test)");
-  DualImage indirect(w, 1, "indirect (test)");  // zeros
-  const LightMaps noLightMaps;
   Camera camera;
   camera.position = cameraPosition;
-  HostReadback host;
-  Frame frame{.camera = &camera, .gbuffer = gbuffer, .lightMaps = noLightMaps,
-              .lightGrid = lightGrids.front(), .indirect = indirect, .host = &host,
-              .levels = lightGrids, .cascadeBlendCells = blendCells};
-  rendering->render(frame);
-  const HostImage& out = indirect.hostRead();
-  checkGl("rendering variants test");
-  std::vector<dvec3> result;
-  for (int i = 0; i < w; ++i) result.emplace_back(out.texels[std::size_t(i)]);
-  return result;
+  return renderGBuffer(type, std::move(table), levels, gbuffer, camera, blendCells, backend);
 }
 
 inline std::vector<dvec3> renderPixels(const std::string& type, toml::table table, const HandGrid& grid,
