@@ -47,7 +47,7 @@ void ParticleBillboards::update(const std::vector<Particle>& particles) {
 }
 
 void ParticleBillboards::draw(const RasterView& view) const {
-  if (count_ == 0) return;
+  if (count_ == 0 || (view.target == RasterTarget::Rsm && !drawing_.inject)) return;
   using namespace billboard_kernel;
   const Program& program = view.target == RasterTarget::GBuffer ? gbuffer_
                            : view.target == RasterTarget::ShadowMap ? shadow_ : rsm_;

@@ -105,6 +105,7 @@ ParticleSettings readParticleSettings(Params p, int index) {
   settings.drawing.resolution = p.get<int>("resolution", 64, {.min = 1, .max = 4096});
   settings.drawing.interpolate = p.get<bool>("interpolate", true);
   settings.drawing.interpolateShadows = p.get<bool>("interpolate_shadows", false);
+  settings.drawing.inject = p.get<bool>("inject", true);
   readOverLife(p, system);
   std::vector<Params> emitters = p.tables("emitters");
   if (emitters.empty())

@@ -86,6 +86,7 @@ ParticleGeometry::ParticleGeometry(ParticleSystem system, const ParticleModel& m
   for (Material material : model_.materials) {
     material.name = "particles:" + system_.name + ":" + material.name;
     material.baseColor *= glm::vec3(system_.color);
+    material.injects = drawing_.inject;
     if (material.baseColorTexture >= 0) material.baseColorTexture += firstTexture;
     scene.materials.push_back(material);
   }

@@ -50,6 +50,10 @@ struct ParticleDrawing {
   // The shadow maps blend too (else they take the nearest view: a shadow needs the silhouette's
   // depth alone, and one view costs a quarter of four; docs/particles.md measures both).
   bool interpolateShadows = false;
+  // The particles are drawn into the RSMs (either drawing), so their surfaces are VPLs: they
+  // reflect light into the grid. False leaves them out there (what is behind them injects as if
+  // they were not there); they still cast shadows and block light in the geometry volume.
+  bool inject = true;
 };
 
 class ParticleGeometry {

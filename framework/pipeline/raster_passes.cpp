@@ -186,7 +186,7 @@ void LightMapsPass::renderRsms(const SceneGpu& scene, const std::vector<const Ex
     glUniform1i(LOCATION_RESOLUTION, maps_.rsmResolution);
     glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clipFromWorld_[layer][0][0]);
     glUniform1i(LOCATION_VIEW_INDEX, layer);
-    scene.draw();
+    scene.draw(SceneGpu::AlphaMasks::Any, true, /*injectingOnly=*/true);
     const RasterView view{.target = RasterTarget::Rsm,
                           .clipFromWorld = clipFromWorld_[layer],
                           .viewer = lightViewViewer(maps_.records, layer),

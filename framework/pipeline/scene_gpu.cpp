@@ -75,11 +75,12 @@ SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
     base += static_cast<std::uint32_t>(mesh.positions.size());
     if (!draws_.empty() && draws_.back().material == mesh.material)
       draws_.back().indexCount += mesh.indices.size();
-    else
-      draws_.push_back({mesh.material,
-                        mesh.material >= 0 && mesh.material < int(scene.materials.size()) &&
-                            scene.materials[std::size_t(mesh.material)].alphaMode == AlphaMode::Mask,
-                        first, mesh.indices.size()});
+    else {
+      const bool known = mesh.material >= 0 && mesh.material < int(scene.materials.size());
+      const Material* material = known ? &scene.materials[std::size_t(mesh.material)] : nullptr;
+      draws_.push_back({mesh.material, material && material->alphaMode == AlphaMode::Mask,
+                        !material || material->injects, first, mesh.indices.size()});
+    }
   }
   for (const Mesh& mesh : scene.meshes) vertexCounts_.push_back(mesh.positions.size());
   if (indices.empty()) indices.push_back(0);
@@ -122,12 +123,12 @@ SceneGpu::~SceneGpu() {
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void SceneGpu::draw(AlphaMasks which, bool bindMaterials) const {
+void SceneGpu::draw(AlphaMasks which, bool bindMaterials, bool injectingOnly) const {
   glBindVertexArray(vertexArray_);
   if (bindMaterials) materials_.bindStorage(material_kernel::BUFFER_MATERIALS);
   for (const DrawRange& range : draws_) {
     if ((which == AlphaMasks::Only && !range.alphaMasked) ||
-        (which == AlphaMasks::None && range.alphaMasked))
+        (which == AlphaMasks::None && range.alphaMasked) || (injectingOnly && !range.injects))
       continue;
     if (bindMaterials) {
       glUniform1i(material_kernel::LOCATION_MATERIAL_INDEX, range.material);

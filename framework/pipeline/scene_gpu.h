@@ -34,8 +34,9 @@ public:
   enum class AlphaMasks { Any, Only, None };
   // Draws the selected triangles with the currently bound program; with `bindMaterials` it sets
   // uniform location 1 (materialIndex) and texture unit 0 per material (a depth-only program
-  // for surfaces without alpha masks needs neither, and has no such uniform).
-  void draw(AlphaMasks which = AlphaMasks::Any, bool bindMaterials = true) const;
+  // for surfaces without alpha masks needs neither, and has no such uniform). `injectingOnly`
+  // leaves out the materials that do not inject (Material::injects): the RSMs' draw.
+  void draw(AlphaMasks which = AlphaMasks::Any, bool bindMaterials = true, bool injectingOnly = false) const;
   std::size_t memoryBytes() const;
   // Uploads the vertices of `scene` again: the same meshes, moved (an animation's rigid motions,
   // framework/animation/animation.h). Throws if `scene` has other meshes than the uploaded one.
@@ -50,6 +51,7 @@ private:
   struct DrawRange {
     int material;
     bool alphaMasked;  // the material's alpha mask can cut fragments out
+    bool injects;      // Material::injects
     std::size_t firstIndex;
     std::size_t indexCount;
   };

@@ -44,6 +44,10 @@ struct Material {
   glm::vec3 transmittance{0.0f};
   float extinction = 0.0f;
   bool translucent() const { return glm::any(glm::greaterThan(transmittance, glm::vec3(0.0f))); }
+  // Drawn into the reflective shadow maps, whose texels are the VPLs of injection and of the
+  // many-light methods: false for the copies of a particle system with inject = false
+  // (docs/particles.md). Not in the scene hash: the reference does not read it.
+  bool injects = true;
 };
 
 struct Mesh {

@@ -10,13 +10,17 @@
 //   e. a light-field particle, turned and seen from one of its captured directions, lit only by a
 //      light grid that holds the same linear intensity I(w) = I0 + I1 a.w in every cell, gets at
 //      every pixel the closed form albedo (I0 - 2/3 I1 a.n) / s^2 of the surface a ray finds
-//      there, for SH orders 1 and 2, nearest and interpolated views.
+//      there, for SH orders 1 and 2, nearest and interpolated views;
+//   f. inject = false leaves them out of the RSMs: the grid gets what the scene without them
+//      injects, for either drawing;
+//   g. a sweep's summary.csv counts them and names their drawing.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,6 +58,7 @@ std::vector<std::string> smallFrame(std::vector<std::string> more = {}) {
 struct Frame {
   Experiment experiment;
   std::vector<NamedImage> outputs;
+  InjectionBalance injection;  // the RSMs' flux and what went into the grid
 };
 
 Frame render(std::vector<std::string> overrides, bool withoutParticles = false) {
@@ -66,9 +71,11 @@ Frame render(std::vector<std::string> overrides, bool withoutParticles = false) 
         for (glm::vec3& v : e.scene.meshes[std::size_t(m)].positions) v = glm::vec3(0.28f, 0.01f, 0.28f);
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
-  const ParticleBillboardSet billboards(e.particles, e.animation.frameTime(0), shaders, pipeline);
+  std::optional<ParticleBillboardSet> billboards;  // and no billboards without particles
+  if (!withoutParticles) billboards.emplace(e.particles, e.animation.frameTime(0), shaders, pipeline);
   pipeline.renderFrame();
   f.outputs = pipeline.readOutputs();
+  f.injection = pipeline.measureInjection();
   return f;
 }
 
@@ -145,6 +152,24 @@ TEST(Particles, ASequenceMovesThemFrameByFrame) {
     EXPECT_GT(record.at("particles_alive").at("fountain").get<int>(), 100) << frame;
     EXPECT_NE(record.at("scene_hash").get<std::string>(), previousHash);
     previousHash = record.at("scene_hash");
+  }
+}
+
+// inject = false leaves the particles out of the RSMs, for either drawing: the grid then gets what
+// the same scene without particles injects, to float rounding, where inject = true differs.
+TEST(Particles, WithoutInjectionTheGridGetsWhatTheSceneWithoutThemInjects) {
+  for (const std::string draw : {"geometry", "light_field"}) {
+    const std::vector<std::string> base = smallFrame({"particles[0].draw=\"" + draw + "\""});
+    std::vector<std::string> off = base;
+    off.push_back("particles[0].inject=false");
+    const double bare = render(base, true).injection.rsmFlux;
+    const double injecting = render(base).injection.rsmFlux;
+    const double notInjecting = render(off).injection.rsmFlux;
+    std::cout << "[ particles ] " << draw << ": RSM flux " << injecting << " W injecting, " << notInjecting
+              << " W not, " << bare << " W without particles\n";
+    ASSERT_GT(bare, 0.0);
+    EXPECT_NEAR(notInjecting, bare, 1e-5 * bare) << draw;
+    EXPECT_GT(std::abs(injecting - bare), 1e-3 * bare) << draw << ": the particles change nothing injected";
   }
 }
 
