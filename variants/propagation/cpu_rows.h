@@ -7,6 +7,11 @@
 
 #include "framework/math/dual.h"
 
+// The row kernels pass vector registers to always-inlined helpers (below): GCC's note that a 32-
+// or 64-byte vector's calling convention differs without AVX concerns no real call. (For the rest
+// of each kernel's translation unit, as where its includers set it before.)
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace lpvlab::cpu_rows {
 
 // Cells along x are computed a register at a time: a GCC vector (vector_size) of `Bytes`, the

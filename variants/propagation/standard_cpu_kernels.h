@@ -24,20 +24,12 @@
 #include "framework/math/shared.h"
 #include "variants/propagation/standard_cpu.h"
 
-// The row kernels pass vector registers to always-inlined helpers (cpu_rows.h): GCC's note that
-// a 32- or 64-byte vector's calling convention differs without AVX concerns no real call.
-#pragma GCC diagnostic ignored "-Wpsabi"
 #include "variants/propagation/cpu_rows.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/standard_faces.glsl"
-using glm::mix;
-// The kernels' GV lookup over one GV buffer (coefficient-major, 4 values per GV cell).
-struct GvLookup {
-  const float* gvBlocking;
-#include "shaders/common/geometry_volume_lookup.glsl"
-};
 LPVLAB_SHARED_GLSL_END
+#include "variants/propagation/gv_lookup.h"
 
 namespace lpvlab {
 
