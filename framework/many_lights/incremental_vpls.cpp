@@ -79,7 +79,7 @@ IncrementalVpls::Kept IncrementalVpls::place(const RayScene& scene, const LightC
   k.onSurface = true;
   k.position = x.position;
   k.normal = x.shadingNormal;  // towards the light: surfaceAt turns it to the ray's side
-  k.albedo = albedoAt(*x.geometry->material, x.uv);
+  k.albedo = surfaceAlbedo(x);
   return k;
 }
 

@@ -155,7 +155,7 @@ void walkPacket(const RayScene& scene, const Emitter& emitter, const LightPathSe
       const glm::vec3 direction(packet.query.ray.dir_x[lane], packet.query.ray.dir_y[lane],
                                 packet.query.ray.dir_z[lane]);
       const SurfacePoint x = surfaceAt(embree, hit, origin, direction);
-      const glm::vec3 albedo = albedoAt(*x.geometry->material, x.uv);
+      const glm::vec3 albedo = surfaceAlbedo(x);
       const glm::vec3 reflected = flux[lane] * albedo;
       if (glm::any(glm::greaterThan(reflected, glm::vec3(0.0f))))
         out.perWalk[std::size_t(lane)].push_back(Vpl{x.position, x.shadingNormal, reflected, bounce});

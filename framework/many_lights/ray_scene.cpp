@@ -25,6 +25,7 @@ void RayScene::moveGeometry(const Scene& scene) {
   for (std::size_t i = 0; i < scene_.meshes.size() && i < scene.meshes.size(); ++i) {
     scene_.meshes[i].positions = scene.meshes[i].positions;
     scene_.meshes[i].normals = scene.meshes[i].normals;
+    scene_.meshes[i].colors = scene.meshes[i].colors;  // a particle's colour over its life
   }
   stale_ = true;
 }
@@ -38,7 +39,8 @@ std::size_t RayScene::memoryBytes() const {
   std::size_t bytes = 0;
   for (const Mesh& mesh : scene_.meshes)
     bytes += mesh.positions.size() * sizeof(glm::vec3) + mesh.normals.size() * sizeof(glm::vec3) +
-             mesh.uvs.size() * sizeof(glm::vec2) + mesh.indices.size() * sizeof(std::uint32_t);
+             mesh.uvs.size() * sizeof(glm::vec2) + mesh.colors.size() * sizeof(glm::vec3) +
+             mesh.indices.size() * sizeof(std::uint32_t);
   for (const TextureImage& texture : scene_.textures) bytes += texture.rgba8.size();
   return bytes;
 }

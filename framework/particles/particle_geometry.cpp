@@ -64,9 +64,6 @@ ParticleGeometry::ParticleGeometry(ParticleSystem system, const ParticleModel& m
                                    double seconds, std::size_t maxTriangles, ParticleDrawing drawing)
     : system_(std::move(system)), model_(model), drawing_(drawing) {
   const std::string what = "particle system '" + system_.name + "'";
-  if (!system_.colorOverLife.empty())
-    throw Error(what + ": colour keys over the life need a colour per particle, which particles "
-                       "drawn as the scene's geometry cannot have: give one colour");
   const std::size_t capacity = system_.capacity();
   if (capacity * model_.triangleCount() > maxTriangles)
     throw Error(what + ": up to " + std::to_string(capacity) + " particles of " +
@@ -85,7 +82,7 @@ ParticleGeometry::ParticleGeometry(ParticleSystem system, const ParticleModel& m
   scene.textures.insert(scene.textures.end(), model_.textures.begin(), model_.textures.end());
   for (Material material : model_.materials) {
     material.name = "particles:" + system_.name + ":" + material.name;
-    material.baseColor *= glm::vec3(system_.color);
+    if (!colouredPerParticle()) material.baseColor *= glm::vec3(system_.color);
     material.injects = drawing_.inject;
     if (material.baseColorTexture >= 0) material.baseColorTexture += firstTexture;
     scene.materials.push_back(material);
@@ -100,6 +97,7 @@ ParticleGeometry::ParticleGeometry(ParticleSystem system, const ParticleModel& m
     mesh.positions.resize(capacity * vertices);
     mesh.normals.resize(capacity * vertices, glm::vec3(0, 1, 0));
     mesh.uvs.resize(capacity * vertices);
+    if (colouredPerParticle()) mesh.colors.resize(capacity * vertices, glm::vec3(1.0f));
     mesh.indices.reserve(capacity * part.indices.size());
     for (std::size_t s = 0; s < capacity; ++s) {
       for (std::size_t v = 0; v < vertices; ++v) mesh.uvs[s * vertices + v] = part.uvs.at(v);
@@ -132,6 +130,7 @@ std::size_t ParticleGeometry::place(Scene& scene, double seconds) const {
     tbb::parallel_for(std::size_t(0), capacity, [&](std::size_t s) {
       glm::vec3* positions = mesh.positions.data() + s * vertices;
       glm::vec3* normals = mesh.normals.data() + s * vertices;
+      glm::vec3* colors = mesh.colors.empty() ? nullptr : mesh.colors.data() + s * vertices;
       if (occupant[s] < 0) {  // empty: collapsed onto its emitter's centre
         const glm::vec3 centre(system_.emitters[std::size_t(emitterOfSlot[s])].position);
         std::fill(positions, positions + vertices, centre);
@@ -144,6 +143,7 @@ std::size_t ParticleGeometry::place(Scene& scene, double seconds) const {
         positions[v] = glm::vec3(p.position + p.size * (rotation * glm::dvec3(part.positions[v])));
         normals[v] = glm::vec3(glm::normalize(rotation * glm::dvec3(part.normals[v])));
       }
+      if (colors) std::fill(colors, colors + vertices, glm::clamp(glm::vec3(p.color), 0.0f, 1.0f));
     });
   }
   return particles.size();

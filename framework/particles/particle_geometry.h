@@ -12,8 +12,9 @@
 //
 // The model is centred on the centre of its bounds and scaled so that its largest extent is 1;
 // a particle of size s is that shape scaled by s, turned by its orientation, at its position.
-// Its colour multiplies the model's albedo; as the copies share the model's materials, the
-// colour must be the same for every particle and every moment (one colour, no colour keys).
+// Its colour multiplies the model's albedo: one colour for the system goes into the copies'
+// materials; colour keys over the life go into the copies' vertex colours (Mesh::colors), each
+// slot's set as it is placed, which every renderer reads like the material's.
 
 #include <string>
 #include <vector>
@@ -58,14 +59,15 @@ struct ParticleDrawing {
 
 class ParticleGeometry {
 public:
-  // Appends the model's materials (coloured by the system's colour) and its meshes, with room
-  // for system.capacity() copies, to `scene`, and places the particles alive at `seconds`.
-  // Throws an Error when the colour varies or the copies would exceed `maxTriangles`.
+  // Appends the model's materials (coloured by the system's colour unless it has colour keys)
+  // and its meshes, with room for system.capacity() copies (and their vertex colours with colour
+  // keys), to `scene`, and places the particles alive at `seconds`.
+  // Throws an Error when the copies would exceed `maxTriangles`.
   ParticleGeometry(ParticleSystem system, const ParticleModel& model, Scene& scene,
                    double seconds, std::size_t maxTriangles, ParticleDrawing drawing = {});
 
-  // Places the particles alive at `seconds` into the meshes this system appended to `scene`;
-  // returns how many there are.
+  // Places the particles alive at `seconds` into the meshes this system appended to `scene`
+  // (positions, normals and, with colour keys, colours); returns how many there are.
   std::size_t place(Scene& scene, double seconds) const;
 
   const ParticleSystem& system() const { return system_; }
@@ -73,6 +75,8 @@ public:
   const ParticleDrawing& drawing() const { return drawing_; }
   int firstMesh() const { return firstMesh_; }
   int meshCount() const { return int(model_.meshes.size()); }
+  // Whether each particle's colour is its own (colour keys: in the copies' vertex colours).
+  bool colouredPerParticle() const { return !system_.colorOverLife.empty(); }
 
 private:
   ParticleSystem system_;

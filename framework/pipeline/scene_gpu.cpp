@@ -17,6 +17,7 @@ struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  glm::vec3 color;  // Mesh::colors, white for a mesh without
 };
 
 gl::Texture uploadTexture(const TextureImage& source) {
@@ -41,7 +42,8 @@ std::vector<Vertex> interleavedVertices(const Scene& scene, const std::vector<in
     const Mesh& mesh = scene.meshes[std::size_t(meshIndex)];
     for (size_t v = 0; v < mesh.positions.size(); ++v)
       vertices.push_back({mesh.positions[v], mesh.normals[v],
-                          v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f)});
+                          v < mesh.uvs.size() ? mesh.uvs[v] : glm::vec2(0.0f),
+                          v < mesh.colors.size() ? mesh.colors[v] : glm::vec3(1.0f)});
   }
   return vertices;
 }
@@ -112,7 +114,8 @@ SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
   };
   for (const Attribute& a : {Attribute{scene_vertex::ATTRIBUTE_POSITION, 3, offsetof(Vertex, position)},
                              Attribute{scene_vertex::ATTRIBUTE_NORMAL, 3, offsetof(Vertex, normal)},
-                             Attribute{scene_vertex::ATTRIBUTE_UV, 2, offsetof(Vertex, uv)}}) {
+                             Attribute{scene_vertex::ATTRIBUTE_UV, 2, offsetof(Vertex, uv)},
+                             Attribute{scene_vertex::ATTRIBUTE_COLOR, 3, offsetof(Vertex, color)}}) {
     glEnableVertexArrayAttrib(vertexArray_, GLuint(a.location));
     glVertexArrayAttribFormat(vertexArray_, GLuint(a.location), a.size, GL_FLOAT, GL_FALSE, a.offset);
     glVertexArrayAttribBinding(vertexArray_, GLuint(a.location), 0);
@@ -148,7 +151,7 @@ void SceneGpu::updateGeometry(const Scene& scene) {
     same = scene.meshes[i].positions.size() == vertexCounts_[i] &&
            scene.meshes[i].normals.size() == vertexCounts_[i];
   if (!same)
-    throw Error("scene update: the meshes differ from the uploaded ones (only moves are updated)");
+    throw Error("scene update: the meshes differ from the uploaded ones (only moves and colours are updated)");
   const std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
   vertices_.upload(vertices.data(), vertices.size() * sizeof(Vertex));
   measureMaterialBounds(scene);

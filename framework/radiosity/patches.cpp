@@ -57,24 +57,35 @@ float weldQuantum(const Scene& scene) {
   return b.empty() ? 1e-30f : std::max(1e-5f * largest, 1e-30f);
 }
 
-// The patch's albedo: the material's, averaged over a 4 x 4 grid of sub-triangle centres (a
-// texture varies across a patch; the mean is what the patch reflects in total).
-glm::vec3 meanAlbedo(const SurfaceMaterial& material, const std::array<glm::vec2, 3>& uv) {
-  if (!material.texture) return material.baseColor;
+// The values at the corners of a triangle that the patches carry (position, uv, colour) are
+// linear across it: the patches of a triangle, and the children of a split, interpolate them.
+template <class T>
+using Corners = std::array<T, 3>;
+
+template <class T>
+T interpolate(const Corners<T>& v, float b1, float b2) {
+  return v[0] + b1 * (v[1] - v[0]) + b2 * (v[2] - v[0]);
+}
+
+// The patch's albedo: the material's times the vertex colour, averaged over a 4 x 4 grid of
+// sub-triangle centres (a texture or the colours vary across a patch; the mean is what the
+// patch reflects in total).
+glm::vec3 meanAlbedo(const SurfaceMaterial& material, const Corners<glm::vec2>& uv, const Corners<glm::vec3>& color) {
+  if (!material.texture && color[0] == color[1] && color[1] == color[2]) return material.baseColor * color[0];
   constexpr int n = 4;
   glm::vec3 sum(0.0f);
   int count = 0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; i + j < n; ++j) {
       const float b1 = (float(i) + 1.0f / 3.0f) / n, b2 = (float(j) + 1.0f / 3.0f) / n;
-      sum += albedoAt(material, (1.0f - b1 - b2) * uv[0] + b1 * uv[1] + b2 * uv[2]);
+      sum += albedoAt(material, interpolate(uv, b1, b2)) * interpolate(color, b1, b2);
       ++count;
     }
   return sum / float(count);
 }
 
-// A patch from three corners (and their uvs); false for a degenerate one.
-bool makePatch(const std::array<glm::vec3, 3>& c, const std::array<glm::vec2, 3>& uv,
+// A patch from three corners (and their uvs and colours); false for a degenerate one.
+bool makePatch(const Corners<glm::vec3>& c, const Corners<glm::vec2>& uv, const Corners<glm::vec3>& color,
                const SurfaceMaterial& material, int mesh, int level, Patch& out) {
   const glm::dvec3 cross =
       glm::cross(glm::dvec3(c[1]) - glm::dvec3(c[0]), glm::dvec3(c[2]) - glm::dvec3(c[0]));
@@ -82,14 +93,35 @@ bool makePatch(const std::array<glm::vec3, 3>& c, const std::array<glm::vec2, 3>
   if (!(twiceArea > 0.0) || !std::isfinite(twiceArea)) return false;
   out.corners = c;
   out.uv = uv;
+  out.color = color;
   out.normal = glm::vec3(cross / twiceArea);
   out.centroid = (c[0] + c[1] + c[2]) / 3.0f;
   out.area = float(0.5 * twiceArea);
-  out.albedo = glm::clamp(meanAlbedo(material, uv), 0.0f, 1.0f);
+  out.albedo = glm::clamp(meanAlbedo(material, uv, color), 0.0f, 1.0f);
   out.exitance = float(M_PI) * material.emission;
   out.mesh = mesh;
   out.level = level;
   return true;
+}
+
+// The two sub-triangles at (i, j) of a triangle cut into n x n along its edges from corner 0:
+// the upright one, and the one turned over beside it (where i + j + 2 <= n).
+template <class T>
+Corners<T> upright(const Corners<T>& v, int i, int j, int n) {
+  const auto at = [&](int a, int b) { return interpolate(v, float(a) / float(n), float(b) / float(n)); };
+  return {at(i, j), at(i + 1, j), at(i, j + 1)};
+}
+template <class T>
+Corners<T> turned(const Corners<T>& v, int i, int j, int n) {
+  const auto at = [&](int a, int b) { return interpolate(v, float(a) / float(n), float(b) / float(n)); };
+  return {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+}
+
+// The four children of a split at the edges' midpoints, corner k's child first, the middle last.
+template <class T>
+std::array<Corners<T>, 4> halves(const Corners<T>& c) {
+  const T m01 = 0.5f * (c[0] + c[1]), m12 = 0.5f * (c[1] + c[2]), m20 = 0.5f * (c[2] + c[0]);
+  return {{{c[0], m01, m20}, {m01, c[1], m12}, {m20, m12, c[2]}, {m12, m20, m01}}};
 }
 
 void weldAll(const Scene& scene, PatchMesh& mesh) {
@@ -111,8 +143,11 @@ PatchMesh meshPatches(const Scene& scene, float maxEdge, std::size_t maxPatches)
     const SurfaceMaterial& material = materials.at(std::size_t(mesh.material));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       const std::array<std::uint32_t, 3> index = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
-      const glm::vec3 a = mesh.positions[index[0]], b = mesh.positions[index[1]], c = mesh.positions[index[2]];
-      const glm::vec2 ua = mesh.uvs[index[0]], ub = mesh.uvs[index[1]], uc = mesh.uvs[index[2]];
+      const Corners<glm::vec3> corners = {mesh.positions[index[0]], mesh.positions[index[1]], mesh.positions[index[2]]};
+      const Corners<glm::vec2> uvs = {mesh.uvs[index[0]], mesh.uvs[index[1]], mesh.uvs[index[2]]};
+      Corners<glm::vec3> colors = {glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(1.0f)};
+      if (!mesh.colors.empty()) colors = {mesh.colors[index[0]], mesh.colors[index[1]], mesh.colors[index[2]]};
+      const auto& [a, b, c] = corners;
       const float longest = std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
       if (!std::isfinite(longest))
         throw Error(scene.source + ": mesh '" + mesh.name + "' has a non-finite vertex");
@@ -123,17 +158,14 @@ PatchMesh meshPatches(const Scene& scene, float maxEdge, std::size_t maxPatches)
                     "' alone needs " + std::to_string(pieces * pieces) +
                     " per triangle); raise patch_size or max_patches");
       const int n = int(pieces);
-      auto at = [&](int i, int j) { return a + (float(i) / n) * (b - a) + (float(j) / n) * (c - a); };
-      auto uvAt = [&](int i, int j) { return ua + (float(i) / n) * (ub - ua) + (float(j) / n) * (uc - ua); };
       Patch p;
       for (int i = 0; i < n; ++i)
         for (int j = 0; i + j < n; ++j) {
-          if (makePatch({at(i, j), at(i + 1, j), at(i, j + 1)}, {uvAt(i, j), uvAt(i + 1, j), uvAt(i, j + 1)},
-                        material, int(m), 0, p))
+          if (makePatch(upright(corners, i, j, n), upright(uvs, i, j, n), upright(colors, i, j, n), material,
+                        int(m), 0, p))
             out.patches.push_back(p);
-          if (i + j + 2 <= n &&
-              makePatch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
-                        {uvAt(i + 1, j), uvAt(i + 1, j + 1), uvAt(i, j + 1)}, material, int(m), 0, p))
+          if (i + j + 2 <= n && makePatch(turned(corners, i, j, n), turned(uvs, i, j, n),
+                                          turned(colors, i, j, n), material, int(m), 0, p))
             out.patches.push_back(p);
         }
     }
@@ -152,18 +184,13 @@ PatchMesh splitPatches(const Scene& scene, const PatchMesh& mesh, const std::vec
       out.patches.push_back(p);
       continue;
     }
-    const auto& c = p.corners;
-    const auto& t = p.uv;
-    const glm::vec3 m01 = 0.5f * (c[0] + c[1]), m12 = 0.5f * (c[1] + c[2]), m20 = 0.5f * (c[2] + c[0]);
-    const glm::vec2 u01 = 0.5f * (t[0] + t[1]), u12 = 0.5f * (t[1] + t[2]), u20 = 0.5f * (t[2] + t[0]);
     const SurfaceMaterial& material = materials.at(std::size_t(scene.meshes.at(std::size_t(p.mesh)).material));
-    const std::array<std::array<glm::vec3, 3>, 4> corners = {
-        {{c[0], m01, m20}, {m01, c[1], m12}, {m20, m12, c[2]}, {m12, m20, m01}}};
-    const std::array<std::array<glm::vec2, 3>, 4> uvs = {
-        {{t[0], u01, u20}, {u01, t[1], u12}, {u20, u12, t[2]}, {u12, u20, u01}}};
+    const auto corners = halves(p.corners);
+    const auto uvs = halves(p.uv);
+    const auto colors = halves(p.color);
     Patch child;
     for (int k = 0; k < 4; ++k)
-      if (makePatch(corners[k], uvs[k], material, p.mesh, p.level + 1, child)) out.patches.push_back(child);
+      if (makePatch(corners[k], uvs[k], colors[k], material, p.mesh, p.level + 1, child)) out.patches.push_back(child);
   }
   weldAll(scene, out);
   return out;

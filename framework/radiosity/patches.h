@@ -29,10 +29,11 @@ struct Patch {
   std::array<glm::vec3, 3> corners;   // counter-clockwise seen from the front side
   std::array<std::uint32_t, 3> vertex;  // welded vertex of each corner (PatchMesh::vertexCount)
   std::array<glm::vec2, 3> uv;        // texture coordinates of the corners
+  std::array<glm::vec3, 3> color;     // vertex colours of the corners (Mesh::colors; white without)
   glm::vec3 normal;                   // unit, the front side's
   glm::vec3 centroid;
   float area;                         // m^2
-  glm::vec3 albedo;                   // mean over the patch, each channel in [0, 1]
+  glm::vec3 albedo;                   // mean over the patch (material x vertex colour), in [0, 1]
   glm::vec3 exitance;                 // pi L_e, W/m^2, per side
   int mesh;                           // of the scene
   int level;                          // subdivisions by splitPatches (0: uniform meshing)

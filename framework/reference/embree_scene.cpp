@@ -53,6 +53,12 @@ void checkMesh(const Mesh& mesh, std::size_t materialCount) {
   const std::string where = "path tracer: mesh '" + mesh.name + "'";
   if (mesh.normals.size() != mesh.positions.size() || mesh.uvs.size() != mesh.positions.size())
     throwAt(where, "needs one normal and one uv per position");
+  if (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size())
+    throwAt(where, "has " + std::to_string(mesh.colors.size()) + " vertex colours for " +
+                       std::to_string(mesh.positions.size()) + " positions (none, or one each)");
+  for (const glm::vec3& c : mesh.colors)
+    if (!(glm::all(glm::greaterThanEqual(c, glm::vec3(0.0f))) && glm::all(glm::lessThanEqual(c, glm::vec3(1.0f)))))
+      throwAt(where, "has a vertex colour outside [0, 1] (or not a number)");
   if (mesh.indices.size() % 3 != 0) throwAt(where, "index count is not a multiple of 3");
   for (std::uint32_t index : mesh.indices)
     if (index >= mesh.positions.size())
@@ -84,7 +90,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>&
     if (mesh.indices.empty()) continue;
     triangles_.push_back(triangleFrames(mesh));
     records_.push_back({mesh.normals.data(), mesh.uvs.data(),
-                        mesh.indices.data(), triangles_.back().data(), &materials[mesh.material],
+                        mesh.colors.empty() ? nullptr : mesh.colors.data(), mesh.indices.data(), triangles_.back().data(), &materials[mesh.material],
                         int(m)});
   }
 
@@ -246,7 +252,7 @@ SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::v
   x.geometricNormal = frame.unitNormal;
   x.shadingNormal = frame.unitNormal;
   x.uv = glm::vec2(0.0f);  // never read for untextured materials
-  if (!frame.flat || geometry.material->texture) {
+  if (!frame.flat || geometry.material->texture || geometry.colors) {
     const std::uint32_t* corner = geometry.indices + 3 * std::size_t(hit.primID);
     const float w = 1.0f - hit.u - hit.v;
     if (!frame.flat) {
@@ -261,6 +267,9 @@ SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::v
     if (geometry.material->texture)
       x.uv = w * geometry.uvs[corner[0]] + hit.u * geometry.uvs[corner[1]] +
              hit.v * geometry.uvs[corner[2]];
+    if (geometry.colors)
+      x.color = w * geometry.colors[corner[0]] + hit.u * geometry.colors[corner[1]] +
+                hit.v * geometry.colors[corner[2]];
   }
   if (glm::dot(x.shadingNormal, direction) > 0.0f) x.shadingNormal = -x.shadingNormal;
   return x;

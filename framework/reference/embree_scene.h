@@ -31,6 +31,7 @@ struct TriangleFrame {
 struct GeometryRecord {
   const glm::vec3* normals;
   const glm::vec2* uvs;
+  const glm::vec3* colors;  // vertex colours (Mesh::colors); null: none
   const std::uint32_t* indices;
   const TriangleFrame* triangles;
   const SurfaceMaterial* material;
@@ -77,13 +78,20 @@ struct SurfacePoint {
   glm::vec3 geometricNormal;  // unit, as wound (either side)
   glm::vec3 shadingNormal;    // unit, turned to the side the ray came from
   glm::vec2 uv;               // zero for untextured materials (never read)
+  glm::vec3 color{1.0f};      // the vertex colours interpolated; white for a mesh without
   const GeometryRecord* geometry;
 };
 
 // The point `hit` of the ray origin + t direction, with its shading normal (the vertex normals
-// interpolated, the geometric one where they cancel) and texture coordinates.
+// interpolated, the geometric one where they cancel), texture coordinates and vertex colour.
 SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::vec3& origin,
                        const glm::vec3& direction);
+
+// The Lambertian albedo at x: the material's (base colour x texture) times the vertex colour,
+// as the raster passes compute it (shaders/raster/gbuffer.frag, rsm.frag).
+inline glm::vec3 surfaceAlbedo(const SurfacePoint& x) {
+  return albedoAt(*x.geometry->material, x.uv) * x.color;
+}
 
 // Start of a ray leaving x along `direction`: moved off the surface along the geometric normal,
 // to the side the ray leaves on, so it cannot hit x's own triangle again.

@@ -109,7 +109,7 @@ bool Integrator::scatter(const RayHit& hit, int lane, PathState& path, PathSampl
         path.scatterings == 0 ? 1.0f : emissionWeight(x, hit, path.direction, path.brdfPdf);
     attribute(sample, path.scatterings, path.throughput * material.emission * weight);
   }
-  const glm::vec3 albedo = albedoAt(material, x.uv);
+  const glm::vec3 albedo = surfaceAlbedo(x);
   if (path.scatterings == 0) {
     sample.albedo = albedo;
     sample.normal = x.shadingNormal;

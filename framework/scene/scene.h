@@ -56,6 +56,11 @@ struct Mesh {
   std::vector<glm::vec3> normals;    // world space, unit length, one per position
   std::vector<glm::vec2> uvs;        // one per position (zero when the file has none); (0,0) is the
                                      // top-left corner of a texture (glTF's convention)
+  // Vertex colours: empty, or one per position, linear RGB in [0, 1] that multiplies the
+  // material's albedo (base colour x texture) at the interpolated point; not the emission. Every
+  // renderer reads them (raster passes, path tracer, radiosity's patches): what gives each of a
+  // particle system's copies its colour over the life (framework/particles).
+  std::vector<glm::vec3> colors;
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from the normal side
   int material = 0;                  // index into Scene::materials
   // false: the LPV pipeline's raster passes leave the mesh out, because something else draws it

@@ -27,13 +27,14 @@ void hashVec3(Hasher& h, const glm::vec3& v) { h.value(v.x).value(v.y).value(v.z
 
 std::string sceneHash(const Scene& scene) {
   Hasher h;
-  h.text("lpvlab scene hash 1");  // changes when what is hashed changes
+  h.text("lpvlab scene hash 2");  // changes when what is hashed changes
 
   h.value(static_cast<std::uint64_t>(scene.meshes.size()));
   for (const Mesh& mesh : scene.meshes) {
     hashArray(h, mesh.positions);
     hashArray(h, mesh.normals);
     hashArray(h, mesh.uvs);
+    hashArray(h, mesh.colors);
     hashArray(h, mesh.indices);
     h.value(static_cast<std::int32_t>(mesh.material));
   }

@@ -12,6 +12,7 @@
 layout(location = 0) in vec3 objectPosition;
 layout(location = 1) in vec3 objectNormal;
 layout(location = 2) in vec2 texcoord;
+layout(location = 3) in vec3 vertexColor;
 
 #include "capture_interface.glsl"
 layout(location = LOCATION_VIEW_DIRECTION) uniform vec3 viewDirection;
@@ -20,7 +21,7 @@ layout(location = 0) out vec4 outAlbedo;
 layout(location = 1) out vec4 outNormalOffset;
 
 void main() {
-  vec3 albedo = materialAlbedo(texcoord);
+  vec3 albedo = materialAlbedo(texcoord) * vertexColor;
   vec3 n = normalize(objectNormal);
   if (dot(n, viewDirection) < 0.0) n = -n;  // two-sided, as every lpvlab surface
   outAlbedo = vec4(albedo, 1.0);

@@ -5,4 +5,5 @@
 const int ATTRIBUTE_POSITION = 0;        // vertex attribute: vec3 position
 const int ATTRIBUTE_NORMAL = 1;          // vertex attribute: vec3 normal
 const int ATTRIBUTE_UV = 2;              // vertex attribute: vec2 uv
+const int ATTRIBUTE_COLOR = 3;           // vertex attribute: vec3 color (Mesh::colors, white without)
 const int LOCATION_CLIP_FROM_WORLD = 0;  // uniform mat4 clipFromWorld

@@ -1,8 +1,8 @@
 // Particles placed into a scene as copies of their model: each live particle's copy is the model
 // centred, scaled to its size, turned and moved to its position (checked vertex by vertex against
 // the particle), empty slots cover no area, a particle keeps its slot for its whole life, and the
-// model's problems (a mesh it lacks, no extent, emission, too many triangles, colour keys) are
-// named errors.
+// model's problems (a mesh it lacks, no extent, emission, too many triangles) are named errors;
+// with colour keys each copy's vertex colours are its particle's colour at the life it has lived.
 
 #include "framework/particles/particle_geometry.h"
 
@@ -173,10 +173,41 @@ TEST(ParticleGeometry, TheModelsProblemsAreNamedErrors) {
   Scene scene;
   EXPECT_TRUE(contains(errorOf([&] { ParticleGeometry(system(), model, scene, 0.0, 10); }),
                        "lower the emitters' rate"));
+}
+
+// Colour keys from red at birth to blue at death: every live particle's copy has, at each of its
+// vertices, (1 - f, 0, f) for the fraction f of its life lived (the closed form of the two keys),
+// and the material keeps the model's albedo (the colour is the vertices', not multiplied twice).
+TEST(ParticleGeometry, ColourKeysColourEachCopyByTheLifeItHasLived) {
+  Scene scene;
+  const ParticleModel model = particleModel(modelFile(), {"quad"});
   ParticleSystem keyed = system();
-  keyed.colorOverLife = KeyframeTrack<glm::dvec3>({0.0}, {glm::dvec3(1.0)}, Interpolation::Linear);
-  EXPECT_TRUE(contains(errorOf([&] { ParticleGeometry(keyed, model, scene, 0.0, 1'000'000); }),
-                       "give one colour"));
+  keyed.colorOverLife = KeyframeTrack<glm::dvec3>({0.0, 1.0}, {glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1)},
+                                                  Interpolation::Linear);
+  const ParticleGeometry geometry(keyed, model, scene, 0.0, 1'000'000);
+  ASSERT_TRUE(geometry.colouredPerParticle());
+  const Mesh& mesh = scene.meshes.at(0);
+  ASSERT_EQ(mesh.colors.size(), mesh.positions.size());
+  EXPECT_EQ(scene.materials.at(std::size_t(mesh.material)).baseColor, glm::vec3(0.8f, 0.1f, 0.1f));
+  const std::size_t capacity = geometry.system().capacity();
+  std::size_t checked = 0;
+  for (double t : {0.0, 0.21, 1.7}) {
+    geometry.place(scene, t);
+    for (const Particle& p : particlesAt(geometry.system(), t)) {
+      const double f = p.age / p.lifetime;
+      const glm::vec3 expected(float(1.0 - f), 0.0f, float(f));
+      const glm::vec3 first = glm::vec3(p.position + p.size * (glm::mat3_cast(p.orientation) *
+                                                               glm::dvec3(model.meshes[0].positions[0])));
+      std::size_t slot = capacity;
+      for (std::size_t i = 0; i < capacity; ++i)
+        if (glm::length(mesh.positions[4 * i] - first) < 1e-5f) slot = i;
+      ASSERT_LT(slot, capacity) << "particle " << p.index << " at " << t << " s";
+      for (std::size_t v = 0; v < 4; ++v)
+        EXPECT_LT(glm::length(mesh.colors[4 * slot + v] - expected), 1e-6f) << p.index << " at " << t << " s";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20u);
 }
 
 }  // namespace

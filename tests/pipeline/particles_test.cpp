@@ -1,16 +1,19 @@
 // Particle systems through the LPV pipeline (experiments/particles_cornell.toml, docs/particles.md),
 // against a brute-force double-precision ray caster over the same scene:
-//   a. the G-buffer sees a particle at exactly the pixels whose centre ray first hits one;
+//   a. the G-buffer sees a particle at exactly the pixels whose centre ray first hits one, in the
+//      colour its life gives it;
 //   b. the particles cast shadows: floor pixels whose shadow ray to the spot light is blocked
 //      only by particles get less direct light than without the particles;
 //   c. a sequence moves them: every frame's record counts the live particles and has a scene
 //      hash of its own, and its images stay finite;
-//   d. one large particle drawn as a light field and as geometry covers the same pixels and gets
-//      the same direct and indirect light, within the tolerances the test states;
+//   d. one large particle drawn as a light field and as geometry covers the same pixels in the
+//      same colour and gets the same direct and indirect light, within the tolerances the test
+//      states;
 //   e. a light-field particle, turned and seen from one of its captured directions, lit only by a
 //      light grid that holds the same linear intensity I(w) = I0 + I1 a.w in every cell, gets at
 //      every pixel the closed form albedo (I0 - 2/3 I1 a.n) / s^2 of the surface a ray finds
-//      there, for SH orders 1 and 2, nearest and interpolated views;
+//      there (its albedo times the particle's colour), for SH orders 1 and 2, nearest and
+//      interpolated views;
 //   f. inject = false leaves them out of the RSMs: the grid gets what the scene without them
 //      injects, for either drawing;
 //   g. a sweep's summary.csv counts them and names their drawing.
@@ -85,29 +88,44 @@ bool isParticle(const Experiment& e, int mesh) {
   return false;
 }
 
-TEST(Particles, TheGBufferSeesThemWhereRaysFirstHitThem) {
+// With the file's colour keys (warm at birth, cool at death), each copy's albedo is the crystal's
+// times its own colour: the G-buffer shows at every pixel the albedo of what the ray caster hits
+// there, vertex colours included, and the particles show more than one colour.
+TEST(Particles, TheGBufferSeesThemWhereRaysFirstHitThemInTheirColours) {
   const Frame f = render(smallFrame({"particles[0].draw=geometry"}));
   const Experiment& e = f.experiment;
   ASSERT_EQ(e.particles.size(), 1u);
+  ASSERT_TRUE(e.particles[0].colouredPerParticle());
   const test::SceneRaycaster caster(e.scene);
   const Image& albedo = findAov(f.outputs, "albedo");
-  const glm::vec3 crystal = e.scene.materials[std::size_t(e.scene.meshes[std::size_t(e.particles[0].firstMesh())].material)].baseColor;
-  int particlePixels = 0, agree = 0;
+  int hitPixels = 0, particlePixels = 0, agree = 0, particlesAgree = 0;
+  double bluest = 0.0, reddest = 1e9;  // of the particles' blue over red
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const glm::dvec3 ray = test::cameraRay(e.camera, kSize, kSize, x, y);
       const auto hit = caster.cast(glm::dvec3(e.camera.position), ray);
-      const bool expected = hit && isParticle(e, hit->mesh);
-      const glm::vec3 a(albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2));
-      const bool seen = glm::length(a - crystal) < 1e-3f;
-      particlePixels += expected;
-      agree += expected == seen;
+      if (!hit) continue;
+      const bool particle = isParticle(e, hit->mesh);
+      const glm::dvec3 expected = caster.untexturedAlbedo(*hit);
+      const glm::dvec3 a(albedo.at(x, y, 0), albedo.at(x, y, 1), albedo.at(x, y, 2));
+      const bool same = glm::length(a - expected) < 1e-3;
+      ++hitPixels;
+      agree += same;
+      particlePixels += particle;
+      particlesAgree += particle && same;
+      if (particle && same) {
+        bluest = std::max(bluest, expected.b / expected.r);
+        reddest = std::min(reddest, expected.b / expected.r);
+      }
     }
   std::cout << "[ particles ] " << particlePixels << " of " << kSize * kSize
-            << " pixels show a particle; the G-buffer agrees with the ray caster at " << agree << "\n";
+            << " pixels show a particle; the G-buffer's albedo is the ray caster's at " << agree << " of " << hitPixels
+            << " (" << particlesAgree << " of the particles'); blue over red " << reddest << " to " << bluest << "\n";
   EXPECT_GT(particlePixels, 20);
   // Rasterisation samples pixel centres too: only pixels whose centre grazes an edge may differ.
-  EXPECT_GE(agree, kSize * kSize - kSize / 8);
+  EXPECT_GE(agree, hitPixels - kSize / 8);
+  EXPECT_GE(particlesAgree, particlePixels - kSize / 8);
+  EXPECT_GT(bluest / reddest, 1.3);  // young and old crystals are told apart
 }
 
 TEST(Particles, TheyCastShadows) {
@@ -237,8 +255,15 @@ TEST(Particles, ALightFieldParticleLooksAndIsLitLikeItsGeometry) {
                                        "particles[0].resolution=128"});
   const Frame geometry = render(oneParticle("geometry"));
   const Frame field = render(lightField);
-  const glm::vec3 crystal = geometry.experiment.scene.materials[std::size_t(
-      geometry.experiment.scene.meshes[std::size_t(geometry.experiment.particles[0].firstMesh())].material)].baseColor;
+  // The crystal's albedo times the particle's colour (the file's colour key at birth): the
+  // geometry's vertex colours and the billboard's tint.
+  const Experiment& e = geometry.experiment;
+  const std::vector<Particle> alive = particlesAt(e.particles[0].system(), e.animation.frameTime(0));
+  ASSERT_EQ(alive.size(), 1u);
+  const glm::vec3 crystal =
+      e.scene.materials[std::size_t(e.scene.meshes[std::size_t(e.particles[0].firstMesh())].material)].baseColor *
+      glm::vec3(alive[0].color);
+  ASSERT_GT(glm::length(glm::vec3(alive[0].color) - glm::vec3(1.0f)), 0.1f);  // a colour, not white
   const Image& ga = findAov(geometry.outputs, "albedo");
   const Image& fa = findAov(field.outputs, "albedo");
   int both = 0, either = 0;
@@ -305,6 +330,7 @@ TEST(Particles, ALightFieldParticleInAUniformGridGetsTheClosedFormRadiance) {
   particle.position = {0.4, 1.1, 2.3};
   particle.size = 0.5;
   particle.orientation = glm::angleAxis(0.7, glm::normalize(glm::dvec3(0.3, -1.0, 0.5)));
+  particle.color = {0.6, 0.9, 0.5};  // the billboard's tint multiplies the captured albedo
   const GridGeometry geometry{glm::vec3(-0.6f, 0.1f, 1.3f), 0.25f, glm::ivec3(8)};
   const LinearIntensity light{.i0 = {2e-3, 1.2e-3, 0.7e-3}, .i1 = {1.5e-3, 1.0e-3, 0.2e-3},
                               .a = glm::normalize(glm::dvec3(0.4, -1.0, 0.3))};
@@ -360,7 +386,8 @@ TEST(Particles, ALightFieldParticleInAUniformGridGetsTheClosedFormRadiance) {
             glm::dvec3 n = particle.orientation * hit->normal;
             if (glm::dot(n, ray) > 0.0) n = -n;
             const glm::dvec3 expected =
-                light.radiance(glm::dvec3(caster.material(*hit).baseColor), n, double(geometry.cellSize));
+                light.radiance(glm::dvec3(caster.material(*hit).baseColor) * particle.color, n,
+                               double(geometry.cellSize));
             close += glm::length(out[p] - expected) < 5e-3 * glm::length(expected);
           }
       }

@@ -29,6 +29,8 @@ struct RayHit {
   double t = std::numeric_limits<double>::infinity();  // in units of |direction|
   int mesh = -1;
   glm::dvec3 normal{0.0};  // the triangle's geometric normal (unit, either side)
+  std::size_t firstIndex = 0;  // of the triangle's corners in the mesh's indices
+  double u = 0.0, v = 0.0;     // barycentrics: (1 - u - v) corner 0 + u corner 1 + v corner 2
 };
 
 // Every triangle of a scene in double precision, with its mesh.
@@ -40,7 +42,7 @@ public:
       for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
         triangles_.push_back({glm::dvec3(mesh.positions[mesh.indices[i]]),
                               glm::dvec3(mesh.positions[mesh.indices[i + 1]]),
-                              glm::dvec3(mesh.positions[mesh.indices[i + 2]]), m});
+                              glm::dvec3(mesh.positions[mesh.indices[i + 2]]), m, i});
     }
   }
 
@@ -65,6 +67,8 @@ public:
         best.t = t;
         best.mesh = tri.mesh;
         best.normal = glm::normalize(glm::cross(e1, e2));
+        best.firstIndex = tri.firstIndex;
+        best.u = u, best.v = v;
       }
     }
     if (best.mesh < 0) return std::nullopt;
@@ -75,10 +79,24 @@ public:
     return scene_.materials[scene_.meshes[hit.mesh].material];
   }
 
+  // The albedo at the hit of an untextured material: its base colour times the vertex colours
+  // interpolated (Mesh::colors; white without).
+  glm::dvec3 untexturedAlbedo(const RayHit& hit) const {
+    const Mesh& mesh = scene_.meshes[std::size_t(hit.mesh)];
+    glm::dvec3 colour(1.0);
+    if (!mesh.colors.empty()) {
+      const std::uint32_t* corner = &mesh.indices[hit.firstIndex];
+      colour = (1.0 - hit.u - hit.v) * glm::dvec3(mesh.colors[corner[0]]) + hit.u * glm::dvec3(mesh.colors[corner[1]]) +
+               hit.v * glm::dvec3(mesh.colors[corner[2]]);
+    }
+    return glm::dvec3(material(hit).baseColor) * colour;
+  }
+
 private:
   struct Triangle {
     glm::dvec3 a, b, c;
     int mesh;
+    std::size_t firstIndex;
   };
   const Scene& scene_;
   std::vector<Triangle> triangles_;

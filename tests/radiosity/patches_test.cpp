@@ -1,4 +1,4 @@
-// Meshing into patches: counts, areas, welding and errors.
+// Meshing into patches: counts, areas, welding, vertex colours and errors.
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
@@ -56,6 +56,31 @@ TEST(Patches, SplittingMakesFourChildrenOfTheSameArea) {
   for (const Patch& p : finer.patches) children += p.level == 1;
   EXPECT_EQ(children, 8);
   for (std::size_t p = 1; p < finer.patches.size(); ++p) EXPECT_GE(finer.patches[p].mesh, finer.patches[p - 1].mesh);
+}
+
+// Vertex colours linear across a triangle: a patch's albedo is the material's times the colour at
+// the patch's centroid (the mean of a linear colour over a triangle is its value there, and the
+// patch's 10 sample points average to the centroid), for the uniform meshing and for split
+// children alike; the colour is found independently from the centroid's position.
+TEST(Patches, VertexColoursGiveEachPatchTheColourAtItsCentroid) {
+  Scene scene = testing::colouredTriangle();  // the point (a, b, 0) has colour (1 - a - b, a, b)
+  const auto expectCentroidColour = [&](const PatchMesh& patches) {
+    for (const Patch& p : patches.patches) {
+      const glm::vec3 colour(1.0f - p.centroid.x - p.centroid.y, p.centroid.x, p.centroid.y);
+      EXPECT_LT(glm::length(p.albedo - colour * glm::vec3(0.5f, 0.8f, 1.0f)), 1e-5f)
+          << "level " << p.level << " at " << p.centroid.x << ", " << p.centroid.y;
+    }
+  };
+  const PatchMesh coarse = meshPatches(scene, 0.3f, 1000);
+  EXPECT_EQ(coarse.patches.size(), 25u);  // sqrt(2) / 0.3 -> 5 x 5
+  expectCentroidColour(coarse);
+  const PatchMesh finer = splitPatches(scene, coarse, std::vector<bool>(coarse.patches.size(), true));
+  EXPECT_EQ(finer.patches.size(), 100u);
+  expectCentroidColour(finer);
+
+  scene.meshes[0].colors.assign(3, glm::vec3(0.5f, 0.25f, 1.0f));  // uniform: exact products
+  for (const Patch& p : meshPatches(scene, 0.3f, 1000).patches)
+    EXPECT_EQ(p.albedo, glm::vec3(0.25f, 0.2f, 1.0f));
 }
 
 TEST(Patches, DegenerateTrianglesMakeNoPatches) {

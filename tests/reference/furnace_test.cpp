@@ -8,7 +8,9 @@
 //   combined  = Le / (1 - rho)
 // Every pixel is tested against these with its reported variance; the emission is reached by both
 // next-event estimation and BRDF sampling, so this checks their MIS weights sum to one, and the
-// roulette (rho up to 0.7 needs many bounces) for bias.
+// roulette (rho up to 0.7 needs many bounces) for bias. rho is the material's base colour times
+// the sphere's vertex colours (Mesh::colors), so the tracer must multiply them in at every
+// scattering, and into the albedo AOV.
 
 #include <cmath>
 #include <map>
@@ -34,11 +36,13 @@ struct FurnaceImages {
 };
 
 FurnaceImages renderFurnace(const std::string& isa) {
-  FurnaceImages furnace{.rho = {0.3f, 0.5f, 0.7f}, .emission = {1.0f, 2.0f, 0.5f}};
+  const glm::vec3 baseColor(0.6f, 0.625f, 0.875f), vertexColor(0.5f, 0.8f, 0.8f);
+  FurnaceImages furnace{.rho = baseColor * vertexColor, .emission = {1.0f, 2.0f, 0.5f}};  // (0.3, 0.5, 0.7)
   Scene scene;
   scene.source = "test:furnace";
-  scene.materials = {{.name = "furnace", .baseColor = furnace.rho, .emission = furnace.emission}};
+  scene.materials = {{.name = "furnace", .baseColor = baseColor, .emission = furnace.emission}};
   scene.meshes = {testing::inwardSphere(0, 1.0f, 24, 48)};
+  scene.meshes[0].colors.assign(scene.meshes[0].positions.size(), vertexColor);
   const Camera camera{.name = "centre", .position = glm::vec3(0.0f), .forward = {0, 0, -1},
                       .up = {0, 1, 0}, .verticalFov = float(M_PI / 2), .nearPlane = 0.01f,
                       .farPlane = 10.0f};

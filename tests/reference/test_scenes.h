@@ -35,6 +35,24 @@ inline Mesh quad(const std::string& name, int material, const std::array<glm::ve
   return mesh;
 }
 
+// One triangle in the plane z = 0 with corners (0,0), (1,0), (0,1) and vertex colours red, green
+// and blue there, so the point (a, b, 0) has colour (1 - a - b, a, b); material 0's base colour
+// (0.5, 0.8, 1.0).
+inline Scene colouredTriangle() {
+  Scene scene;
+  scene.source = "test:coloured triangle";
+  scene.materials.push_back(Material{.name = "grey", .baseColor = glm::vec3(0.5f, 0.8f, 1.0f)});
+  Mesh mesh;
+  mesh.name = "triangle";
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.normals.assign(3, glm::vec3(0, 0, 1));
+  mesh.uvs.resize(3);
+  mesh.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh.indices = {0, 1, 2};
+  scene.meshes.push_back(mesh);
+  return scene;
+}
+
 // The horizontal square [-half, half]^2 at height y, facing up; u grows with x, v with z.
 inline Mesh horizontalSquare(const std::string& name, int material, float half, float y) {
   return quad(name, material,

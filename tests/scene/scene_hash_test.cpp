@@ -38,6 +38,10 @@ TEST(SceneHash, ChangesWithWhatAffectsAnImage) {
   EXPECT_NE(hash, changed([](Scene& s) { s.textures[0].rgba8[100] ^= 1; }));
   EXPECT_NE(hash, changed([](Scene& s) { s.meshes[0].positions[0].x += 1e-3f; }));
   EXPECT_NE(hash, changed([](Scene& s) { s.meshes[0].material = 1; }));
+  // Vertex colours: given (white, which renders as none does, but is other data), then changed.
+  const auto coloured = [](Scene& s) { s.meshes[0].colors.assign(s.meshes[0].positions.size(), glm::vec3(1.0f)); };
+  EXPECT_NE(hash, changed(coloured));
+  EXPECT_NE(changed(coloured), changed([&](Scene& s) { coloured(s), s.meshes[0].colors[0].r = 0.5f; }));
   EXPECT_NE(hash, changed([](Scene& s) { s.cameras[0].verticalFov *= 0.5f; }));
   EXPECT_NE(hash, changed([](Scene& s) { s.lights.push_back(Light{}); }));
 }
