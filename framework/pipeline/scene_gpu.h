@@ -39,7 +39,8 @@ public:
   void draw(AlphaMasks which = AlphaMasks::Any, bool bindMaterials = true, bool injectingOnly = false) const;
   std::size_t memoryBytes() const;
   // Uploads the vertices of `scene` again: the same meshes, moved (an animation's rigid motions,
-  // framework/animation/animation.h) or recoloured (a particle's colour over its life). Throws if `scene` has other meshes than the uploaded one.
+  // framework/animation/animation.h) or recoloured (a particle's colour over its life).
+  // Throws if `scene` has other meshes than the uploaded one.
   void updateGeometry(const Scene& scene);
   // The scene's materials as given (for strategies that treat some materials apart, e.g. the
   // translucent ones of rendering "subsurface"), and the bounds of each one's triangles (empty

@@ -12,6 +12,12 @@ namespace lpvlab {
 
 namespace {
 
+// A vertex attribute at barycentrics (u, v) of the triangle with these corners.
+template <class T>
+T atBarycentrics(const T* values, const std::uint32_t* corner, float u, float v) {
+  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
+}
+
 // Intersection and occlusion filter of alpha-masked geometry: rejects each candidate hit whose
 // interpolated uv falls where the base colour texture's alpha is below the material's cutoff.
 void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
@@ -22,9 +28,7 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
     const float v = RTCHitN_v(args->hit, args->N, i);
     const std::uint32_t* corner =
         record.indices + 3 * std::size_t(RTCHitN_primID(args->hit, args->N, i));
-    const glm::vec2 uv = (1.0f - u - v) * record.uvs[corner[0]] + u * record.uvs[corner[1]] +
-                         v * record.uvs[corner[2]];
-    if (cutOut(*record.material, uv)) args->valid[i] = 0;
+    if (cutOut(*record.material, atBarycentrics(record.uvs, corner, u, v))) args->valid[i] = 0;
   }
 }
 
@@ -254,22 +258,15 @@ SurfacePoint surfaceAt(const EmbreeScene& scene, const RayHit& hit, const glm::v
   x.uv = glm::vec2(0.0f);  // never read for untextured materials
   if (!frame.flat || geometry.material->texture || geometry.colors) {
     const std::uint32_t* corner = geometry.indices + 3 * std::size_t(hit.primID);
-    const float w = 1.0f - hit.u - hit.v;
     if (!frame.flat) {
-      const glm::vec3 interpolated = w * geometry.normals[corner[0]] +
-                                     hit.u * geometry.normals[corner[1]] +
-                                     hit.v * geometry.normals[corner[2]];
+      const glm::vec3 interpolated = atBarycentrics(geometry.normals, corner, hit.u, hit.v);
       const float length2 = glm::dot(interpolated, interpolated);
       // Vertex normals that cancel out (or are missing as zeros) leave the geometric normal.
       if (length2 > 1e-12f && std::isfinite(length2))
         x.shadingNormal = interpolated / std::sqrt(length2);
     }
-    if (geometry.material->texture)
-      x.uv = w * geometry.uvs[corner[0]] + hit.u * geometry.uvs[corner[1]] +
-             hit.v * geometry.uvs[corner[2]];
-    if (geometry.colors)
-      x.color = w * geometry.colors[corner[0]] + hit.u * geometry.colors[corner[1]] +
-                hit.v * geometry.colors[corner[2]];
+    if (geometry.material->texture) x.uv = atBarycentrics(geometry.uvs, corner, hit.u, hit.v);
+    if (geometry.colors) x.color = atBarycentrics(geometry.colors, corner, hit.u, hit.v);
   }
   if (glm::dot(x.shadingNormal, direction) > 0.0f) x.shadingNormal = -x.shadingNormal;
   return x;
