@@ -329,6 +329,8 @@ std::vector<float> Pipeline::readGrid(bool accumulated, int level) const {
   return data;
 }
 
+const LightMaps& Pipeline::lightMaps() const { return lightMapsPass_->lightMaps(); }
+
 InjectionBalance Pipeline::measureInjection() {
   if (strategies_.method) throw Error("the run's indirect method injects nothing into a grid");
   const int coarsest = int(levels_.size()) - 1;

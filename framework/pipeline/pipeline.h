@@ -107,6 +107,10 @@ public:
   void addExtraGeometry(const ExtraGeometry* extra) { extras_.push_back(extra); }
   // The light grids, finest first, where the last frame placed them.
   const std::vector<LightGrid>& levels() const { return levels_; }
+  // Diagnostics (tests, audits): the last frame's light maps (the RSMs every injection reads),
+  // and a level's resources (named_resources.h), e.g. to read the injected normal grid back.
+  const LightMaps& lightMaps() const;
+  const ResourceTable& resources(int level = 0) const { return resources_.at(level); }
   // Cells one propagation iteration updates, over every level (for cell-iterations/s).
   std::size_t propagatedCells() const;
   const Requirements& requirements() const { return requirements_; }

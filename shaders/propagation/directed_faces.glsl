@@ -68,6 +68,33 @@ vec4 directedDilated(vec4 own, vec3 neighbourUnitNormalSum) {
   return vec4(n.x, n.y, n.z, 0.0);
 }
 
+// Release of the light from its surface's region (directed.cpp's `release`). Alg. 6.3 read
+// literally reprojects everything a cell receives about the cell's dilated normal. Dilation fills
+// the space between the surfaces with the normal of the nearest one, so every cell next to a lit
+// surface re-emits only light leaving that surface: light arriving from other surfaces is turned
+// back before it reaches it, and a scene whose every surface sends VPLs (a closed room under a
+// point light) is left almost black (issue 42; docs/variants.md#directed). With release, the
+// light is kept in two grids: "attached" light, still in the region of cells whose normals agree
+// with the surface it left, is reprojected as alg. 6.3 says; where the normal field changes (a
+// neighbour's normal differs by more than the region angle, or the cell has no normal) a cell
+// releases its attached light into the "free" grid, which propagates as standard propagation
+// does. So a surface never receives its own region's light (which the physics agrees with: two
+// surfaces of one normal exchange no light), and receives every other surface's.
+
+// Whether two stored normals belong to one region: both have a normal, within the region angle
+// (its cosine given).
+bool directedSameRegion(vec4 a, vec4 b, real cosRegionAngle) {
+  if (!directedHasNormal(a) || !directedHasNormal(b)) return false;
+  return dot(directedUnitNormal(a), directedUnitNormal(b)) >= cosRegionAngle;
+}
+
+// Whether a neighbour makes a cell (normal `own`) release its attached light: it has a normal of
+// another region. (A neighbour without a normal does not: light passing into it gets the
+// standard transfer there, and the neighbour releases it the step after.)
+bool directedNeighbourReleases(vec4 own, vec4 neighbour, real cosRegionAngle) {
+  return directedHasNormal(neighbour) && !directedSameRegion(own, neighbour, cosRegionAngle);
+}
+
 // l_L(a . b): the order-L clamped cosine lobe about unit a, evaluated at unit b, by the
 // addition theorem (Legendre polynomials of a . b: a few flops instead of 2 (L + 1)^2 basis
 // functions; the tests check it against sum_k cosLobe_k(a) Y_k(b)).

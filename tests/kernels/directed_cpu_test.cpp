@@ -110,35 +110,58 @@ TEST(DirectedCpu, CellsReprojectFromTheIterationTheDilationGivesThemANormal) {
 }
 
 // `iterations` CPU steps from `injected` with `normals`, the GV (if any) from iteration 1 on.
+// `released`: the light in two grids (directed.cpp's default), the attached one reprojected and
+// the free one standard, each cell released as makeReleasedCells says; else one grid, every
+// cell reprojecting (release = false).
 template <class Real>
 Propagated cpuPropagate(const Grid& injected, const std::vector<float>& normals,
                         const glm::ivec3& res, int order, int iterations, const Grid* gv,
-                        const std::string& isa = "auto", int threads = 0) {
+                        bool released, const std::string& isa = "auto", int threads = 0) {
   const StandardFaceTable<Real> table = makeStandardFaceTable<Real>(order, kFar, kSide);
   const ReprojectedCells<Real> cells =
       makeDirectedCells(table, res, normals, iterations, true, kFar, kSide);
+  const ReleasedCells release =
+      makeReleasedCells(res, normals, iterations, true, std::cos(10.0 * M_PI / 180.0));
   StandardOcclusion<Real> occlusion;
   if (gv) occlusion = makeStandardOcclusion(table, res, gv->data(), nullptr);
   std::vector<Real> current(injected.begin(), injected.end()), next(current.size()),
-      accumulated = current;
+      accumulated = current, free(current.size(), Real(0)), freeNext(current.size());
+  const std::size_t cellCount = std::size_t(res.x) * res.y * res.z;
   for (int i = 0; i < iterations; ++i) {
+    const StandardOcclusion<Real>* faces = gv && i >= 1 ? &occlusion : nullptr;
+    if (released) {
+      for (std::size_t cell = 0; cell < cellCount; ++cell)
+        if (!release.keeps(cell, i))
+          for (std::size_t k = cell; k < current.size(); k += cellCount) {
+            free[k] += current[k];
+            current[k] = Real(0);
+          }
+      standardGatherCpu(table, res, free.data(), freeNext.data(), accumulated.data(), isa,
+                        threads, faces, pairedAccumulation(i, iterations));
+      std::swap(free, freeNext);
+    }
     standardGatherCpu(table, res, current.data(), next.data(), accumulated.data(), isa, threads,
-                      gv && i >= 1 ? &occlusion : nullptr, pairedAccumulation(i, iterations),
-                      &cells, i);
+                      faces, pairedAccumulation(i, iterations), &cells, i);
     std::swap(current, next);
   }
+  if (released)
+    for (std::size_t k = 0; k < current.size(); ++k) current[k] += free[k];
   return {std::vector<double>(current.begin(), current.end()),
           std::vector<double>(accumulated.begin(), accumulated.end())};
 }
 
-void matchesGlsl(bool withGv) {
+void matchesGlsl(bool withGv, bool released) {
   const glm::ivec3 res(9, 6, 7);
   std::mt19937 random(withGv ? 31 : 13);
   const int iterations = 3;
   for (int order = 1; order <= 3; ++order) {
-    test::PropagationRig rig("directed", res, test::iterationsTable(iterations), order, withGv);
+    toml::table table = test::iterationsTable(iterations);
+    if (!released) table.insert("release", false);
+    test::PropagationRig rig("directed", res, table, order, withGv);
     const Grid injected = test::randomFloats(rig.floatsPerGrid(), random);
-    const std::vector<float> normals = sparseNormals(res, random);
+    // Released, random normals would release every cell and leave standard propagation.
+    const std::vector<float> normals =
+        released ? test::regionNormals(res, random, 0.6f) : sparseNormals(res, random);
     const Grid gv = test::randomGv(res + 1, random);
     rig.load(injected);
     rig.loadNormals(normals);
@@ -146,15 +169,16 @@ void matchesGlsl(bool withGv) {
     rig.propagate();
     const Grid glCurrent = rig.current(), glAccumulated = rig.accumulated();
     const Grid* gvOrNull = withGv ? &gv : nullptr;
-    const std::string what = "order " + std::to_string(order) + (withGv ? ", GV" : "");
+    const std::string what = "order " + std::to_string(order) + (withGv ? ", GV" : "") +
+                             (released ? ", released" : ", read literally");
     for (const std::string& isa : supportedCpuKernelInstructionSets()) {
       const Propagated cpu =
-          cpuPropagate<float>(injected, normals, res, order, iterations, gvOrNull, isa);
+          cpuPropagate<float>(injected, normals, res, order, iterations, gvOrNull, released, isa);
       EXPECT_LT(maxRelativeDifference(cpu.current, glCurrent), 2e-5) << what << ", " << isa;
       EXPECT_LT(maxRelativeDifference(cpu.accumulated, glAccumulated), 2e-5) << what << ", " << isa;
     }
     const Propagated cpu =
-        cpuPropagate<double>(injected, normals, res, order, iterations, gvOrNull);
+        cpuPropagate<double>(injected, normals, res, order, iterations, gvOrNull, released);
     EXPECT_LT(maxRelativeDifference(cpu.current, glCurrent), 2e-5) << what << ", double";
     EXPECT_LT(maxRelativeDifference(cpu.accumulated, glAccumulated), 2e-5) << what << ", double";
     // The reprojection made a difference, so the comparison covered it: standard propagation
@@ -172,8 +196,14 @@ void matchesGlsl(bool withGv) {
   }
 }
 
-TEST(DirectedCpu, MatchesTheGlslKernelsOnEveryInstructionSetAndInDouble) { matchesGlsl(false); }
-TEST(DirectedCpu, MatchesTheGlslKernelsThroughAGeometryVolume) { matchesGlsl(true); }
+TEST(DirectedCpu, MatchesTheGlslKernelsOnEveryInstructionSetAndInDouble) {
+  matchesGlsl(false, true);
+  matchesGlsl(false, false);
+}
+TEST(DirectedCpu, MatchesTheGlslKernelsThroughAGeometryVolume) {
+  matchesGlsl(true, true);
+  matchesGlsl(true, false);
+}
 
 TEST(DirectedCpu, TheStrategyFindsItsCellsAgainWhenTheNormalsChange) {
   const glm::ivec3 res(8, 8, 8);
@@ -198,8 +228,8 @@ TEST(DirectedCpu, ResultsDoNotDependOnTheThreadCountAndBadNormalsAreErrors) {
   const Grid injected = test::randomFloats(std::size_t(16 * 16 * 16) * 27, random);
   const std::vector<float> normals = sparseNormals(res, random);
   const Grid gv = test::randomGv(res + 1, random);
-  const Propagated one = cpuPropagate<float>(injected, normals, res, 2, 4, &gv, "auto", 1);
-  const Propagated two = cpuPropagate<float>(injected, normals, res, 2, 4, &gv, "auto", 2);
+  const Propagated one = cpuPropagate<float>(injected, normals, res, 2, 4, &gv, true, "auto", 1);
+  const Propagated two = cpuPropagate<float>(injected, normals, res, 2, 4, &gv, true, "auto", 2);
   EXPECT_EQ(one.accumulated, two.accumulated);
   const StandardFaceTable<float> table = makeStandardFaceTable<float>(1, kFar, kSide);
   EXPECT_TRUE(test::contains(test::errorOf([&] {

@@ -1,8 +1,9 @@
 // Directed propagation ("directed", shaders/propagation/directed_*.comp, and its CPU kernel,
 // directed_cpu.h) on hand-made grids, the kernels' tests on both backends:
-//   - the kernels' dilation and gather are the double-precision C++ of the same shared GLSL
-//     (directed_faces.glsl), over two iterations of random light and a sparse random normal grid,
-//     without and with a random geometry volume (occluding from the second iteration on);
+//   - the kernels' dilation, release and gather are the double-precision C++ of the same shared
+//     GLSL (directed_faces.glsl), over two iterations of random light and a sparse random normal
+//     grid, without and with a random geometry volume (occluding from the second iteration on),
+//     with release (the default: attached and free light) and read literally (release = false);
 //   - the normalisation: 1 / G(n) is what one unnormalised step keeps of a lobe about n, which
 //     for an axis normal is written out here face by face; with G, a VPL's lobe propagating among
 //     the normals dilated from its own keeps its flux at every iteration (the flux within a
@@ -88,6 +89,35 @@ Grid step(const Grid& g, const OrderGrid& o, const std::vector<float>& normals, 
   return out;
 }
 
+// Release (directed_faces.glsl): before a step, every cell without a normal, or with a neighbour
+// whose normal is of another region (`cosRegionAngle`), moves its attached light into the free
+// grid. Returns how many cells keep theirs.
+int release(Grid& attached, Grid& free, const OrderGrid& o, const std::vector<float>& normals,
+            double cosRegionAngle) {
+  int kept = 0;
+  forEachCell(o.res, [&](const glm::ivec3& cell) {
+    const glm::dvec4 own = normalOf(normals, o.res, cell);
+    bool releases = !shared::directedHasNormal(own);
+    for (const glm::ivec3& d : kAxes)
+      if (shared::cellInside(cell + d, o.res) &&
+          shared::directedNeighbourReleases(own, normalOf(normals, o.res, cell + d), cosRegionAngle))
+        releases = true;
+    if (!releases) {
+      ++kept;
+      return;
+    }
+    for (int channel = 0; channel < 3; ++channel)
+      for (int k = 0; k < o.coefficients; ++k) {
+        free[o.at(cell, channel, k)] += attached[o.at(cell, channel, k)];
+        attached[o.at(cell, channel, k)] = 0.0f;
+      }
+  });
+  return kept;
+}
+
+// The default region angle's cosine (directed.cpp's region_angle_deg = 10).
+double defaultCosRegionAngle() { return std::cos(10.0 * M_PI / 180.0); }
+
 // The normal grid with one cell holding a VPL's normal: Phi n, Phi (Phi its flux over RGB).
 std::vector<float> vplNormals(const glm::ivec3& res, const glm::ivec3& cell, const glm::dvec3& n) {
   std::vector<float> normals(std::size_t(4) * cells(res), 0.0f);
@@ -101,23 +131,33 @@ std::vector<float> vplNormals(const glm::ivec3& res, const glm::ivec3& cell, con
 // ---- a. the kernels against the C++ ------------------------------------------------------------
 
 // With a GV, iteration 0 unoccluded and iteration 1 through it (firstOccludedIteration = 1).
-void twoIterationsMatchTheCpp(int order, ComputeBackend backend, bool withGv) {
+// `released`: the default, light in two grids released at the regions' boundaries; else alg. 6.3
+// read literally (release = false), one grid.
+void twoIterationsMatchTheCpp(int order, ComputeBackend backend, bool withGv, bool released = true) {
   const glm::ivec3 res{6, 5, 4};  // not multiples of the 4^3 work group, nor a cube
   const OrderGrid o = orderGrid(res, order);
   std::mt19937 random(4242 + order);
   std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
   const Grid current = randomFloats(o.floats(), random), accumulated = randomFloats(o.floats(), random);
+  // A sparse grid, so that dilation has work at both steps; released, of regions (random normals
+  // would release every cell).
   std::vector<float> normals(std::size_t(4) * cells(res), 0.0f);
+  if (released) {
+    normals = regionNormals(res, random, 0.4f);
+  } else {
+    for (std::size_t i = 0; i < normals.size(); i += 4)
+      if (uniform(random) > 0.6f) {
+        for (int k = 0; k < 3; ++k) normals[i + k] = uniform(random);
+        normals[i + 3] = 1.0f;
+      }
+  }
   int withNormal = 0;
-  for (std::size_t i = 0; i < normals.size(); i += 4)
-    if (uniform(random) > 0.6f) {  // a sparse grid, so that dilation has work at both steps
-      ++withNormal;
-      for (int k = 0; k < 3; ++k) normals[i + k] = uniform(random);
-      normals[i + 3] = 1.0f;
-    }
+  for (std::size_t i = 0; i < normals.size(); i += 4) withNormal += normals[i + 3] != 0.0f;
   ASSERT_GT(withNormal, 3);
 
-  PropagationRig rig("directed", res, iterationsTable(2), order, withGv, backend);
+  toml::table table = iterationsTable(2);
+  if (!released) table.insert("release", false);
+  PropagationRig rig("directed", res, table, order, withGv, backend);
   rig.load(current, accumulated);
   rig.loadNormals(normals);
   if (withGv) {
@@ -129,11 +169,26 @@ void twoIterationsMatchTheCpp(int order, ComputeBackend backend, bool withGv) {
   const Grid gpuCurrent = rig.current(), gpuAccumulated = rig.accumulated();
   EXPECT_EQ(rig.normals(), normals) << "the injected normal grid is left as it was";
 
-  Grid expectedAccumulated = accumulated;
+  Grid expectedAccumulated = accumulated, expectedCurrent;
   std::vector<float> n1 = dilate(normals, res);
-  const Grid g1 = step(current, o, n1, expectedAccumulated);
   const std::vector<float> n2 = dilate(n1, res);
-  const Grid expectedCurrent = step(g1, o, n2, expectedAccumulated, withGv);
+  if (released) {
+    // The free light propagates as standard: as through cells without normals.
+    const std::vector<float> none(normals.size(), 0.0f);
+    Grid attached = current, free(current.size(), 0.0f);
+    const int kept = release(attached, free, o, n1, defaultCosRegionAngle());
+    attached = step(attached, o, n1, expectedAccumulated);
+    free = step(free, o, none, expectedAccumulated);
+    EXPECT_GT(kept + release(attached, free, o, n2, defaultCosRegionAngle()), 10)
+        << "cells keep attached light, so the reprojection is compared too";
+    attached = step(attached, o, n2, expectedAccumulated, withGv);
+    free = step(free, o, none, expectedAccumulated, withGv);
+    expectedCurrent = attached;
+    for (std::size_t i = 0; i < free.size(); ++i) expectedCurrent[i] += free[i];
+  } else {
+    const Grid g1 = step(current, o, n1, expectedAccumulated);
+    expectedCurrent = step(g1, o, n2, expectedAccumulated, withGv);
+  }
   int normalLess = 0;
   forEachCell(res, [&](const glm::ivec3& c) { normalLess += !shared::directedHasNormal(normalOf(n1, res, c)); });
   std::cout << "[ directed ] " << withNormal << " of " << cells(res) << " cells with normals; "
@@ -156,6 +211,10 @@ TEST_P(DirectedKernel, TwoIterationsMatchTheSharedCppDilationAndGather) {
 }
 TEST_P(DirectedKernel, TwoIterationsThroughAGeometryVolumeMatchTheSharedCpp) {
   twoIterationsMatchTheCpp(order(), backend(), true);
+}
+TEST_P(DirectedKernel, TwoIterationsReadLiterallyMatchTheSharedCpp) {
+  twoIterationsMatchTheCpp(order(), backend(), false, false);
+  twoIterationsMatchTheCpp(order(), backend(), true, false);
 }
 
 // ---- b. normalisation and energy per iteration --------------------------------------------------
@@ -322,8 +381,16 @@ TEST_P(DirectedBackend, WithoutDilationOnlyCellsWithNormalsReproject) {
   const std::vector<float> normals = vplNormals(res, floorCell, up);
   rig.loadNormals(normals);
   rig.propagate();
-  Grid g = orderSource(o, floorCell, false, up), expected = g;
-  for (int k = 0; k < iterations; ++k) g = step(g, o, normals, expected);
+  // The VPL's cell keeps its light attached (its neighbours have no normal); what it sends into
+  // them gets the standard transfer and is released the step after.
+  Grid attached = orderSource(o, floorCell, false, up), expected = attached,
+       free(attached.size(), 0.0f);
+  const std::vector<float> none(normals.size(), 0.0f);
+  for (int k = 0; k < iterations; ++k) {
+    release(attached, free, o, normals, defaultCosRegionAngle());
+    attached = step(attached, o, normals, expected);
+    free = step(free, o, none, expected);
+  }
   const Grid gpu = rig.accumulated();
   const double tolerance = 1e-5 * maxAbs(expected);
   for (std::size_t i = 0; i < gpu.size(); ++i) ASSERT_NEAR(gpu[i], expected[i], tolerance) << i;

@@ -20,8 +20,18 @@
 // | dilation   | bool | true    | dilate the normals before each iteration; false reprojects    |
 // |            |      |         | only in cells that received VPLs (the rest propagate as       |
 // |            |      |         | standard), to see what the dilation contributes               |
+// | release    | bool | true    | light leaves the reprojection where the normal field changes  |
+// |            |      |         | and propagates on as standard (directed_faces.glsl); false:   |
+// |            |      |         | alg. 6.3 read literally, every cell reprojects all it         |
+// |            |      |         | receives (light arriving at a lit surface is turned back, so  |
+// |            |      |         | a room whose every wall sends VPLs goes dark: issue 42)       |
+// | region_angle_deg | float | 10 | normals further apart than this are different regions:  |
+// |            |      |         | perpendicular walls' cells differ by 90, the averaged normals |
+// |            |      |         | where they meet by 45 from each; 10 keeps a curved surface of |
+// |            |      |         | radius 6 cells or more one region (0..90)                     |
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <utility>
@@ -48,12 +58,21 @@ namespace dilate_kernel {
 namespace gather_kernel {
 #include "shaders/propagation/directed_gather_interface.glsl"
 }
+namespace release_kernel {
+#include "shaders/propagation/directed_release_interface.glsl"
+}
+namespace free_kernel {  // the free light's transfer: standard gathering
+#include "shaders/propagation/standard_interface.glsl"
+}
 
 class DirectedPropagation final : public PropagationStrategy {
 public:
   explicit DirectedPropagation(Params& params)
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
-        dilation_(params.get<bool>("dilation", true)) {}
+        dilation_(params.get<bool>("dilation", true)),
+        release_(params.get<bool>("release", true)),
+        cosRegionAngle_(std::cos(params.get<double>("region_angle_deg", 10.0, {.min = 0.0, .max = 90.0}) *
+                                 M_PI / 180.0)) {}
 
   void declare(ResourceUses& uses) const override {
     uses.consumes(kNormalGrid);
@@ -82,6 +101,20 @@ public:
     dilate_ = shaders.compute("propagation/directed_dilate.comp");
     scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
+    if (release_) {
+      const int coefficients = shared::shCoefficientCount(requirements.shOrder);
+      release_kernel_ = shaders.compute(
+          "propagation/directed_release.comp",
+          {SpecConstant::i(0, coefficients), SpecConstant::f(1, float(cosRegionAngle_))});
+      free_kernel_ = shaders.compute(
+          "propagation/standard_gather.comp",
+          {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
+           SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
+           SpecConstant::b(4, false)});
+      for (DualBuffer& b : free_)
+        b = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
+                       "light grid (directed propagation's free light)");
+    }
     if (dilation_) {
       const std::size_t normalBytes = std::size_t(4) * grid.cellCount() * sizeof(float);
       for (gl::Buffer& b : normals_) b = gl::Buffer(normalBytes, "dilated normals");
@@ -93,6 +126,10 @@ public:
     LightGrid& grid = frame.lightGrid;
     const gl::Buffer* normals = &frame.get(kNormalGrid).normals;
     const GeometryVolume* gv = frame.find(kGeometryVolume);
+    if (release_) {
+      free_[0].zero();  // the grid's current light starts attached
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
     for (int i = 0; i < iterations_; ++i) {
       if (dilation_) {
         using namespace dilate_kernel;
@@ -104,6 +141,10 @@ public:
         dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                          GL_SHADER_STORAGE_BARRIER_BIT);
         normals = &next;
+      }
+      if (release_) {
+        release(grid, *normals, false);
+        gatherFree(grid, gv, i);
       }
       using namespace gather_kernel;
       gather_.use();
@@ -119,11 +160,17 @@ public:
                        GL_SHADER_STORAGE_BARRIER_BIT);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
     }
+    if (release_ && iterations_ > 0) {
+      // The grid's current light: the last step's attached and free light together.
+      release(grid, *normals, true);
+      std::swap(grid.current, free_[0]);
+    }
   }
 
   int iterations() const override { return iterations_; }
 
-  // Per cell-iteration: the standard transfer's (standard_work.h) and the second reprojection.
+  // Per cell-iteration: the standard transfer's (standard_work.h) and the second reprojection;
+  // with release, a second standard transfer (the free light) and the release.
   // On the CPU: per channel the six normals' weighted flux sum and the lobe (6 + min(N, 9)), the
   // weights and lobe read per cell; the dilation and gains, once per frame, not counted. On GL,
   // per face and channel the reprojection factor (about 8), per cell the gain G(n) (60 lobe
@@ -142,15 +189,25 @@ public:
       w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
       w.bytes += 16 * ((dilation_ ? 7 : 0) + 1);
     }
+    if (release_) {
+      // The free light's standard transfer, and the release: the cell's attached and free light
+      // read and written (on GL also the seven normals it compares).
+      const StandardTransferWork free =
+          standardTransferWork(shape.coefficients, onCpu, false, requirements.has(kGeometryVolume));
+      w.multiplyAdds += free.multiplyAdds;
+      w.bytes += free.bytes + 4 * 4 * 3 * n + (onCpu ? 0 : 16 * 7);
+    }
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
   std::size_t memoryBytes() const override {
-    std::size_t bytes = scratch_.size() + normals_[0].size() + normals_[1].size() +
+    std::size_t bytes = scratch_.size() + free_[0].size() + free_[1].size() + normals_[0].size() +
+                        normals_[1].size() +
                         cpu_.memoryBytes() + cpuNormals_.size() * sizeof(float);
     for (const auto& [grid, cache] : cpuCells_)
       bytes += (cache.normals.size() + cache.cells.since.size() + cache.cells.faceWeight.size() +
                 cache.cells.lobe.size()) *
-               sizeof(float);
+                   sizeof(float) +
+               (cache.released.keepFrom.size() + cache.released.keepUntil.size()) * sizeof(int);
     return bytes;
   }
 
@@ -167,8 +224,14 @@ public:
     const ReprojectedCells<Dual> cells =
         makeDirectedCells(table, grid.geometry.resolution, cpuNormals_, iterations_, dilation_,
                           angles.farFace, angles.sideFace);
+    const ReleasedCells released =
+        release_ ? makeReleasedCells(grid.geometry.resolution, cpuNormals_, iterations_, dilation_,
+                                     cosRegionAngle_)
+                 : ReleasedCells{};
     StandardCpuFrame::propagateDual(dual, shOrder_, Dual(angles.farFace), Dual(angles.sideFace),
-                                    {.count = iterations_, .reprojected = &cells});
+                                    {.count = iterations_,
+                                     .reprojected = &cells,
+                                     .released = release_ ? &released : nullptr});
   }
 
 private:
@@ -183,16 +246,56 @@ private:
       const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
       cache.cells = makeDirectedCells(cpu_.table(), grid.geometry.resolution, cpuNormals_,
                                       iterations_, dilation_, angles.farFace, angles.sideFace);
+      if (release_)
+        cache.released = makeReleasedCells(grid.geometry.resolution, cpuNormals_, iterations_,
+                                           dilation_, cosRegionAngle_);
       cache.normals = cpuNormals_;
     }
-    cpu_.propagate(frame, {.count = iterations_, .reprojected = &cache.cells});
+    cpu_.propagate(frame, {.count = iterations_,
+                           .reprojected = &cache.cells,
+                           .released = release_ ? &cache.released : nullptr});
+  }
+
+  // directed_release.comp over the grid's attached light and the free light (free_[0]).
+  void release(LightGrid& grid, const gl::Buffer& normals, bool all) {
+    using namespace release_kernel;
+    release_kernel_.use();
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
+    glUniform1i(LOCATION_RELEASE_ALL, all ? 1 : 0);
+    normals.bindStorage(BUFFER_NORMALS);
+    grid.current.bindStorage(BUFFER_ATTACHED);
+    free_[0].bindStorage(BUFFER_FREE);
+    dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  // One standard gathering step of the free light (free_[0] into free_[1], then swapped),
+  // added to the accumulated grid.
+  void gatherFree(LightGrid& grid, const GeometryVolume* gv, int iteration) {
+    using namespace free_kernel;
+    free_kernel_.use();
+    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
+    if (gv) {
+      glUniform1i(LOCATION_FIRST_OCCLUDED_ITERATION, gv->firstOccludedIteration);
+      glUniform1i(LOCATION_ITERATION, iteration);
+      gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
+    }
+    free_[0].bindStorage(BUFFER_SOURCE);
+    free_[1].bindStorage(BUFFER_TARGET);
+    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
+    dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
+    std::swap(free_[0], free_[1]);
   }
 
   int iterations_;
   bool dilation_;
+  bool release_;
+  double cosRegionAngle_;
   int shOrder_ = 1;
-  Program gather_, dilate_;
+  Program gather_, dilate_, release_kernel_, free_kernel_;
   DualBuffer scratch_;  // swapped with the grid's current buffer
+  DualBuffer free_[2];  // with release: the free light and its ping-pong partner
   gl::Buffer normals_[2];  // dilation ping-pong
   bool onCpu_ = false;
   StandardCpuFrame cpu_;           // on the CPU backend
@@ -200,6 +303,7 @@ private:
   struct CellsCache {
     std::vector<float> normals;  // the injected normals they were found from
     ReprojectedCells<float> cells;
+    ReleasedCells released;  // with release
   };
   std::map<const LightGrid*, CellsCache> cpuCells_;  // per cascade level
 };

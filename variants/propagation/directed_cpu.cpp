@@ -135,6 +135,41 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
   return r;
 }
 
+ReleasedCells makeReleasedCells(const glm::ivec3& res, const std::vector<float>& injectedNormals,
+                                int iterations, bool dilation, double cosRegionAngle) {
+  const std::size_t cells = std::size_t(res.x) * res.y * res.z;
+  if (injectedNormals.size() != 4 * cells)
+    throw Error("directed propagation (CPU): the normal grid holds " +
+                std::to_string(injectedNormals.size()) + " floats, not 4 per cell of the " +
+                std::to_string(cells) + "-cell grid");
+  const DilatedNormals normals = dilateNormals(res, injectedNormals, iterations, dilation);
+  static const glm::ivec3 kAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  ReleasedCells r;
+  r.keepFrom.assign(cells, 0);
+  r.keepUntil.assign(cells, 0);  // empty: released in every iteration
+  tbb::parallel_for(tbb::blocked_range<int>(0, res.y * res.z), [&](const tbb::blocked_range<int>& range) {
+    for (int row = range.begin(); row < range.end(); ++row)
+      for (int x = 0; x < res.x; ++x) {
+        const glm::ivec3 cell(x, row % res.y, row / res.y);
+        const std::size_t i = std::size_t(row) * res.x + x;  // grid.glsl's cellIndex
+        if (normals.since[i] == kUnreached) continue;
+        const glm::dvec4 own(normals.stored[i]);
+        int until = ReleasedCells::kAlways;
+        for (const glm::ivec3& axis : kAxes) {
+          if (!shared::cellInside(cell + axis, res)) continue;
+          const std::size_t j = std::size_t(shared::cellIndex(cell + axis, res));
+          if (normals.since[j] == kUnreached) continue;
+          if (shared::directedNeighbourReleases(own, glm::dvec4(normals.stored[j]), cosRegionAngle))
+            until = std::min(until, normals.since[j]);
+        }
+        r.keepFrom[i] = normals.since[i];
+        r.keepUntil[i] = std::max(until, normals.since[i]);
+      }
+  });
+  return r;
+}
+
 template ReprojectedCells<float> makeDirectedCells<float>(const StandardFaceTable<float>&,
                                                           const glm::ivec3&,
                                                           const std::vector<float>&, int, bool,

@@ -37,4 +37,12 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
                                          bool dilation, double farSolidAngle,
                                          double sideSolidAngle);
 
+// With release (directed_faces.glsl): the iterations in which each cell keeps its attached light,
+// from the same dilation: a cell keeps it from the iteration it has a normal until the first in
+// which a neighbour has a normal of another region (its unit normal further than the region angle,
+// `cosRegionAngle` its cosine, from the cell's).
+ReleasedCells makeReleasedCells(const glm::ivec3& resolution,
+                                const std::vector<float>& injectedNormals, int iterations,
+                                bool dilation, double cosRegionAngle);
+
 }  // namespace lpvlab

@@ -45,6 +45,7 @@
 // Threads: rows are shared out by oneTBB. Each target cell is written by exactly one task, in a
 // fixed order of additions, so the result does not depend on the thread count (no atomics).
 
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <string>
 #include <type_traits>
@@ -108,6 +109,19 @@ struct ReprojectedCells {
   std::vector<Real> since;
   std::vector<Real> faceWeight;  // [(normal * rows + row) * width + x]
   std::vector<Real> lobe;        // [(k * rows + row) * width + x], k < min(coefficients, 9)
+};
+
+// Light in two grids (directed propagation's release, directed_faces.glsl): "attached" light,
+// which the reprojecting cells (ReprojectedCells) re-emit about their normal, and "free" light,
+// which propagates as standard. Before each iteration a cell that does not keep its attached
+// light moves it into the free grid; cell c (grid.glsl's cellIndex) keeps it in the iterations
+// keepFrom[c] <= i < keepUntil[c].
+struct ReleasedCells {
+  static constexpr int kAlways = 1 << 30;  // a keepUntil past every iteration
+  std::vector<int> keepFrom, keepUntil;
+  bool keeps(std::size_t cell, int iteration) const {
+    return keepFrom[cell] <= iteration && iteration < keepUntil[cell];
+  }
 };
 
 // The cells per row of the kernel's padded rows (StandardOcclusion, ReprojectedCells).

@@ -2,6 +2,9 @@
 
 #include <type_traits>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 
@@ -50,32 +53,77 @@ void StandardCpuFrame::propagate(LightGrid& grid, const Iterations& iterations) 
 
 namespace {
 
+// Moves the attached light of every cell that does not keep it in `iteration` into the free
+// grid (directed_release.comp's rule, ReleasedCells): grids in grid.glsl's layout.
+template <class Real>
+void releaseCells(const ReleasedCells& released, int iteration, std::vector<Real>& attached,
+                  std::vector<Real>& free) {
+  const std::size_t cells = released.keepFrom.size(), floats = attached.size();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells), [&](const auto& range) {
+    for (std::size_t cell = range.begin(); cell < range.end(); ++cell) {
+      if (released.keeps(cell, iteration)) continue;
+      for (std::size_t i = cell; i < floats; i += cells) {  // every channel and coefficient
+        free[i] += attached[i];
+        attached[i] = Real(0);
+      }
+    }
+  });
+}
+
+// One step of `source` into `target`: gathering with `reprojected` (null: the standard transfer),
+// or scattering.
+template <class Real>
+void stepGrid(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
+              const Real* source, Real* target, Real* accumulated, bool scatter,
+              const StandardOcclusion<Real>* faces, StepAccumulation accumulation,
+              const ReprojectedCells<Real>* reprojected, int iteration) {
+  if (reprojected)
+    standardGatherCpu<Real>(table, resolution, source, target, accumulated, "auto", 0, faces,
+                            accumulation, reprojected, iteration);
+  else if constexpr (std::is_same_v<Real, Dual>)
+    // Dual frames always gather: scattering gives the same light and has no Dual version (an
+    // unoptimised build must not even name it; only -O2 removed the call to it).
+    standardGatherCpu<Real>(table, resolution, source, target, accumulated, "auto", 0, faces,
+                            accumulation);
+  else
+    standardIterationCpu<Real>(scatter, table, resolution, source, target, accumulated, "auto",
+                               0, faces, accumulation);
+}
+
 // `count` steps from `current` (left holding the last step's light; `next` its partner),
 // accumulating into `accumulated`, iterations paired (pairedAccumulation); the GV's faces
-// (`occlusion`) from its first occluded iteration on. Float frames and dual ones alike.
+// (`occlusion`) from its first occluded iteration on. Float frames and dual ones alike. With
+// `released`, `current` starts as the attached light and `free`/`freeNext` hold the free light
+// (ReleasedCells); both add to `accumulated` (a release moves light between the grids within a
+// cell, so a deferred step's source is still the whole previous step), and `current` ends as
+// their sum.
 template <class Real>
 void iterateGrid(const StandardFaceTable<Real>& table, const glm::ivec3& resolution,
                  std::vector<Real>& current, std::vector<Real>& next,
                  std::vector<Real>& accumulated, int count, bool scatter,
                  const StandardOcclusion<Real>* occlusion, int firstOccludedIteration,
-                 const ReprojectedCells<Real>* reprojected) {
+                 const ReprojectedCells<Real>* reprojected, const ReleasedCells* released,
+                 std::vector<Real>& free, std::vector<Real>& freeNext) {
   next.resize(current.size());
+  if (released) {
+    free.assign(current.size(), Real(0));
+    freeNext.resize(current.size());
+  }
   for (int i = 0; i < count; ++i) {
     const StandardOcclusion<Real>* faces = i >= firstOccludedIteration ? occlusion : nullptr;
     const StepAccumulation accumulation = pairedAccumulation(i, count);
-    if (reprojected)
-      standardGatherCpu<Real>(table, resolution, current.data(), next.data(), accumulated.data(),
-                              "auto", 0, faces, accumulation, reprojected, i);
-    else if constexpr (std::is_same_v<Real, Dual>)
-      // Dual frames always gather: scattering gives the same light and has no Dual version (an
-      // unoptimised build must not even name it; only -O2 removed the call to it).
-      standardGatherCpu<Real>(table, resolution, current.data(), next.data(), accumulated.data(),
-                              "auto", 0, faces, accumulation);
-    else
-      standardIterationCpu<Real>(scatter, table, resolution, current.data(), next.data(),
-                                 accumulated.data(), "auto", 0, faces, accumulation);
+    if (released) {
+      releaseCells(*released, i, current, free);
+      stepGrid<Real>(table, resolution, free.data(), freeNext.data(), accumulated.data(), scatter,
+                     faces, accumulation, nullptr, i);
+      free.swap(freeNext);
+    }
+    stepGrid<Real>(table, resolution, current.data(), next.data(), accumulated.data(), scatter,
+                   faces, accumulation, reprojected, i);
     current.swap(next);  // the grid now holds the new light
   }
+  if (released)
+    for (std::size_t k = 0; k < current.size(); ++k) current[k] += free[k];
 }
 
 }  // namespace
@@ -86,7 +134,7 @@ void StandardCpuFrame::iterate(LightGrid& grid, const GeometryVolume* gv,
   iterateGrid<float>(table_, grid.geometry.resolution, grid.current.host(), next_,
                      grid.accumulated.host(), iterations.count, iterations.scatter,
                      gv ? occlusion : nullptr, gv ? gv->firstOccludedIteration : 0,
-                     iterations.reprojected);
+                     iterations.reprojected, iterations.released, free_, freeNext_);
 }
 
 void StandardCpuFrame::propagateDual(DualFrame& dual, int shOrder, Dual farSolidAngle,
@@ -113,15 +161,16 @@ void StandardCpuFrame::propagateDual(DualFrame& dual, int shOrder, Dual farSolid
     occlusion = makeStandardOcclusion<Dual, Dual>(table, resolution, blocking.data(),
                                                   iterations.bounces ? albedo.data() : nullptr);
   }
-  std::vector<Dual> current = dual.injected, next;
+  std::vector<Dual> current = dual.injected, next, free, freeNext;
   dual.accumulated = dual.injected;  // the accumulated light starts as the injected light
   iterateGrid<Dual>(table, resolution, current, next, dual.accumulated, iterations.count, false,
                     gv ? &occlusion : nullptr, gv ? gv->firstOccludedIteration : 0,
-                    iterations.reprojected);
+                    iterations.reprojected, iterations.released, free, freeNext);
 }
 
 std::size_t StandardCpuFrame::memoryBytes() const {
-  std::size_t bytes = (next_.size() + gv_.size() + albedo_.size()) * sizeof(float);
+  std::size_t bytes =
+      (next_.size() + free_.size() + freeNext_.size() + gv_.size() + albedo_.size()) * sizeof(float);
   for (const auto& [gv, cache] : occlusion_) bytes += cache.bytes();
   return bytes;
 }

@@ -32,6 +32,10 @@ public:
     bool scatter = false;  // six scattering passes instead of one gathering pass
     bool bounces = false;  // the GV's surfaces re-emit what it blocks (reads kSurfaceAlbedo)
     const ReprojectedCells<float>* reprojected = nullptr;  // gathering only
+    // With `reprojected`: the light in two grids, attached (reprojected) and free (standard),
+    // released into the free grid cell by cell as this says; the grid's current light is their
+    // sum after the last iteration. Null: one grid, every cell reprojecting from its iteration on.
+    const ReleasedCells* released = nullptr;
   };
   // `iterations` steps of frame.lightGrid on its host side (read back only if a GL kernel wrote
   // it last), iterations paired (pairedAccumulation). The accumulated grid is added to as it is
@@ -49,6 +53,7 @@ public:
     int count = 0;
     bool bounces = false;
     const ReprojectedCells<Dual>* reprojected = nullptr;
+    const ReleasedCells* released = nullptr;  // as Iterations::released
   };
   static void propagateDual(DualFrame& frame, int shOrder, Dual farSolidAngle,
                             Dual sideSolidAngle, const DualIterations& iterations);
@@ -69,6 +74,7 @@ private:
 
   StandardFaceTable<float> table_{};
   std::vector<float> next_;         // the host side's ping-pong partner
+  std::vector<float> free_, freeNext_;  // the free light and its partner (Iterations::released)
   std::vector<float> gv_, albedo_;  // this frame's GV and albedo, read back
   std::map<const GeometryVolume*, OcclusionCache> occlusion_;
 };
