@@ -1,5 +1,7 @@
 #include "variants/propagation/standard_cpu_frame.h"
 
+#include <algorithm>
+#include <array>
 #include <type_traits>
 
 #include <tbb/blocked_range.h>
@@ -58,13 +60,22 @@ namespace {
 template <class Real>
 void releaseCells(const ReleasedCells& released, int iteration, std::vector<Real>& attached,
                   std::vector<Real>& free) {
-  const std::size_t cells = released.keepFrom.size(), floats = attached.size();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells), [&](const auto& range) {
-    for (std::size_t cell = range.begin(); cell < range.end(); ++cell) {
-      if (released.keeps(cell, iteration)) continue;
-      for (std::size_t i = cell; i < floats; i += cells) {  // every channel and coefficient
-        free[i] += attached[i];
-        attached[i] = Real(0);
+  const std::size_t cells = released.keepFrom.size(), planes = attached.size() / cells;
+  constexpr std::size_t kChunk = 1024;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, kChunk), [&](const auto& range) {
+    for (std::size_t begin = range.begin(); begin < range.end(); begin += kChunk) {
+      const std::size_t end = std::min(range.end(), begin + kChunk);
+      std::array<unsigned char, kChunk> keeps;  // once per cell, then plane by plane
+      for (std::size_t cell = begin; cell < end; ++cell)
+        keeps[cell - begin] = released.keeps(cell, iteration);
+      for (std::size_t plane = 0; plane < planes; ++plane) {  // every channel and coefficient
+        Real* a = attached.data() + plane * cells;
+        Real* f = free.data() + plane * cells;
+        for (std::size_t cell = begin; cell < end; ++cell)
+          if (!keeps[cell - begin]) {
+            f[cell] += a[cell];
+            a[cell] = Real(0);
+          }
       }
     }
   });
