@@ -20,6 +20,9 @@ namespace {
 
 constexpr int kUnreached = -1;
 
+// The six face neighbours' offsets.
+const glm::ivec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
 // The dilation of directed_dilate.comp (directedDilated over the six neighbours' unit normals),
 // step by step: each cell's normal as the gather sees it, and the iteration from which it has
 // one (kUnreached: never). Only the cells next to those that gained a normal in the step before
@@ -50,8 +53,6 @@ DilatedNormals dilateNormals(const glm::ivec3& res, const std::vector<float>& in
         gained.push_back(cell);
       }
   if (!dilation) return d;
-  static const glm::ivec3 kAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   std::vector<char> candidate(cells, 0);
   for (int iteration = 0; iteration < iterations && !gained.empty(); ++iteration) {
     // The cells without a normal next to the last step's gains, each once.
@@ -89,6 +90,14 @@ DilatedNormals dilateNormals(const glm::ivec3& res, const std::vector<float>& in
   return d;
 }
 
+// An Error unless `injected` holds a vec4 per cell of a `cells`-cell grid.
+void checkNormalGrid(const std::vector<float>& injected, std::size_t cells) {
+  if (injected.size() != 4 * cells)
+    throw Error("directed propagation (CPU): the normal grid holds " +
+                std::to_string(injected.size()) + " floats, not 4 per cell of the " +
+                std::to_string(cells) + "-cell grid");
+}
+
 }  // namespace
 
 template <class Real>
@@ -98,10 +107,7 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
                                          bool dilation, double farSolidAngle,
                                          double sideSolidAngle) {
   const std::size_t cells = std::size_t(res.x) * res.y * res.z;
-  if (injectedNormals.size() != 4 * cells)
-    throw Error("directed propagation (CPU): the normal grid holds " +
-                std::to_string(injectedNormals.size()) + " floats, not 4 per cell of the " +
-                std::to_string(cells) + "-cell grid");
+  checkNormalGrid(injectedNormals, cells);
   const DilatedNormals normals = dilateNormals(res, injectedNormals, iterations, dilation);
   ReprojectedCells<Real> r;
   r.resolution = res;
@@ -138,13 +144,8 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
 ReleasedCells makeReleasedCells(const glm::ivec3& res, const std::vector<float>& injectedNormals,
                                 int iterations, bool dilation, double cosRegionAngle) {
   const std::size_t cells = std::size_t(res.x) * res.y * res.z;
-  if (injectedNormals.size() != 4 * cells)
-    throw Error("directed propagation (CPU): the normal grid holds " +
-                std::to_string(injectedNormals.size()) + " floats, not 4 per cell of the " +
-                std::to_string(cells) + "-cell grid");
+  checkNormalGrid(injectedNormals, cells);
   const DilatedNormals normals = dilateNormals(res, injectedNormals, iterations, dilation);
-  static const glm::ivec3 kAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   ReleasedCells r;
   r.keepFrom.assign(cells, 0);
   r.keepUntil.assign(cells, 0);  // empty: released in every iteration
