@@ -234,7 +234,7 @@ def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
     body.append(f"<p class='note'>Markdown version: <a href='{md_name}'>{md_name}</a></p>")
 
 
-def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
+def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
                  gpu_table=G.DEFAULT_TABLE):
     """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
     may be a list of sweep directories: one report of them all, which needs out_dir. The inputs
@@ -247,11 +247,12 @@ def build_report(sweep_dir, out_dir=None, metric=S.DEFAULT_METRIC, use_exr=True,
     sweep_dir = sweep_dirs[0]
     summary_path = " + ".join(os.path.join(d, "summary.csv") for d in sweep_dirs)
     out_dir = out_dir or os.path.join(sweep_dir, "report")
+    agg = S.aggregate(df)
+    # A metric the user named must exist (before anything is written); the default may not.
+    metric = S.resolve_metric(agg, metric or S.DEFAULT_METRIC, required=metric is not None)
     img_dir = os.path.join(out_dir, "img")
     os.makedirs(img_dir, exist_ok=True)
     _log(f"{len(df)} rows from {summary_path}")
-    agg = S.aggregate(df)
-    metric = S.resolve_metric(agg, metric)
     _log(f"{len(agg)} configurations")
     swept = S.swept_params(agg)
     numeric = [p for p in swept if S.is_numeric_param(agg, p)]
@@ -419,14 +420,14 @@ def main(argv=None):
     ap.add_argument("dir", nargs="+",
                     help="sweep directory containing summary.csv and one run directory per configuration; "
                          "several: one report of them all (needs --out)")
-    ap.add_argument("--metric", default=S.DEFAULT_METRIC, help=f"error metric column (default {S.DEFAULT_METRIC})")
+    ap.add_argument("--metric", default=None, help=f"error metric column (default {S.DEFAULT_METRIC})")
     ap.add_argument("--out", default=None, help="output directory (default DIR/report)")
     ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")
     a = ap.parse_args(argv)
     try:
         idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr)
     except (S.SummaryError, G.GpuTableError) as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        print(f"lpvlab: error: {exc}", file=sys.stderr)
         return 2
     print(idx)
     return 0

@@ -197,13 +197,22 @@ def one_at_a_time(agg, param):
     return sel.sort_values(param)
 
 
-def resolve_metric(agg, name):
+def resolve_metric(agg, name, required=False):
     """Accept a full column name, 'pair.metric' or a bare metric ('rmse' ->
-    the indirect_vs_indirect1 column when present); unknown names are
-    returned unchanged (the plot then says there is no data)."""
+    the indirect_vs_indirect1 column when present). A name the sweep does not have is a
+    SummaryError listing the metrics it has when `required` (the user named it); the default
+    metric is returned unchanged instead (a sweep without that comparison: the plot then says
+    there is no data)."""
     if name in agg.columns:
         return name
     for cand in (f"metric.{name}", f"metric.indirect_vs_indirect1.{name}", f"metric.direct_vs_direct.{name}"):
         if cand in agg.columns:
             return cand
+    if required:
+        have = metric_columns(agg)
+        if not have:
+            raise SummaryError(f"--metric {name}: this sweep has no error metrics (its runs compared "
+                               "nothing with a reference: reference.compare = true)")
+        raise SummaryError(f"--metric {name}: not a metric of this sweep; it has "
+                           + ", ".join(c[len("metric."):] for c in have))
     return name

@@ -94,6 +94,25 @@ class ReportTest(unittest.TestCase):
         d = make_sweep(os.path.join(self.tmp.name, "nometrics"), with_exr=False, with_metrics=False)
         page, refs = _srcs(report.build_report(d))
         self.assertIn("No data for", page)
+        # A metric named on the command line must exist: here there are none to name.
+        r = subprocess.run([sys.executable, CLI, d, "--metric", "rmse", "--out",
+                            os.path.join(self.tmp.name, "nometrics-report")],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("lpvlab: error: --metric rmse: this sweep has no error metrics", r.stderr)
+
+    def test_unknown_metric_is_an_error_listing_the_sweeps_metrics(self):
+        out = os.path.join(self.tmp.name, "nosuch-report")
+        r = subprocess.run([sys.executable, CLI, self.dir, "--metric", "nosuch", "--out", out],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("lpvlab: error: --metric nosuch: not a metric of this sweep; it has ", r.stderr)
+        self.assertIn("indirect_vs_indirect1.rmse", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+        self.assertFalse(os.path.exists(out), "nothing is written for a refused metric")
+        # Bare and pair-qualified names of metrics the sweep has still resolve.
+        for name in ("rmse", "indirect_vs_indirect1.rmse"):
+            self.assertTrue(os.path.exists(report.build_report(self.dir, os.path.join(self.tmp.name, name), name)))
 
 
 if __name__ == "__main__":

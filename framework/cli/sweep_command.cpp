@@ -176,6 +176,13 @@ int sweepCommand(const Options& options) {
 }
 
 int summaryCommand(const Options& options) {
+  // Without sweep.json the directory is a run's, or a parent of unrelated runs: a summary of it
+  // would be empty or a mixture (issue 35).
+  const fs::path dir(options.out);
+  if (fs::is_directory(dir) && !fs::exists(dir / "sweep.json"))
+    throw Error(options.out + ": not a sweep directory (no sweep.json, which `lpvlab sweep FILE " +
+                "--out DIR` writes)" +
+                (fs::exists(dir / "manifest.json") ? "; it holds a single run's manifest.json" : ""));
   const SummaryResult summary = writeSweepSummary(options.out);
   for (const std::string& id : summary.incomplete)
     std::cerr << "lpvlab: " << (fs::path(options.out) / id).string()

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include "framework/animation/animation_file.h"
 #include "framework/core/error.h"
@@ -90,6 +91,13 @@ void readMaterialOverride(Params& p, Scene& scene) {
                 std::to_string(total.z) + "; at most 1 per channel)");
 }
 
+// A number as a person writes it (10, 0.02), not std::to_string's 10.000000.
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 Camera readCamera(Params& p, const Scene& scene) {
   if (p.has("position")) {
     Camera camera;
@@ -112,6 +120,10 @@ Camera readCamera(Params& p, const Scene& scene) {
     camera.nearPlane = p.get<float>("near", std::max(1e-4f, 1e-4f * diagonal), {.min = 1e-6f});
     camera.farPlane = p.get<float>("far", 4.0f * diagonal + glm::length(camera.position - scene.bounds().center()),
                                    {.min = 1e-5f});
+    // As [animation.camera] does: with far <= near every depth is clipped (all outputs black) or
+    // the depth range is inverted.
+    if (!(camera.farPlane > camera.nearPlane))
+      throw Error(p.where("far") + ": must exceed near (" + shortNumber(camera.nearPlane) + " m)");
     return camera;
   }
   if (scene.cameras.empty())
@@ -121,7 +133,14 @@ Camera readCamera(Params& p, const Scene& scene) {
   for (const Camera& c : scene.cameras) names.push_back(c.name);
   const std::string name = p.getChoice("name", scene.cameras.front().name, names);
   for (const Camera& c : scene.cameras)
-    if (c.name == name) return c;
+    if (c.name == name) {
+      if (!(c.nearPlane > 0.0f) || !(c.farPlane > c.nearPlane))
+        throw Error(p.where("name") + ": the scene " + scene.source + "'s camera '" + c.name +
+                    "' has near " + shortNumber(c.nearPlane) + " m and far " +
+                    shortNumber(c.farPlane) + " m (far must exceed near > 0); give the " +
+                    "camera in the experiment instead ([camera] position, look_at, near, far)");
+      return c;
+    }
   return scene.cameras.front();
 }
 
