@@ -247,6 +247,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     sweep_dir = sweep_dirs[0]
     summary_path = " + ".join(os.path.join(d, "summary.csv") for d in sweep_dirs)
     out_dir = out_dir or os.path.join(sweep_dir, "report")
+    if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+        raise S.SummaryError(f"--out {out_dir}: is a file, not a directory")
     agg = S.aggregate(df)
     # A metric the user named must exist (before anything is written); the default may not.
     metric = S.resolve_metric(agg, metric or S.DEFAULT_METRIC, required=metric is not None)
@@ -263,6 +265,14 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
             f"Times are medians over repeats of GPU timestamp-query times.</p>"]
     if swept:
         body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
+    # Runs whose results are suspect (all black, a solve that did not converge): named at the top,
+    # so that no figure of theirs is read without the warning.
+    if "warnings" in agg.columns:
+        warned = [(r["label"], str(r["warnings"])) for _, r in agg.iterrows()
+                  if isinstance(r["warnings"], str) and r["warnings"]]
+        if warned:
+            body.append("<h2>Warnings</h2><ul>" + "".join(
+                f"<li><code>{html.escape(label)}</code>: {html.escape(w)}</li>" for label, w in warned) + "</ul>")
 
     _log("plot: speed vs accuracy")
     body.append("<h2>Speed vs accuracy</h2>")

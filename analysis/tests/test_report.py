@@ -110,6 +110,13 @@ class ReportTest(unittest.TestCase):
         self.assertIn("indirect_vs_indirect1.rmse", r.stderr)
         self.assertNotIn("Traceback", r.stderr)
         self.assertFalse(os.path.exists(out), "nothing is written for a refused metric")
+        # --out naming a file: an error, not a traceback.
+        afile = os.path.join(self.tmp.name, "a_file")
+        open(afile, "w").close()
+        r = subprocess.run([sys.executable, CLI, self.dir, "--out", afile], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn(f"lpvlab: error: --out {afile}: is a file, not a directory", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
         # Bare and pair-qualified names of metrics the sweep has still resolve.
         for name in ("rmse", "indirect_vs_indirect1.rmse"):
             self.assertTrue(os.path.exists(report.build_report(self.dir, os.path.join(self.tmp.name, name), name)))

@@ -27,6 +27,7 @@ struct Options {
   std::string metric;                     // report: the error metric of the speed/accuracy plot
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
   std::string reportOut;                  // report: where it goes ("": DIR/report)
+  bool force = false;                     // run, fit: replace a finished run or fit in --out
 };
 
 // "compute: BACKEND; on the CPU: [direct, ]TABLES" from a Pipeline::computeReport().

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "framework/cli/commands.h"
+#include "framework/core/error.h"
 #include "framework/core/progress.h"
 #include "framework/fit/fit_checkpoint.h"
 #include "framework/fit/fit_output.h"
@@ -50,6 +51,17 @@ int fitCommand(const Options& options) {
   requireOutputDirectory(dir, options.out.empty() ? "fit directory" : "--out");
   // Read before any rendering, so a damaged progress file stops the fit at once.
   const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
+  // A finished fit (its outputs, and no progress: that is removed last) is not replaced unless
+  // --force, which removes its outputs first; an interrupted one resumes.
+  const std::filesystem::path finished = std::filesystem::path(dir) / "fit.json";
+  if (std::filesystem::exists(finished) && !std::filesystem::exists(progressPath)) {
+    if (!options.force)
+      throw Error((options.out.empty() ? "fit directory " : "--out ") + dir +
+                  ": holds a finished fit (fit.json); --force replaces it (removing its outputs "
+                  "first), or choose another directory");
+    for (const char* name : {"fit.json", "fitted.toml", "fit.md"})
+      std::filesystem::remove(std::filesystem::path(dir) / name);
+  }
   const std::string key = fitKey(spec);
   bool otherFit = false;
   const std::optional<FitProgress> resume = readFitProgress(progressPath, key, &otherFit);

@@ -37,6 +37,7 @@ int listCommand() {
     std::cout << "  " << entry.name << ": " << entry.description << "\n";
     if (const std::string resources = resourceLine(entry.uses); !resources.empty())
       std::cout << "      (" << resources << ")\n";
+    if (!entry.parameters.empty()) std::cout << "      (" << entry.parameters << ")\n";
     std::cout << "      (CPU backend: "
               << (entry.cpuRefusal.empty() ? "yes" : "no, " + entry.cpuRefusal) << ")\n";
   }

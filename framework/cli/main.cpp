@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
       "run", "Run one experiment (default: the built-in Cornell box) into its own directory");
   run->add_option("experiment", options.experiment, "Experiment file (TOML); omit for the default");
   run->add_option("-o,--out", options.out, "Output directory (default: runs/<name>-<UTC time>)");
+  run->add_flag("--force", options.force,
+                "Replace a finished run in the output directory (its files are removed first)");
   run->add_option("-s,--set", options.overrides,
                   "Override one parameter, e.g. -s propagation.iterations=16 (repeatable)");
 
@@ -93,6 +95,8 @@ int main(int argc, char** argv) {
   fit->add_option("experiment", options.experiment, "Experiment file (TOML) with a [fit] table")
       ->required();
   fit->add_option("-o,--out", options.out, "Fit directory (default: runs/<file stem>-fit)");
+  fit->add_flag("--force", options.force,
+                "Replace a finished fit in the fit directory (its outputs are removed first)");
   fit->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
 
   app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");

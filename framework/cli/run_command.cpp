@@ -1,7 +1,14 @@
 #include <ctime>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/core/error.h"
 
 #include "framework/cli/commands.h"
 #include "framework/experiment/run.h"
@@ -11,11 +18,46 @@ namespace lpvlab::cli {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 std::string defaultOutDir(const std::string& name) {
   const std::time_t now = std::time(nullptr);
   std::ostringstream s;
   s << "runs/" << name << "-" << std::put_time(std::gmtime(&now), "%Y%m%d-%H%M%S");
   return s.str();
+}
+
+// A directory holding a finished run (its manifest.json, written last) is not written over
+// unless `force`: the new run's files would stand beside what the old one left (an error map
+// without a comparison, a sequence's frames and video beside a single frame's images). With
+// `force` what the old run wrote (its manifest's outputs) is removed first. A directory without
+// a manifest (a sequence killed mid-way) is resumed as before.
+void replaceFinishedRun(const fs::path& dir, bool force, const std::string& option) {
+  const fs::path manifestPath = dir / "manifest.json";
+  if (!fs::exists(manifestPath)) return;
+  std::ifstream in(manifestPath);
+  const nlohmann::json old = nlohmann::json::parse(in, nullptr, false);
+  const std::string created =
+      old.is_object() && old.contains("created_utc") && old["created_utc"].is_string()
+          ? ", created " + old["created_utc"].get<std::string>()
+          : "";
+  if (!force)
+    throw Error(option + " " + dir.string() + ": holds a finished run (manifest.json" + created +
+                "); --force replaces it (removing the files it wrote first), or choose another "
+                "directory");
+  const nlohmann::json outputs =
+      old.is_object() && old.contains("outputs") && old["outputs"].is_object() ? old["outputs"]
+                                                                              : nlohmann::json::object();
+  std::vector<fs::path> written = {"images.exr", "combined.png"};  // a run's, whatever it listed
+  for (const char* key : {"exr", "png", "error_map", "video"})
+    if (outputs.contains(key) && outputs[key].is_string()) {
+      const std::string entry = outputs[key].get<std::string>();
+      const fs::path name = entry.substr(0, entry.find(' '));  // "error_indirect.png (FLIP of ...)"
+      if (name.has_filename() && name.filename() == name) written.push_back(name);
+    }
+  if (outputs.contains("frames")) fs::remove_all(dir / "frames");
+  for (const fs::path& name : written) fs::remove(dir / name);
+  fs::remove(manifestPath);
 }
 
 }  // namespace
@@ -24,6 +66,7 @@ int runCommand(const Options& options) {
   Experiment experiment = loadExperiment(options.experiment, options.overrides);
   const std::string out = options.out.empty() ? defaultOutDir(experiment.name) : options.out;
   requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
+  replaceFinishedRun(out, options.force, options.out.empty() ? "output directory" : "--out");
   const auto context = GlContext::create(experiment.glBackend);
   const Animation& animation = experiment.animation;
   std::cerr << "lpvlab: " << experiment.name << " on " << context->renderer() << " ("
@@ -34,6 +77,9 @@ int runCommand(const Options& options) {
     std::cerr << experiment.repeats << " timed frames\n";
   const nlohmann::json manifest = runExperiment(experiment, *context, out);
   std::cerr << computeLine(manifest["compute"]) << "\n";
+  if (manifest.contains("warnings"))  // also in the manifest, summary.csv and the report
+    for (const auto& warning : manifest["warnings"])
+      std::cerr << "lpvlab: warning: " << warning.get<std::string>() << "\n";
   const auto& gpu = manifest["timing"]["gpu_ms"];
   std::cout << "stage         gpu median ms  (q1-q3)\n";
   for (const auto& [stage, summary] : gpu.items())

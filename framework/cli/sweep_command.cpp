@@ -83,6 +83,10 @@ int sweepCommand(const Options& options) {
   // Nothing is written before every configuration loads: an unknown swept key or a bad swept
   // value is reported against the user's file and its [sweep] table.
   requireOutputDirectory(dir.string(), options.out.empty() ? "sweep directory" : "--out");
+  // A run's directory would get the sweep's runs and summary beside the run's own files.
+  if (fs::exists(dir / "manifest.json") && !fs::exists(dir / "sweep.json"))
+    throw Error((options.out.empty() ? "sweep directory " : "--out ") + dir.string() +
+                ": holds a single run (manifest.json), not a sweep; choose another directory");
   if (options.emit == "slurm") checkSlurmResources(options.slurm);
   const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
 

@@ -34,7 +34,7 @@ std::string joined(const std::vector<std::string>& names) {
 
 template <class T>
 std::string show(const T& v) {
-  if constexpr (std::is_same_v<T, std::string>) return "'" + v + "'";
+  if constexpr (std::is_same_v<T, std::string>) return "'" + echoed(v) + "'";
   else if constexpr (std::is_arithmetic_v<T>) {
     std::ostringstream s;
     s << v;
@@ -185,7 +185,7 @@ std::string Params::getChoice(std::string_view key, const std::string& defaultVa
                               const std::vector<std::string>& choices) {
   std::string value = get<std::string>(key, defaultValue);
   if (std::find(choices.begin(), choices.end(), value) == choices.end())
-    throw Error(where(key) + ": unknown value '" + value + "'; valid: " + joined(choices));
+    throw Error(where(key) + ": unknown value '" + echoed(value) + "'; valid: " + joined(choices));
   return value;
 }
 
@@ -271,7 +271,7 @@ template glm::ivec3 Params::require<glm::ivec3>(std::string_view, Range<glm::ive
 void applyOverride(toml::table& root, std::string_view assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0)
-    throw Error("command line: override '" + std::string(assignment) +
+    throw Error("command line: override '" + echoed(assignment) +
                 "' is not of the form key=value (e.g. propagation.iterations=16)");
   const std::string path(assignment.substr(0, eq));
   const std::string text(assignment.substr(eq + 1));
@@ -288,7 +288,7 @@ void applyOverride(toml::table& root, std::string_view assignment) {
       const bool number = part.back() == ']' && !digits.empty() &&
                           digits.find_first_not_of("0123456789") == std::string::npos && digits.size() < 9;
       if (!number)
-        throw Error("command line: override '" + path + "': '" + part +
+        throw Error("command line: override '" + echoed(path) + "': '" + echoed(part) +
                     "' is not of the form name[index] (e.g. particles[0].emitters[1].rate=100)");
       const std::size_t index = std::stoul(digits);
       toml::array* array = table->get(name) ? table->get(name)->as_array() : nullptr;
@@ -307,11 +307,17 @@ void applyOverride(toml::table& root, std::string_view assignment) {
       throw Error("command line: override '" + path + "': '" + part + "' is not a table");
     table = child->as_table();
   }
-  // Parse the value as TOML; a bare word that isn't valid TOML is taken as a string.
+  // Parse the value as TOML; a bare word that isn't valid TOML is taken as a string
+  // (propagation.type=directed). A value that starts as a table, an array or a quoted string
+  // must parse: taken as a string it would be blamed on the file later ("expected a table").
   toml::table parsed;
   try {
     parsed = toml::parse(std::string_view("v = " + text), kOverrideSource);
-  } catch (const toml::parse_error&) {
+  } catch (const toml::parse_error& e) {
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first != std::string::npos && std::string_view("{[\"'").find(text[first]) != std::string_view::npos)
+      throw Error("command line: override '" + echoed(path) + "': its value '" + echoed(text) +
+                  "' is not valid TOML: " + std::string(e.description()));
     parsed = toml::table{{"v", text}};
   }
   table->insert_or_assign(std::string(rest), std::move(*parsed.get("v")));

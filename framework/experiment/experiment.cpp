@@ -24,14 +24,27 @@ constexpr float kDegrees = float(M_PI) / 180.0f;
 // stored as the scene's meshes: 30 million take about 2 GB with their vertices).
 constexpr std::size_t kMaxParticleTriangles = 30'000'000;
 
+// A number as a person writes it (10, 0.02), not std::to_string's 10.000000.
+std::string shortNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
 Light readLight(Params& p) {
   Light light;
   const std::string type = p.getChoice("type", "point", {"point", "spot", "directional"});
   light.type = type == "point" ? LightType::Point
                : type == "spot" ? LightType::Spot : LightType::Directional;
   light.name = p.get<std::string>("name", type);
-  light.color = p.get<glm::vec3>("color", glm::vec3(1.0f), {.min = glm::vec3(0.0f)});
+  light.color = p.get<glm::vec3>("color", glm::vec3(1.0f), {.min = glm::vec3(0.0f), .max = glm::vec3(1e12f)});
   light.intensity = p.require<float>("intensity", {.min = 0.0f, .max = 1e12f});
+  // What reaches the kernels is their product; 1e12 is the brightest light the extremes tests
+  // render finite (a colour of 1e30 ran, and 1e38 ended in NaN far from this file).
+  const float brightest = std::max({light.color.x, light.color.y, light.color.z}) * light.intensity;
+  if (brightest > 1e12f)
+    throw Error(p.where("color") + ": colour x intensity reaches " + shortNumber(brightest) +
+                ", above 1e12, the brightest light lpvlab is tested with");
   if (light.type != LightType::Directional) light.position = p.require<glm::vec3>("position");
   if (light.type != LightType::Point) {
     const glm::vec3 d = p.require<glm::vec3>("direction");
@@ -89,13 +102,6 @@ void readMaterialOverride(Params& p, Scene& scene) {
                 "transmit more than it receives (base_color + transmittance = " +
                 std::to_string(total.x) + ", " + std::to_string(total.y) + ", " +
                 std::to_string(total.z) + "; at most 1 per channel)");
-}
-
-// A number as a person writes it (10, 0.02), not std::to_string's 10.000000.
-std::string shortNumber(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
 }
 
 Camera readCamera(Params& p, const Scene& scene) {

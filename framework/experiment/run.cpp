@@ -94,6 +94,9 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
         heatMapName + " (FLIP of " + mine + " against the reference's " + theirs + ")";
   }
 
+  if (const std::vector<std::string> warnings = resultWarnings(aovs, manifest); !warnings.empty())
+    manifest["warnings"] = warnings;
+
   std::filesystem::create_directories(outDir);
   const std::filesystem::path dir(outDir);
   writeExr((dir / "images.exr").string(), aovs,

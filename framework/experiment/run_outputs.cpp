@@ -3,9 +3,13 @@
 #include <assimp/version.h>
 #include <glslang/build_info.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "framework/core/error.h"
+#include "framework/experiment/json_path.h"
 #include "framework/io/provenance.h"
 #include "framework/metrics/metrics.h"
 #include "framework/reference/statistical_compare.h"
@@ -21,6 +25,47 @@ void requireFiniteImages(const std::vector<NamedImage>& aovs) {
       throw Error("output '" + aov.name + "': " + std::to_string(bad) +
                   " values are NaN or Inf; nothing was written");
   }
+}
+
+std::vector<std::string> resultWarnings(const std::vector<NamedImage>& aovs,
+                                        const nlohmann::json& manifest) {
+  const auto zero = [&](const char* name) {
+    for (const NamedImage& aov : aovs)
+      if (aov.name == name)
+        return std::all_of(aov.image.pixels.begin(), aov.image.pixels.end(),
+                           [](float v) { return v == 0.0f; });
+    return false;  // not an output of this run
+  };
+  std::vector<std::string> warnings;
+  if (zero("direct") && zero("indirect"))
+    warnings.push_back("every value of 'direct' and 'indirect' is zero: nothing the camera sees is "
+                       "lit (lights black or of zero intensity, outside the view, or no surface "
+                       "they reach)");
+  else if (zero("indirect"))
+    warnings.push_back("'indirect' is zero everywhere while 'direct' is not");
+  // VPLs binned outside the light grid are dropped: a fixed grid that misses lit surfaces, or a
+  // lit surface facing out on the scene's bounds, whose VPLs one cell out lie on the boundary of
+  // a grid with one cell of margin (docs/variants.md#energy-audit).
+  const auto* rsm = findPath(manifest, "injection_flux_W.rsm");
+  const auto* added = findPath(manifest, "injection_flux_W.added_by.injection");
+  const auto* type = findPath(manifest, "configuration.injection.type");
+  if (rsm && added && type && rsm->is_number() && added->is_number() && *type == "rsm_vpl" &&
+      rsm->get<double>() > 0.0 && added->get<double>() < 0.999 * rsm->get<double>()) {
+    std::ostringstream percent;
+    percent << std::setprecision(3) << 100.0 * (1.0 - added->get<double>() / rsm->get<double>());
+    warnings.push_back(percent.str() + "% of the RSMs' reflected flux fell outside the light grid "
+                       "and was dropped (a fixed grid that misses lit surfaces, or lit surfaces "
+                       "facing out on the scene's bounds: grid.margin = 2 keeps their VPLs)");
+  }
+  // A solve that stopped before its tolerance (radiosity's max_iterations, say).
+  if (const auto* statistics = findPath(manifest, "indirect_method.statistics")) {
+    const nlohmann::json flat = statistics->flatten();  // items() refers into it
+    for (const auto& [path, value] : flat.items())
+      if (path.ends_with("/converged") && value.is_boolean() && !value.get<bool>())
+        warnings.push_back("the indirect method's " + path.substr(1, path.size() - 11) +
+                           " did not converge (statistics" + path + " = false)");
+  }
+  return warnings;
 }
 
 namespace {

@@ -18,6 +18,13 @@ namespace lpvlab {
 // Throws an Error, before anything is written, if any output holds NaN or Inf.
 void requireFiniteImages(const std::vector<NamedImage>& aovs);
 
+// What a finished run's outputs and manifest show that its exit code cannot: everything black
+// (no light reached anything: black or zero lights, degenerate geometry), indirect light zero
+// everywhere while direct light is not, an indirect method's solve that did not converge. Each a
+// sentence for stderr and the manifest's "warnings" (which summary.csv and the report carry).
+std::vector<std::string> resultWarnings(const std::vector<NamedImage>& aovs,
+                                        const nlohmann::json& manifest);
+
 // The pixels where the camera sees a surface (depth 0 marks the background).
 Image coverageMask(const Image& depth);
 

@@ -144,6 +144,10 @@ SweepSpec readSweep(const toml::table& root, const std::string& file) {
   if (!node) return spec;
   const toml::table* sweep = node->as_table();
   if (!sweep) throw Error(file + ": key 'sweep': expected a table with product and/or zip");
+  // An empty [sweep] would run the base configuration alone, with no word that nothing is swept.
+  if (sweep->empty())
+    throw Error(file + ": key 'sweep': empty: give product and/or zip (or run the file with "
+                "`lpvlab run`)");
   for (const auto& [k, value] : *sweep) {
     const std::string name(k.str());
     if (name != "product" && name != "zip")
@@ -502,6 +506,13 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   for (const std::string& column : figureColumns) header.push_back(column);
   if (!temporalColumns.empty()) header.push_back("temporal.at_rest");
   for (const std::string& column : temporalColumns) header.push_back(column);
+  // A run's warnings (run_outputs.h's resultWarnings: a black image, a solve that did not
+  // converge), joined, when any run of the sweep has them.
+  const bool anyWarnings = std::any_of(manifests.begin(), manifests.end(), [](const auto& m) {
+    const auto* w = findPath(m.second, "warnings");
+    return w && w->is_array() && !w->empty();
+  });
+  if (anyWarnings) header.push_back("warnings");
   for (std::size_t i = 0; i < header.size(); ++i) csv << (i ? "," : "") << csvField(header[i]);
   csv << "\n";
 
@@ -574,6 +585,13 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
         row.push_back(jsonText(frame ? findPath(*frame, "temporal.at_rest") : nullptr));
         for (const std::string& column : temporalColumns)
           row.push_back(jsonText(frame ? findPath(*frame, column) : nullptr));
+      }
+      if (anyWarnings) {
+        std::string joined;
+        if (const auto* w = findPath(m, "warnings"); w && w->is_array())
+          for (const auto& warning : *w)
+            if (warning.is_string()) joined += (joined.empty() ? "" : "; ") + warning.get<std::string>();
+        row.push_back(joined);
       }
       for (std::size_t i = 0; i < row.size(); ++i) csv << (i ? "," : "") << csvField(row[i]);
       csv << "\n";

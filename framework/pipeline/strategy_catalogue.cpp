@@ -1,5 +1,8 @@
 #include "framework/pipeline/strategy_catalogue.h"
 
+#include <iomanip>
+#include <sstream>
+
 #include <toml++/toml.h>
 
 #include "framework/core/parameters.h"
@@ -9,6 +12,31 @@
 namespace lpvlab {
 
 namespace {
+
+// A default as a person writes it: floats read as doubles print 0.02, not 0.019999999552965164
+// (7 significant digits, a float's), strings quoted as in TOML.
+std::string shown(const nlohmann::json& value) {
+  if (value.is_number_float()) {
+    std::ostringstream out;
+    out << std::setprecision(7) << value.get<double>();
+    return out.str();
+  }
+  if (value.is_array()) {
+    std::string out = "[";
+    for (const nlohmann::json& v : value) out += (out.size() > 1 ? ", " : "") + shown(v);
+    return out + "]";
+  }
+  return value.dump();
+}
+
+// "key = value, ..." of every parameter a strategy or method read with its defaults.
+std::string parameterLine(const Params& params) {
+  std::string line;
+  const nlohmann::json resolved = params.resolved();  // items() refers into it
+  for (const auto& [key, value] : resolved.items())
+    line += (line.empty() ? "" : ", ") + key + " = " + shown(value);
+  return line;
+}
 
 template <class Interface>
 void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
@@ -21,6 +49,7 @@ void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
     Requirements alone;  // order 1, one level, no resources from other strategies
     alone.backend = ComputeBackend::Cpu;
     item.cpuRefusal = strategy->cpuRefusal(alone);
+    item.parameters = parameterLine(params);
     out.push_back(std::move(item));
   }
 }
@@ -42,11 +71,7 @@ std::vector<MethodCatalogueEntry> methodCatalogue() {
     const toml::table defaults;
     Params params(defaults, "the method catalogue", "indirect");
     entry.factory(params);
-    std::string parameters;
-    const nlohmann::json resolved = params.resolved();
-    for (const auto& [key, value] : resolved.items())
-      parameters += (parameters.empty() ? "" : ", ") + key + " = " + value.dump();
-    entries.push_back({name, entry.description, parameters});
+    entries.push_back({name, entry.description, parameterLine(params)});
   }
   return entries;
 }

@@ -16,6 +16,7 @@ struct CatalogueEntry {
   std::string description;
   ResourceUses uses;  // with the default parameters (a parameter may change them)
   std::string cpuRefusal;  // why it has no CPU kernel with its defaults alone, or "" if it has one
+  std::string parameters;  // "key = value, ..." as the strategy reads them by default
 };
 
 // In pipeline order, each stage's strategies by name.

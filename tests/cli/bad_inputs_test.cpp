@@ -52,6 +52,10 @@ protected:
     write("badcamera.gltf", gltfWithCamera(10.0, 1.0));
     write("flatcamera.gltf", gltfWithCamera(1.0, 1.0));
     write("a_run/manifest.json", "{}\n");
+    write("a_fit/fit.json", "{}\n");  // a finished fit: its outputs and no fit.progress.json
+    write("empty_sweep.toml", "extends = \"" LPVLAB_SOURCE_DIR "/experiments/cornell_box.toml\"\n[sweep]\n");
+    write("one_sweep.toml", "extends = \"" LPVLAB_SOURCE_DIR
+                            "/experiments/cornell_box.toml\"\n[sweep.product]\n\"grid.resolution\" = [8]\n");
     fs::create_directories(dir_.path() / "empty");
   }
   void write(const std::string& relative, const std::string& text) {
@@ -103,6 +107,36 @@ const std::vector<BadInput>& cases() {
        "summary empty",
        {"empty: not a sweep directory", "sweep.json"},
        {"empty/summary.csv"}},
+      {"a light's colour out of range",
+       "run --out out" + kSmall +
+           " -s 'lights=[{name=\"p\",type=\"point\",position=[0.3,0.3,0.3],intensity=1.0,color=[1e30,1,1]}]'",
+       {"lights[0].color", "above the maximum 1e+12"},
+       {"out"}},
+      {"a light's colour x intensity out of range",
+       "run --out out" + kSmall +
+           " -s 'lights=[{name=\"p\",type=\"point\",position=[0.3,0.3,0.3],intensity=1e12,color=[2,1,1]}]'",
+       {"lights[0].color", "colour x intensity reaches 2e+12"},
+       {"out"}},
+      {"a fit into a finished fit",
+       "fit " LPVLAB_SOURCE_DIR "/experiments/fit_cornell_box.toml --out a_fit",
+       {"--out a_fit: holds a finished fit", "--force"},
+       {"a_fit/fit.progress.json", "a_fit/fit.md"}},
+      {"an empty [sweep] table",
+       "sweep empty_sweep.toml --out swept" + kSmall,
+       {"empty_sweep.toml", "key 'sweep': empty"},
+       {"swept"}},
+      {"a sweep into a run's directory",
+       "sweep one_sweep.toml --out a_run" + kSmall,
+       {"--out a_run", "holds a single run"},
+       {"a_run/sweep.json", "a_run/configs"}},
+      {"an override whose value starts as TOML and does not parse",
+       "run --out out" + kSmall + " -s 'camera={position=[0,1'",
+       {"override 'camera'", "is not valid TOML"},
+       {"out"}},
+      {"a 2000-character value, echoed cut",
+       "run --out out" + kSmall + " -s scene.file='\"" + std::string(2000, 'a') + "\"'",
+       {"scene.file", "(2000 characters)"},
+       {"out"}},
   };
   return c;
 }
@@ -117,9 +151,106 @@ TEST_F(BadInputs, EachIsOneNamedErrorWithANonZeroExitAndWritesNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line:\n" << r.err;
     for (const std::string& needle : bad.mustName)
       EXPECT_NE(r.err.find(needle), std::string::npos) << "names '" << needle << "':\n" << r.err;
+    EXPECT_LT(r.err.size(), 400u) << "values are echoed cut";
     for (const std::string& path : bad.mustNotExist)
       EXPECT_FALSE(fs::exists(dir_.path() / path)) << path << " was written";
   }
+}
+
+// A finished run (its manifest.json) is not written over: the second run into it is refused and
+// leaves it as it was; with --force the old run's files go first (here an error map the new run
+// does not write, which would otherwise stand beside a manifest without a comparison) and a file
+// of the user's in the directory stays.
+TEST_F(BadInputs, AFinishedRunIsNotWrittenOverWithoutForceAndForceRemovesWhatItWrote) {
+  const fs::path run = dir_.path() / "r";
+  ASSERT_EQ(test::runLpvlab("run --out r" + kSmall, dir_.path(), dir_.path()).exitCode, 0);
+  write("r/notes.txt", "mine\n");
+  const std::string manifest = test::readFile(run / "manifest.json");
+
+  const test::LpvlabResult again = test::runLpvlab("run --out r" + kSmall, dir_.path(), dir_.path());
+  EXPECT_NE(again.exitCode, 0);
+  EXPECT_NE(again.err.find("lpvlab: error: --out r: holds a finished run (manifest.json, created "),
+            std::string::npos)
+      << again.err;
+  EXPECT_NE(again.err.find("--force"), std::string::npos) << again.err;
+  EXPECT_EQ(test::readFile(run / "manifest.json"), manifest) << "the finished run is left as it was";
+
+  // The old run as one with a comparison would have left it: an error map in its outputs.
+  std::string withMap = manifest;
+  const std::string outputs = "\"outputs\": {";
+  ASSERT_NE(withMap.find(outputs), std::string::npos);
+  withMap.insert(withMap.find(outputs) + outputs.size(),
+                 "\"error_map\": \"error_indirect.png (FLIP of indirect)\", ");
+  write("r/manifest.json", withMap);
+  write("r/error_indirect.png", "old\n");
+  const test::LpvlabResult forced =
+      test::runLpvlab("run --force --out r" + kSmall, dir_.path(), dir_.path());
+  EXPECT_EQ(forced.exitCode, 0) << forced.err;
+  EXPECT_FALSE(fs::exists(run / "error_indirect.png")) << "the old run's error map was removed";
+  EXPECT_TRUE(fs::exists(run / "manifest.json"));
+  EXPECT_NE(test::readFile(run / "manifest.json"), withMap);
+  EXPECT_EQ(test::readFile(run / "notes.txt"), "mine\n") << "only what the old run wrote goes";
+}
+
+// Results that run but are suspect are flagged, not refused (a black image can be what a study
+// asks for): a warning on stderr, the manifest's "warnings", a column of summary.csv.
+TEST_F(BadInputs, BlackResultsAndUnconvergedSolvesAreFlaggedInTheOutputManifestAndSummary) {
+  const std::string dark =
+      " -s scene.replace_lights=true"
+      " -s 'lights=[{name=\"off\",type=\"point\",position=[0.3,0.3,0.3],intensity=0.0}]'";
+  const std::string flags[] = {
+      "run --out black" + kSmall + dark,
+      // Radiosity stopped before it began: an indirect image of zeros, converged = false.
+      "run --out unsolved -s indirect.method='\"radiosity\"' -s indirect.max_iterations=0" + kSmall};
+  const test::LpvlabResult black = test::runLpvlab(flags[0], dir_.path(), dir_.path());
+  ASSERT_EQ(black.exitCode, 0) << black.err;
+  EXPECT_NE(black.err.find("lpvlab: warning: every value of 'direct' and 'indirect' is zero"),
+            std::string::npos)
+      << black.err;
+  EXPECT_NE(test::readFile(dir_.path() / "black" / "manifest.json").find("\"warnings\""),
+            std::string::npos);
+  const test::LpvlabResult unsolved = test::runLpvlab(flags[1], dir_.path(), dir_.path());
+  ASSERT_EQ(unsolved.exitCode, 0) << unsolved.err;
+  EXPECT_NE(unsolved.err.find("lpvlab: warning: the indirect method's solver did not converge"),
+            std::string::npos)
+      << unsolved.err;
+  // The open box's two-sided walls under a sun, with one cell of grid margin: the VPLs of their
+  // sunlit outsides fall outside the grid (8% of the flux); with two cells none do.
+  const std::string openBox =
+      " -s scene.file='\"" LPVLAB_SOURCE_DIR "/experiments/scenes/open_box.obj\"'"
+      " -s 'camera={position=[0.5,0.75,2.6],look_at=[0.5,0.35,0.5]}'"
+      " -s output.width=8 -s output.height=8 -s timing.warmup=0 -s timing.repeats=1"
+      " -s 'lights=[{name=\"sun\",type=\"directional\",direction=[0.3,-1.0,-0.4],intensity=2.0}]'";
+  const test::LpvlabResult outside = test::runLpvlab("run --out outside" + openBox, dir_.path(), dir_.path());
+  ASSERT_EQ(outside.exitCode, 0) << outside.err;
+  EXPECT_NE(outside.err.find("of the RSMs' reflected flux fell outside the light grid"), std::string::npos)
+      << outside.err;
+  const test::LpvlabResult inside =
+      test::runLpvlab("run --out inside -s grid.margin=2.0" + openBox, dir_.path(), dir_.path());
+  ASSERT_EQ(inside.exitCode, 0) << inside.err;
+  EXPECT_EQ(inside.err.find("lpvlab: warning:"), std::string::npos) << inside.err;
+  // A lit run has no warnings: the box's own spot.
+  ASSERT_EQ(test::runLpvlab("run --out lit -s output.width=8 -s output.height=8 -s timing.warmup=0 "
+                            "-s timing.repeats=1",
+                            dir_.path(), dir_.path())
+                .exitCode,
+            0);
+  EXPECT_EQ(test::readFile(dir_.path() / "lit" / "manifest.json").find("\"warnings\""),
+            std::string::npos);
+
+  // A sweep of the dark light and a lit one: summary.csv carries the warnings of the dark run.
+  write("dark_sweep.toml", "extends = \"" LPVLAB_SOURCE_DIR
+                           "/experiments/cornell_box.toml\"\n[scene]\nreplace_lights = true\n"
+                           "[[lights]]\nname = \"p\"\ntype = \"point\"\nposition = [0.3, 0.3, 0.3]\n"
+                           "intensity = 1.0\n[sweep.product]\n\"lights[0].intensity\" = [0.0, 1.0]\n");
+  const test::LpvlabResult sweep = test::runLpvlab(
+      "sweep dark_sweep.toml --out swept -s output.width=8 -s output.height=8 -s timing.warmup=0 "
+      "-s timing.repeats=1",
+      dir_.path(), dir_.path());
+  ASSERT_EQ(sweep.exitCode, 0) << sweep.err;
+  const std::string csv = test::readFile(dir_.path() / "swept" / "summary.csv");
+  EXPECT_NE(csv.substr(0, csv.find('\n')).find("warnings"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("every value of 'direct' and 'indirect' is zero"), std::string::npos) << csv;
 }
 
 // The cases' files are good but for the fault: the same OBJ with its library, and the glTF with
