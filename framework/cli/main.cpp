@@ -2,7 +2,8 @@
 // `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
 // `lpvlab report DIR`, `lpvlab fit FILE`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
-// once, as "lpvlab: error: <where>: <what>", and the exit code is 1.
+// once, as "lpvlab: error: <where>: <what>", and the exit code is 1; a usage error (an unknown
+// command or option, a missing argument) is one such line too, with exit code 2.
 
 #include <CLI/CLI.hpp>
 
@@ -10,10 +11,15 @@
 
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
+#include "framework/io/provenance.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"lpvlab: a research framework for Light Propagation Volumes variants"};
   app.require_subcommand(1);
+  // The version a run's manifest records, and the source's git revision.
+  app.set_version_flag("--version", []() {
+    return std::string("lpvlab ") + LPVLAB_VERSION + " (git " + lpvlab::gitRevision(LPVLAB_SOURCE_DIR) + ")";
+  });
   lpvlab::cli::Options options;
 
   CLI::App* run = app.add_subcommand(
@@ -107,7 +113,22 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version (CLI11's exit code 0) print as CLI11 prints them; a usage error is one
+    // line with the one prefix every error has, and exit code 2 (CLI11's own are 105-115).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    // A first word that is no command: name it (CLI11 says only that a command is required).
+    std::string commands;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      commands += (commands.empty() ? "" : ", ") + sub->get_name();
+      known = known || (argc > 1 && sub->get_name() == argv[1]);
+    }
+    if (argc > 1 && argv[1][0] != '-' && !known)
+      std::cerr << "lpvlab: error: unknown command '" << lpvlab::echoed(argv[1])
+                << "' (commands: " << commands << ")\n";
+    else
+      std::cerr << "lpvlab: error: " << e.what() << " (lpvlab --help lists the commands)\n";
+    return 2;
   }
   try {
     if (run->parsed()) return lpvlab::cli::runCommand(options);

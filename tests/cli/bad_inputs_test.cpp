@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "executable_support.h"
@@ -251,6 +252,27 @@ TEST_F(BadInputs, BlackResultsAndUnconvergedSolvesAreFlaggedInTheOutputManifestA
   const std::string csv = test::readFile(dir_.path() / "swept" / "summary.csv");
   EXPECT_NE(csv.substr(0, csv.find('\n')).find("warnings"), std::string::npos) << csv;
   EXPECT_NE(csv.find("every value of 'direct' and 'indirect' is zero"), std::string::npos) << csv;
+}
+
+// Usage errors (an unknown command or option, a word too many) are one `lpvlab: error:` line
+// naming the word, with exit code 2 (CLI11's own codes were 105-115, and "A subcommand is
+// required" for an unknown command); --version prints the version and the git revision.
+TEST_F(BadInputs, UsageErrorsExitTwoNamingTheWordAndVersionPrintsTheRevision) {
+  for (const auto& [args, word] : std::vector<std::pair<std::string, std::string>>{
+           {"compare", "unknown command 'compare' (commands: run, "},
+           {"", "A subcommand is required"},
+           {"run --nosuch", "--nosuch"},
+           {"run a.toml b.toml", "b.toml"}}) {
+    SCOPED_TRACE("lpvlab " + args);
+    const test::LpvlabResult r = test::runLpvlab(args, dir_.path(), dir_.path());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("lpvlab: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(word), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const test::LpvlabResult version = test::runLpvlab("--version", dir_.path(), dir_.path());
+  EXPECT_EQ(version.exitCode, 0) << version.err;
+  EXPECT_EQ(version.out.rfind(std::string("lpvlab ") + LPVLAB_VERSION + " (git ", 0), 0u) << version.out;
 }
 
 // The cases' files are good but for the fault: the same OBJ with its library, and the glTF with
