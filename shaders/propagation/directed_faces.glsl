@@ -78,8 +78,8 @@ vec4 directedDilated(vec4 own, vec3 neighbourUnitNormalSum) {
 // with the surface it left, is reprojected as alg. 6.3 says; where the normal field changes (a
 // neighbour's normal differs by more than the region angle, or the cell has no normal) a cell
 // releases its attached light into the "free" grid, which propagates as standard propagation
-// does. So a surface never receives its own region's light (which the physics agrees with: two
-// surfaces of one normal exchange no light), and receives every other surface's.
+// does. So a surface receives none of its own light while that light stays in its region (the
+// physics agrees: two surfaces of one normal exchange no light), and every other surface's.
 
 // Whether two stored normals belong to one region: both have a normal, within the region angle
 // (its cosine given).

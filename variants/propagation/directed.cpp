@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -203,11 +204,13 @@ public:
     std::size_t bytes = scratch_.size() + free_[0].size() + free_[1].size() + normals_[0].size() +
                         normals_[1].size() +
                         cpu_.memoryBytes() + cpuNormals_.size() * sizeof(float);
-    for (const auto& [grid, cache] : cpuCells_)
-      bytes += (cache.normals.size() + cache.cells.since.size() + cache.cells.faceWeight.size() +
-                cache.cells.lobe.size()) *
+    for (const auto& [grid, cache] : cpuCells_) {
+      const ReprojectedCells<float>& r = cache.cells.reprojected;
+      const ReleasedCells& released = cache.cells.released;
+      bytes += (cache.normals.size() + r.since.size() + r.faceWeight.size() + r.lobe.size()) *
                    sizeof(float) +
-               (cache.released.keepFrom.size() + cache.released.keepUntil.size()) * sizeof(int);
+               (released.keepFrom.size() + released.keepUntil.size()) * sizeof(int);
+    }
     return bytes;
   }
 
@@ -221,17 +224,13 @@ public:
     const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
     const StandardFaceTable<Dual> table =
         makeStandardFaceTable<Dual, Dual>(shOrder_, Dual(angles.farFace), Dual(angles.sideFace));
-    const ReprojectedCells<Dual> cells =
-        makeDirectedCells(table, grid.geometry.resolution, cpuNormals_, iterations_, dilation_,
-                          angles.farFace, angles.sideFace);
-    const ReleasedCells released =
-        release_ ? makeReleasedCells(grid.geometry.resolution, cpuNormals_, iterations_, dilation_,
-                                     cosRegionAngle_)
-                 : ReleasedCells{};
+    const DirectedCells<Dual> cells = makeDirectedAndReleasedCells(
+        table, grid.geometry.resolution, cpuNormals_, iterations_, dilation_, angles.farFace,
+        angles.sideFace, regionAngle());
     StandardCpuFrame::propagateDual(dual, shOrder_, Dual(angles.farFace), Dual(angles.sideFace),
                                     {.count = iterations_,
-                                     .reprojected = &cells,
-                                     .released = release_ ? &released : nullptr});
+                                     .reprojected = &cells.reprojected,
+                                     .released = release_ ? &cells.released : nullptr});
   }
 
 private:
@@ -242,18 +241,21 @@ private:
     downloadFloats(frame.get(kNormalGrid).normals, std::size_t(4) * grid.geometry.cellCount(),
                    cpuNormals_);
     CellsCache& cache = cpuCells_[&grid];
-    if (cache.cells.resolution != grid.geometry.resolution || cache.normals != cpuNormals_) {
+    if (cache.cells.reprojected.resolution != grid.geometry.resolution || cache.normals != cpuNormals_) {
       const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
-      cache.cells = makeDirectedCells(cpu_.table(), grid.geometry.resolution, cpuNormals_,
-                                      iterations_, dilation_, angles.farFace, angles.sideFace);
-      if (release_)
-        cache.released = makeReleasedCells(grid.geometry.resolution, cpuNormals_, iterations_,
-                                           dilation_, cosRegionAngle_);
+      cache.cells = makeDirectedAndReleasedCells(cpu_.table(), grid.geometry.resolution,
+                                                 cpuNormals_, iterations_, dilation_,
+                                                 angles.farFace, angles.sideFace, regionAngle());
       cache.normals = cpuNormals_;
     }
     cpu_.propagate(frame, {.count = iterations_,
-                           .reprojected = &cache.cells,
-                           .released = release_ ? &cache.released : nullptr});
+                           .reprojected = &cache.cells.reprojected,
+                           .released = release_ ? &cache.cells.released : nullptr});
+  }
+
+  // The region angle's cosine with release, none without.
+  std::optional<double> regionAngle() const {
+    return release_ ? std::optional<double>(cosRegionAngle_) : std::nullopt;
   }
 
   // directed_release.comp over the grid's attached light and the free light (free_[0]).
@@ -302,8 +304,7 @@ private:
   std::vector<float> cpuNormals_;  // the injected normals, read back
   struct CellsCache {
     std::vector<float> normals;  // the injected normals they were found from
-    ReprojectedCells<float> cells;
-    ReleasedCells released;  // with release
+    DirectedCells<float> cells;  // released: empty without release
   };
   std::map<const LightGrid*, CellsCache> cpuCells_;  // per cascade level
 };

@@ -98,17 +98,11 @@ void checkNormalGrid(const std::vector<float>& injected, std::size_t cells) {
                 std::to_string(cells) + "-cell grid");
 }
 
-}  // namespace
-
+// The reprojecting cells of makeDirectedCells from the dilated normals.
 template <class Real>
-ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
-                                         const glm::ivec3& res,
-                                         const std::vector<float>& injectedNormals, int iterations,
-                                         bool dilation, double farSolidAngle,
-                                         double sideSolidAngle) {
-  const std::size_t cells = std::size_t(res.x) * res.y * res.z;
-  checkNormalGrid(injectedNormals, cells);
-  const DilatedNormals normals = dilateNormals(res, injectedNormals, iterations, dilation);
+ReprojectedCells<Real> reprojectedFrom(const StandardFaceTable<Real>& table, const glm::ivec3& res,
+                                       const DilatedNormals& normals, double farSolidAngle,
+                                       double sideSolidAngle) {
   ReprojectedCells<Real> r;
   r.resolution = res;
   r.coefficients = table.coefficients;
@@ -141,11 +135,10 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
   return r;
 }
 
-ReleasedCells makeReleasedCells(const glm::ivec3& res, const std::vector<float>& injectedNormals,
-                                int iterations, bool dilation, double cosRegionAngle) {
+// The released cells of makeReleasedCells from the dilated normals.
+ReleasedCells releasedFrom(const glm::ivec3& res, const DilatedNormals& normals,
+                           double cosRegionAngle) {
   const std::size_t cells = std::size_t(res.x) * res.y * res.z;
-  checkNormalGrid(injectedNormals, cells);
-  const DilatedNormals normals = dilateNormals(res, injectedNormals, iterations, dilation);
   ReleasedCells r;
   r.keepFrom.assign(cells, 0);
   r.keepUntil.assign(cells, 0);  // empty: released in every iteration
@@ -171,6 +164,50 @@ ReleasedCells makeReleasedCells(const glm::ivec3& res, const std::vector<float>&
   return r;
 }
 
+// The normal grid checked and dilated as the GL kernels dilate it.
+DilatedNormals checkedDilation(const glm::ivec3& res, const std::vector<float>& injectedNormals,
+                               int iterations, bool dilation) {
+  checkNormalGrid(injectedNormals, std::size_t(res.x) * res.y * res.z);
+  return dilateNormals(res, injectedNormals, iterations, dilation);
+}
+
+}  // namespace
+
+template <class Real>
+ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
+                                         const glm::ivec3& res,
+                                         const std::vector<float>& injectedNormals, int iterations,
+                                         bool dilation, double farSolidAngle,
+                                         double sideSolidAngle) {
+  return reprojectedFrom(table, res, checkedDilation(res, injectedNormals, iterations, dilation),
+                         farSolidAngle, sideSolidAngle);
+}
+
+ReleasedCells makeReleasedCells(const glm::ivec3& res, const std::vector<float>& injectedNormals,
+                                int iterations, bool dilation, double cosRegionAngle) {
+  return releasedFrom(res, checkedDilation(res, injectedNormals, iterations, dilation),
+                      cosRegionAngle);
+}
+
+template <class Real>
+DirectedCells<Real> makeDirectedAndReleasedCells(const StandardFaceTable<Real>& table,
+                                                 const glm::ivec3& res,
+                                                 const std::vector<float>& injectedNormals,
+                                                 int iterations, bool dilation,
+                                                 double farSolidAngle, double sideSolidAngle,
+                                                 std::optional<double> cosRegionAngle) {
+  const DilatedNormals normals = checkedDilation(res, injectedNormals, iterations, dilation);
+  DirectedCells<Real> cells{reprojectedFrom(table, res, normals, farSolidAngle, sideSolidAngle), {}};
+  if (cosRegionAngle) cells.released = releasedFrom(res, normals, *cosRegionAngle);
+  return cells;
+}
+
+template DirectedCells<float> makeDirectedAndReleasedCells<float>(
+    const StandardFaceTable<float>&, const glm::ivec3&, const std::vector<float>&, int, bool,
+    double, double, std::optional<double>);
+template DirectedCells<Dual> makeDirectedAndReleasedCells<Dual>(
+    const StandardFaceTable<Dual>&, const glm::ivec3&, const std::vector<float>&, int, bool,
+    double, double, std::optional<double>);
 template ReprojectedCells<float> makeDirectedCells<float>(const StandardFaceTable<float>&,
                                                           const glm::ivec3&,
                                                           const std::vector<float>&, int, bool,

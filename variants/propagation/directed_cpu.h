@@ -18,6 +18,7 @@
 // gain G(n) (60 lobe evaluations) is found once per frame, not once per iteration as on GL. The
 // strategy keeps the result while the injected normals stay the same bit for bit.
 
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -44,5 +45,20 @@ ReprojectedCells<Real> makeDirectedCells(const StandardFaceTable<Real>& table,
 ReleasedCells makeReleasedCells(const glm::ivec3& resolution,
                                 const std::vector<float>& injectedNormals, int iterations,
                                 bool dilation, double cosRegionAngle);
+
+// Both from one dilation, as the strategy needs them (with release: `cosRegionAngle` given;
+// without, `released` stays empty).
+template <class Real>
+struct DirectedCells {
+  ReprojectedCells<Real> reprojected;
+  ReleasedCells released;
+};
+template <class Real>
+DirectedCells<Real> makeDirectedAndReleasedCells(const StandardFaceTable<Real>& table,
+                                                 const glm::ivec3& resolution,
+                                                 const std::vector<float>& injectedNormals,
+                                                 int iterations, bool dilation,
+                                                 double farSolidAngle, double sideSolidAngle,
+                                                 std::optional<double> cosRegionAngle);
 
 }  // namespace lpvlab
