@@ -6,7 +6,7 @@ changed, at several grid resolutions. Every other configuration is compared with
 
   * equal settings: the baseline configuration at the same grid.resolution (the ratio
     error / baseline error says what the extension changes, whatever it costs);
-  * equal time: the baseline's error at the configuration's total GPU time, interpolated
+  * equal time: the baseline's error at the configuration's total frame time, interpolated
     linearly in (log time, log error) between the two baseline points bracketing that time
     (the baseline sorted by time). A time outside the baseline's range is "out of range" and
     gets no value: extrapolating a power law past its last point would be a guess. A ratio
@@ -25,7 +25,7 @@ from . import summary as S
 
 SERIES_COL = "param.series"
 BASELINE = "baseline"
-TIME_COL = "gpu_ms.total"
+TIME_COL = S.TIME_COL
 RESOLUTION_COL = "param.grid.resolution"
 SCENE_COL = "param.scene.file"
 METRIC_NAMES = ("rmse", "flip")
@@ -127,7 +127,7 @@ def compare(agg, metric):
                 "name": _name(r),
                 "baseline": bool(base_mask.loc[idx]), "resolution": res,
                 "total ms": float(r[TIME_COL]),
-                "propagation ms": float(r.get("gpu_ms.propagation", math.nan)),
+                "propagation ms": float(r.get(S.time_col("propagation"), math.nan)),
                 "error": err, "settings error": s_err, "settings ratio": _ratio(err, s_err),
                 "time error": t_err, "time ratio": _ratio(err, t_err), "time status": status})
     return pd.DataFrame(rows, columns=cols)

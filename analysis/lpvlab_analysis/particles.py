@@ -18,6 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from . import equal_time as ET  # noqa: E402
+from . import summary as S  # noqa: E402
 from . import plots  # noqa: E402
 from . import tables  # noqa: E402
 
@@ -77,16 +78,17 @@ def to_html(agg, metric):
     return tables.html_table(table(agg, metric), _FORMATS)
 
 
-def _time_and_error(path, metric, lines, x, xlabel, against, log_x, log_y):
+def _time_and_error(path, metric, lines, x, xlabel, against, log_x, log_y, timed):
     """Frame time (left) and error (right) against column `x`: `lines` yields (rows, label, style)
-    with style the plot keywords (colour, marker, line style) of one line."""
+    with style the plot keywords (colour, marker, line style) of one line; `timed` says how the
+    times were taken (summary.timed_on)."""
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     for g, label, style in lines:
         for ax, col in ((left, "frame ms"), (right, "error")):
             ok = g[col].notna() & (g[col] > 0)
             if ok.any():
                 ax.plot(g[x][ok], g[col][ok], label=label, lw=1, **style)
-    for ax, ylabel in ((left, "frame time (ms, gpu_ms.total)"),
+    for ax, ylabel in ((left, "frame time (ms)"),
                        (right, metric[len("metric."):] + " (lower is better)" if metric.startswith("metric.") else metric)):
         ax.set_xscale("log", **log_x)
         if log_y:
@@ -94,7 +96,7 @@ def _time_and_error(path, metric, lines, x, xlabel, against, log_x, log_y):
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3, which="both")
-    left.set_title(f"Frame time against {against}")
+    left.set_title(f"Frame time against {against}\n{timed}", fontsize=9)
     right.set_title(f"Error against {against}")
     handles, _ = left.get_legend_handles_labels()
     if handles:
@@ -114,7 +116,8 @@ def plot(agg, path, metric):
     lines = ((g, drawing + (f" ({scene})" if len(markers) > 1 else ""),
               {"marker": markers[scene], "color": colours[drawing]})
              for (drawing, scene), g in t.groupby(["drawing", "scene"], sort=True))
-    return _time_and_error(path, metric, lines, "particles", "particles alive", "particle count", {}, True)
+    return _time_and_error(path, metric, lines, "particles", "particles alive", "particle count", {}, True,
+                           S.timed_on(agg))
 
 
 def has_resolution_sweep(agg):
@@ -175,4 +178,4 @@ def plot_resolution(agg, path, metric):
               {"marker": "o", "ls": styles.get(blending, "-"), "color": colours[views]})
              for (views, blending), g in t.groupby(["views", "blending"], sort=True))
     return _time_and_error(path, metric, lines, "texels", "texels per view side", "light-field resolution",
-                           {"base": 2}, False)
+                           {"base": 2}, False, S.timed_on(agg))

@@ -16,7 +16,7 @@ from . import pareto  # noqa: E402
 from . import summary as S  # noqa: E402
 from . import thesis_tables as T  # noqa: E402
 
-TIME_COL = "gpu_ms.total"
+TIME_COL = S.TIME_COL
 STAGE_ORDER = [s for s in S.STAGES if s != "total"]
 
 
@@ -36,7 +36,7 @@ def _pname(col):
 
 
 def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
-    """Median total GPU time vs an image metric, one colour per variant; the
+    """Median total frame time (by the clocks that timed it: S.timed_on) vs an image metric, one colour per variant; the
     Pareto front (fast and accurate; for PSNR/SSIM 'accurate' = high) is
     drawn as a step line and its points are ringed. Infinite metric values
     (PSNR of identical images) are drawn at the top edge with a marker."""
@@ -68,7 +68,7 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
     if np.isinf(e[ok]).any():
         ax.axhline(top, color="0.7", lw=0.8)
         ax.text(ax.get_xlim()[0], top, " inf", va="bottom", fontsize=7, color="0.4")
-    ax.set_xlabel("median total GPU time (ms)")
+    ax.set_xlabel(f"frame time (ms, median), {S.timed_on(agg)}")
     ax.set_ylabel(metric[len("metric."):] + (" (higher is better)" if hib else " (lower is better)"))
     ax.set_title("Speed vs accuracy")
     ax.grid(alpha=0.3)
@@ -77,28 +77,29 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
     return _save(fig, path)
 
 
-def stage_times(agg, param, path, prefix="gpu_ms."):
-    """Median time per stage against one swept numeric parameter, one panel
+def stage_times(agg, param, path):
+    """Median time per stage (each by its clock) against one swept numeric parameter, one panel
     per variant, stages stacked (areas) so the top edge is the summed stage
     time. Other swept numeric parameters are held at their most common value
     (summary.one_at_a_time)."""
     sl = S.one_at_a_time(agg, param)
-    stages = [s for s in STAGE_ORDER if prefix + s in sl.columns and sl[prefix + s].notna().any()]
+    col = S.time_col
+    stages = [s for s in STAGE_ORDER if col(s) in sl.columns and sl[col(s)].notna().any()]
     # A method's own stages (docs/methods.md) that the list above does not know, after them.
-    stages += sorted(c[len(prefix):] for c in sl.columns
-                     if c.startswith(prefix) and c[len(prefix):] not in S.STAGES and sl[c].notna().any())
+    stages += sorted(c[len("time."):-len(".ms")] for c in sl.columns
+                     if S.is_time_col(c) and c[len("time."):-len(".ms")] not in S.STAGES and sl[c].notna().any())
     if sl[param].nunique() < 2 or not stages:
         return None
     variants = sorted(set(sl["variant"]))
     fig, axes = plt.subplots(1, len(variants), figsize=(5.5 * len(variants), 4), squeeze=False)
     cmap = plt.get_cmap("tab10")
     for ax, v in zip(axes[0], variants):
-        g = sl[sl["variant"] == v].groupby(param)[[prefix + s for s in stages]].median().sort_index()
+        g = sl[sl["variant"] == v].groupby(param)[[col(s) for s in stages]].median().sort_index()
         x = g.index.values.astype(float)
-        ys = [np.nan_to_num(g[prefix + s].values.astype(float)) for s in stages]
+        ys = [np.nan_to_num(g[col(s)].values.astype(float)) for s in stages]
         ax.stackplot(x, *ys, labels=stages, colors=[cmap(i) for i in range(len(stages))], alpha=0.85)
         ax.set_xlabel(_pname(param))
-        ax.set_ylabel(f"median {prefix.rstrip('._')} per stage (ms, stacked)")
+        ax.set_ylabel("median time per stage (ms, stacked)")
         ax.set_title(v, fontsize=9)
         if len(x) and x.min() > 0 and x.max() / x.min() >= 8:
             ax.set_xscale("log", base=2)
@@ -106,7 +107,7 @@ def stage_times(agg, param, path, prefix="gpu_ms."):
         ax.set_xticklabels([f"{xx:g}" for xx in x], fontsize=7)
         ax.grid(alpha=0.3)
     axes[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
-    fig.suptitle(f"Time per stage vs {_pname(param)}")
+    fig.suptitle(f"Time per stage vs {_pname(param)}; {S.timed_on(sl)}", fontsize=9)
     return _save(fig, path)
 
 

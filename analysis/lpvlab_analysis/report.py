@@ -133,7 +133,7 @@ def _gpu_estimate_section(agg, gpus):
     h = [f"<table><thead><tr><th>configuration</th><th>stage</th><th>measured here (ms)</th>{head}</tr></thead><tbody>"]
     for _, row in est.iterrows():
         for stage in stages:
-            measured = row.get(f"gpu_ms.{stage}", float("nan"))
+            measured = row.get(S.time_col(stage), float("nan"))
             values = [row[f"{G.PREFIX}{g.key}.{stage}"] for g in gpus]
             cells = "".join(f"<td class='num'>{tables.fmt(v)}</td>" for v in values)
             h.append(f"<tr><td>{html.escape(str(row['config_name']))}</td><td>{html.escape(stage)}</td>"
@@ -262,7 +262,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
             f"<p class='note'>Sweep <code>{html.escape(', '.join(os.path.abspath(d) for d in sweep_dirs))}</code>; "
             f"{len(agg)} configurations, {len(df)} runs; generated "
             f"{datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}. "
-            f"Times are medians over repeats of GPU timestamp-query times.</p>"]
+            f"Times are medians over repeats, each stage by its own clock: {html.escape(S.timed_on(agg))} "
+            f"(per stage in summary.csv's <code>time.&lt;stage&gt;.clock</code>).</p>"]
     if swept:
         body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
     # Runs whose results are suspect (all black, a solve that did not converge): named at the top,
@@ -282,7 +283,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         body.append("<p class='note'>Circled points and dashed line: Pareto front (no other configuration is both "
                     f"faster and better in <code>{html.escape(metric)}</code>).</p>")
     else:
-        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs gpu_ms.total "
+        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs {S.TIME_COL} "
                     "(no reference comparison in this sweep?).</p>")
 
     if methods.has_methods(agg):
@@ -329,7 +330,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
                               particles.resolution_markdown(agg, metric))
 
     body.append("<h2>Ablation table</h2>")
-    body.append("<p class='note'>Sorted by median total GPU time; best value of each metric in bold.</p>")
+    body.append("<p class='note'>Sorted by median total frame time; best value of each metric in bold.</p>")
     body.append(tables.to_html(agg))
     fsutil.write_text(os.path.join(out_dir, "ablation.md"), tables.to_markdown(agg))
     body.append("<p class='note'>Markdown version: <a href='ablation.md'>ablation.md</a></p>")
@@ -338,7 +339,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     if ET.is_baseline(agg).any():
         body.append("<p class='note'>Against the baseline series (<code>series = \"baseline\"</code>: the standard "
                     "method at several grid resolutions): its error at the same grid resolution (equal settings) "
-                    "and at the same total GPU time, interpolated log-log between the two baseline points "
+                    "and at the same total frame time, interpolated log-log between the two baseline points "
                     "bracketing it (equal time; never extrapolated: outside the series it is "
                     f"&ldquo;{ET.OUT_OF_RANGE}&rdquo;). Ratio = error / baseline error; below 1 (bold) the "
                     "configuration wins.</p>")

@@ -1,8 +1,10 @@
 """Load a sweep's summary.csv and aggregate its repeats per configuration.
 
 summary.csv (written by `lpvlab sweep`) has one row per configuration and
-repeat: config_id, config_name, repeat, run_dir, param.<key>..., gpu_ms.<stage>,
-wall_ms.<stage>, memory_bytes, cells, work.<stage>.<...>, metric.<pair>.<metric>. Timings vary
+repeat: config_id, config_name, repeat, run_dir, param.<key>..., time.<stage>.ms (each stage's
+time by its clock), time.<stage>.clock (gl_timer_query: GL timestamp queries on the GL renderer
+timed_on.gl; cpu_wall_clock: the steady clock on the CPU timed_on.cpu, for a stage on the CPU
+backend), wall_ms.<stage>, memory_bytes, cells, work.<stage>.<...>, metric.<pair>.<metric>. Timings vary
 between repeats, so they are summarised by their median (robust to the odd
 slow frame); parameters, memory and image metrics describe the configuration
 and are taken from its first row that has them.
@@ -23,6 +25,49 @@ TYPE_PARAMS = ["param.injection.type", "param.occlusion.type", "param.propagatio
 METHOD_PARAM = "param.indirect.method"
 HIGHER_IS_BETTER = {"psnr", "ssim"}
 DEFAULT_METRIC = "metric.indirect_vs_indirect1.rmse"
+# What each clock of time.<stage>.clock measured, for the report's words and axes.
+CLOCK_WORDS = {"gl_timer_query": "GL timer queries", "cpu_wall_clock": "CPU wall clock",
+               "mixed": "GL timer queries and CPU wall clock, summed"}
+# summary.csv before stage times were labelled by their clock: gpu_ms.<stage>, whatever the clock.
+LEGACY_TIME_PREFIX = "gpu_ms."
+
+
+def time_col(stage):
+    """The column of a stage's median time by its clock: 'time.<stage>.ms'."""
+    return f"time.{stage}.ms"
+
+
+def clock_col(stage):
+    """The column naming how a stage was timed: 'time.<stage>.clock'."""
+    return f"time.{stage}.clock"
+
+
+TIME_COL = time_col("total")
+
+
+def is_time_col(col):
+    return col.startswith("time.") and col.endswith(".ms")
+
+
+def _unique(df, col):
+    if col not in df.columns:
+        return []
+    return sorted({str(v) for v in df[col].dropna() if str(v) not in ("", "nan")})
+
+
+def timed_on(df, stage="total"):
+    """How the sweep's `stage` times were taken and where, in words for a label: 'CPU backend on
+    <CPU>', 'GL on <renderer>', both (per configuration, or summed over a frame's stages), or that
+    the summary does not say (one written before times were labelled)."""
+    clocks = _unique(df, clock_col(stage))
+    if not clocks:
+        return "clock not recorded (rebuild summary.csv with `lpvlab summary DIR`)"
+    cpu = " / ".join(_unique(df, "timed_on.cpu")) or "an unnamed CPU"
+    gl = " / ".join(_unique(df, "timed_on.gl")) or "an unnamed GL renderer"
+    words = {"cpu_wall_clock": f"CPU backend on {cpu} (wall clock)",
+             "gl_timer_query": f"GL on {gl} (timer queries)",
+             "mixed": f"GL stages on {gl}, CPU stages on {cpu}"}
+    return " or ".join(words.get(c, c) for c in clocks)
 
 
 class SummaryError(Exception):
@@ -30,7 +75,7 @@ class SummaryError(Exception):
 
 
 def _numeric_prefixes():
-    return ("gpu_ms.", "wall_ms.", "metric.", "memory_bytes.", "work.", "gpu_work.")
+    return ("wall_ms.", "metric.", "memory_bytes.", "work.", "gpu_work.")
 
 
 def load_summary(path):
@@ -50,11 +95,14 @@ def load_summary(path):
         raise SummaryError(f"{path}: cannot parse CSV: {exc}")
     if df.empty:
         raise SummaryError(f"{path}: empty summary (header but no rows)")
+    # A summary written before stage times were labelled: the same times, no clock.
+    df = df.rename(columns={c: time_col(c[len(LEGACY_TIME_PREFIX):]) for c in df.columns
+                            if c.startswith(LEGACY_TIME_PREFIX)})
     missing = [c for c in ("config_id", "config_name") if c not in df.columns]
     if missing:
         raise SummaryError(f"{path}: missing column(s) {', '.join(missing)}")
     for c in df.columns:
-        if c.startswith(_numeric_prefixes()) or c in ("memory_bytes", "cells", "repeat"):
+        if c.startswith(_numeric_prefixes()) or is_time_col(c) or c in ("memory_bytes", "cells", "repeat"):
             df[c] = to_float(df[c])
     # Parameters: numeric where every value is numeric, otherwise strings.
     for c in param_columns(df):
@@ -149,13 +197,13 @@ def aggregate(df):
     """One row per configuration (ordered by first appearance).
 
     Columns: config_id, config_name, run_dir, repeats, param.*, median
-    gpu_ms.*/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant' and
+    time.*.ms/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant' and
     'label'. Timings are medians over repeats (NaN repeats ignored); metric.*,
     temporal.* and method.* figures their means (a sequence's frames differ; a
     static run's repeats share the run's); other columns take the first
     non-missing value of the configuration.
     """
-    timing = [c for c in df.columns if c.startswith(("gpu_ms.", "wall_ms."))]
+    timing = [c for c in df.columns if is_time_col(c) or c.startswith("wall_ms.")]
     rows = []
     for cid, g in df.groupby("config_id", sort=False):
         r = {"config_id": cid, "repeats": len(g)}

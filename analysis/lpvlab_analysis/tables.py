@@ -1,6 +1,6 @@
 """Ablation table: one row per configuration, best value of each metric in bold.
 
-Rows are sorted by median total GPU time (fastest first, ties by name), so
+Rows are sorted by median total frame time (fastest first, ties by name), so
 the table reads as "what each extra millisecond buys". Columns: config_name,
 variant, median total ms, median propagation ms, memory MB, then every
 metric.* column present. For each metric column the best value (lowest
@@ -19,8 +19,8 @@ def ablation_table(agg):
     t = pd.DataFrame({
         "config_name": agg["config_name"].astype(str),
         "variant": agg["variant"].astype(str),
-        "total ms": agg.get("gpu_ms.total", pd.Series([math.nan] * len(agg))).astype(float).values,
-        "propagation ms": agg.get("gpu_ms.propagation", pd.Series([math.nan] * len(agg))).astype(float).values,
+        "total ms": agg.get(S.TIME_COL, pd.Series([math.nan] * len(agg))).astype(float).values,
+        "propagation ms": agg.get(S.time_col("propagation"), pd.Series([math.nan] * len(agg))).astype(float).values,
         "memory MB": (agg["memory_bytes"].astype(float) / 2**20).values if "memory_bytes" in agg else math.nan,
     })
     metrics = S.metric_columns(agg)

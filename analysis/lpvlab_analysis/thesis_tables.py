@@ -13,6 +13,8 @@ implementation, gather (sběr) / scatter (rozptyl) = propagation scheme.
 import math
 from dataclasses import dataclass, field
 
+from . import summary as S
+
 
 @dataclass
 class ThesisTable:
@@ -22,7 +24,7 @@ class ThesisTable:
     x_param: str           # summary.csv parameter column it maps onto
     x_label: str
     x: list                # x values (RSM side length, or iteration count)
-    stage: str             # lpvlab stage whose gpu_ms is comparable
+    stage: str             # lpvlab stage whose time (time.<stage>.ms) is comparable
     columns: dict = field(default_factory=dict)   # name -> list of ms, same length as x
     applies_to: tuple = () # substrings of propagation.type or occlusion.type it matches ('' = any non-extension type)
 
@@ -154,7 +156,8 @@ def applicable_tables(agg):
         rows = agg
         if "param.propagation.type" in agg.columns and tab.stage == "propagation":
             rows = agg[[_type_matches(tab, v) for v in _methods(agg)]]
-        if len(rows) and f"gpu_ms.{tab.stage}" in rows.columns and rows[f"gpu_ms.{tab.stage}"].notna().any():
+        col = S.time_col(tab.stage)
+        if len(rows) and col in rows.columns and rows[col].notna().any():
             out.append((tab, rows))
     return out
 
@@ -165,7 +168,7 @@ def measured_series(tab, rows):
     One series per variant; when several configurations share a variant and x
     (other parameters varied too), their median is used.
     """
-    col = f"gpu_ms.{tab.stage}"
+    col = S.time_col(tab.stage)
     series = {}
     for variant, g in rows.groupby("variant", sort=True):
         m = g.groupby(tab.x_param)[col].median().dropna().sort_index()

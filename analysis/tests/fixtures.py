@@ -56,7 +56,8 @@ def make_sweep(root, with_exr=True, with_metrics=True):
     header = ["config_id", "config_name", "repeat", "run_dir",
               "param.injection.type", "param.propagation.type", "param.rendering.type",
               "param.grid.resolution", "param.propagation.iterations", "param.scene.file"]
-    header += [f"gpu_ms.{s}" for s in STAGES] + [f"wall_ms.{s}" for s in STAGES]
+    header += [f"time.{s}.ms" for s in STAGES] + [f"time.{s}.clock" for s in STAGES]
+    header += [f"wall_ms.{s}" for s in STAGES] + ["timed_on.gl", "timed_on.cpu"]
     header += ["memory_bytes", "cells"]
     if with_metrics:
         header += [f"metric.{p}.{m}" for p in PAIRS for m in METRICS]
@@ -81,7 +82,11 @@ def make_sweep(root, with_exr=True, with_metrics=True):
                 stage = {s: 1.0 + rep for s in STAGES}
                 stage["propagation"] = it * (2.0 if prop == "occlusion" else 1.0) + rep
                 stage["total"] = sum(v for s, v in stage.items() if s != "total")
-                r += [stage[s] for s in STAGES] + [stage[s] * 1.1 for s in STAGES]
+                # Propagation on the CPU backend, the rest on GL: the total sums both clocks.
+                clock = {s: "gl_timer_query" for s in STAGES}
+                clock["propagation"], clock["total"] = "cpu_wall_clock", "mixed"
+                r += [stage[s] for s in STAGES] + [clock[s] for s in STAGES]
+                r += [stage[s] * 1.1 for s in STAGES] + ["llvmpipe (LLVM 15.0.6, 256 bits)", "Test CPU 9000"]
                 r += [1048576 * (2 if prop == "occlusion" else 1), 32768]
                 if with_metrics:
                     err = 0.1 / it * (0.5 if prop == "occlusion" else 1.0)

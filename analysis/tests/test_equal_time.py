@@ -16,7 +16,7 @@ RMSE = "metric.indirect_vs_indirect1.rmse"
 def frame(rows, scene=None):
     """rows: (config_name, series, resolution, total ms, rmse)."""
     d = pd.DataFrame([{"config_id": f"{i:03d}", "config_name": n, "param.series": s,
-                       "param.grid.resolution": res, "gpu_ms.total": t, "gpu_ms.propagation": t / 2,
+                       "param.grid.resolution": res, "time.total.ms": t, "time.propagation.ms": t / 2,
                        RMSE: e} for i, (n, s, res, t, e) in enumerate(rows)])
     if scene is not None:
         d["param.scene.file"] = scene
@@ -160,8 +160,8 @@ class CompareTest(unittest.TestCase):
 class ReportSectionTest(unittest.TestCase):
     def _sweep(self, root, rows):
         os.makedirs(root, exist_ok=True)
-        lines = ["config_id,config_name,repeat,run_dir,param.series,param.grid.resolution,gpu_ms.total,"
-                 "gpu_ms.propagation,memory_bytes,cells,metric.indirect_vs_indirect1.rmse"]
+        lines = ["config_id,config_name,repeat,run_dir,param.series,param.grid.resolution,time.total.ms,"
+                 "time.propagation.ms,memory_bytes,cells,metric.indirect_vs_indirect1.rmse"]
         for i, (n, s, res, t, e) in enumerate(rows):
             lines.append(f"{i:03d},{n},0,{i:03d},{s},{res},{t},{t / 2},1000,{res ** 3},{e}")
         with open(os.path.join(root, "summary.csv"), "w") as f:

@@ -74,7 +74,7 @@ class RooflineTest(unittest.TestCase):
         for res in (16, 32):
             for it in (8, 16):
                 units = res ** 3 * it
-                rows.append({"config_name": f"{res}-{it}", "gpu_ms.propagation": 1.0,
+                rows.append({"config_name": f"{res}-{it}", "time.propagation.ms": 1.0,
                              "gpu_work.propagation.cell-iterations": units,
                              "gpu_work.propagation.multiply_adds": per_madd * units,
                              "gpu_work.propagation.bytes": per_byte * units,
@@ -108,7 +108,7 @@ class ThesisComparisonTest(unittest.TestCase):
             units = 16 ** 3 * it
             rows.append({"config_id": f"c{i}", "config_name": f"it{it}", "variant": "standard",
                          "param.propagation.type": "standard", "param.propagation.method": "gather",
-                         "param.propagation.iterations": it, "gpu_ms.propagation": float(it),
+                         "param.propagation.iterations": it, "time.propagation.ms": float(it),
                          "gpu_work.propagation.cell-iterations": units,
                          "gpu_work.propagation.multiply_adds": per_madd * units,
                          "gpu_work.propagation.bytes": per_byte * units})
@@ -142,7 +142,7 @@ class ThesisComparisonTest(unittest.TestCase):
                              "variant": f"rsm_vpl/none/standard ({method})",
                              "param.injection.type": "rsm_vpl", "param.propagation.type": "standard",
                              "param.propagation.method": method,
-                             "param.light_maps.rsm_resolution": side, "gpu_ms.injection": 1.0,
+                             "param.light_maps.rsm_resolution": side, "time.injection.ms": 1.0,
                              "gpu_work.injection.VPLs": units,
                              "gpu_work.injection.multiply_adds": 26.0 * units,
                              "gpu_work.injection.bytes": 176.0 * units})
@@ -177,7 +177,7 @@ class ReportSectionTest(unittest.TestCase):
 
     def test_the_report_labels_the_estimate(self):
         from lpvlab_analysis import report
-        df = pd.DataFrame([{"config_name": "a", "gpu_ms.propagation": 12.5,
+        df = pd.DataFrame([{"config_name": "a", "time.propagation.ms": 12.5,
                             "gpu_work.propagation.multiply_adds": 1e9, "gpu_work.propagation.bytes": 1e6}])
         html, md = report._gpu_estimate_section(df, [_gpu(1e12, 100e9)])
         text = "\n".join(html)

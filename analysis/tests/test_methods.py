@@ -28,7 +28,7 @@ def frame():
     out = []
     for i, (name, method, series, res, t, e, figures) in enumerate(rows):
         r = {"config_id": f"{i:03d}", "config_name": name, "param.indirect.method": method,
-             "param.series": series, "param.grid.resolution": res, "gpu_ms.total": t, RMSE: e,
+             "param.series": series, "param.grid.resolution": res, "time.total.ms": t, RMSE: e,
              "param.propagation.type": "standard" if method == "lpv" else math.nan}
         r.update(figures)
         out.append(r)
@@ -89,12 +89,12 @@ class MethodsTest(unittest.TestCase):
 
     def test_a_sequences_figures_are_its_frames_mean(self):
         rows = [{"config_id": "a", "config_name": "seq", "repeat": f, "param.indirect.method": "lpv",
-                 "gpu_ms.total": 10.0 + f, RMSE: [0.1, 0.2, 0.6][f], "method.coverage": [1.0, 2.0, 3.0][f]}
+                 "time.total.ms": 10.0 + f, RMSE: [0.1, 0.2, 0.6][f], "method.coverage": [1.0, 2.0, 3.0][f]}
                 for f in range(3)]
         agg = S.aggregate(pd.DataFrame(rows))
         self.assertAlmostEqual(agg[RMSE][0], 0.3)
         self.assertAlmostEqual(agg["method.coverage"][0], 2.0)
-        self.assertEqual(agg["gpu_ms.total"][0], 11.0)  # timings: the median
+        self.assertEqual(agg["time.total.ms"][0], 11.0)  # timings: the median
 
     def test_report_has_the_section_only_with_methods(self):
         with tempfile.TemporaryDirectory() as tmp:

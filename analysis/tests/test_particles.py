@@ -25,7 +25,7 @@ def frame():
     out = []
     for i, (name, draw, alive, t, e) in enumerate(rows):
         out.append({"config_id": f"{i:03d}", "config_name": name, P.DRAW_COL: draw,
-                    P.ALIVE_COL: alive, P.TRIANGLES_COL: alive * 8, "gpu_ms.total": t, RMSE: e})
+                    P.ALIVE_COL: alive, P.TRIANGLES_COL: alive * 8, "time.total.ms": t, RMSE: e})
     return pd.DataFrame(out)
 
 
@@ -40,10 +40,10 @@ def resolution_frame():
                 out.append({"config_id": f"{len(out):03d}", "config_name": name, P.DRAW_COL: "light_field",
                             P.AZIMUTHS_COL: views[0], P.ELEVATIONS_COL: views[1], P.INTERPOLATE_COL: interpolate,
                             P.RESOLUTION_COL: texels, P.ALIVE_COL: 12000.0, P.TRIANGLES_COL: 96000.0,
-                            "gpu_ms.total": 1000.0 + texels * (2 if interpolate else 1),
+                            "time.total.ms": 1000.0 + texels * (2 if interpolate else 1),
                             RMSE: 0.05 + 0.1 / texels / views[0]})
     out.append({"config_id": "999", "config_name": "geometry", P.DRAW_COL: "geometry", P.ALIVE_COL: 12000.0,
-                P.TRIANGLES_COL: 96000.0, "gpu_ms.total": 300.0, RMSE: 0.055})
+                P.TRIANGLES_COL: 96000.0, "time.total.ms": 300.0, RMSE: 0.055})
     return pd.DataFrame(out)
 
 

@@ -30,7 +30,7 @@ def frame():
     out = []
     for i, (name, method, series, t, e, figures) in enumerate(rows):
         r = {"config_id": f"{i:03d}", "config_name": name, "param.indirect.method": method,
-             "param.series": series, "gpu_ms.total": t, RMSE: e}
+             "param.series": series, "time.total.ms": t, RMSE: e}
         r.update(figures)
         out.append(r)
     return pd.DataFrame(out)

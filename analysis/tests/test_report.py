@@ -51,6 +51,10 @@ class ReportTest(unittest.TestCase):
             self.assertIn("img/reference_0.png", page)
             self.assertIn("img/result_000.png", page)
         self.assertIn("../000/error_indirect.png", page)
+        # Issue 35: times are named by their clock and where they ran, never all called GPU times.
+        self.assertNotIn("GPU timestamp", page)
+        self.assertIn("each stage by its own clock: GL stages on llvmpipe (LLVM 15.0.6, 256 bits), "
+                      "CPU stages on Test CPU 9000", page)
 
     def test_several_sweeps_in_one_report(self):
         other = make_sweep(os.path.join(self.tmp.name, "second"))

@@ -25,15 +25,33 @@ class SummaryTest(unittest.TestCase):
         # three repeats with an outlier: median ignores it
         p = os.path.join(self.dir, "s.csv")
         with open(p, "w") as f:
-            f.write("config_id,config_name,repeat,run_dir,param.propagation.type,gpu_ms.total,memory_bytes,metric.indirect_vs_indirect1.rmse\n")
+            f.write("config_id,config_name,repeat,run_dir,param.propagation.type,time.total.ms,memory_bytes,metric.indirect_vs_indirect1.rmse\n")
             f.write("a,A,0,a,standard,1.0,10,0.5\na,A,1,a,standard,100.0,10,0.5\na,A,2,a,standard,3.0,10,0.5\n")
             f.write("b,B,0,b,occlusion,4.0,20,inf\nb,B,1,b,occlusion,6.0,20,inf\n")
         agg = S.aggregate(S.load_summary(p))
         self.assertEqual(list(agg["config_id"]), ["a", "b"])
-        self.assertEqual(list(agg["gpu_ms.total"]), [3.0, 5.0])
+        self.assertEqual(list(agg["time.total.ms"]), [3.0, 5.0])
         self.assertEqual(list(agg["repeats"]), [3, 2])
         self.assertTrue(math.isinf(agg["metric.indirect_vs_indirect1.rmse"].iloc[1]))
         self.assertEqual(list(agg["variant"]), ["standard", "occlusion"])
+
+    def test_times_say_their_clock_and_where_they_ran(self):
+        # Issue 35: a CPU stage's time is no GPU time. The fixture's propagation ran on the CPU
+        # backend and the rest on GL, so its total sums both clocks.
+        agg = S.aggregate(S.load_summary(os.path.join(self.dir, "summary.csv")))
+        self.assertEqual(S.timed_on(agg, "propagation"), "CPU backend on Test CPU 9000 (wall clock)")
+        self.assertEqual(S.timed_on(agg, "rsm"), "GL on llvmpipe (LLVM 15.0.6, 256 bits) (timer queries)")
+        self.assertEqual(S.timed_on(agg), "GL stages on llvmpipe (LLVM 15.0.6, 256 bits), CPU stages on Test CPU 9000")
+        # A summary.csv written before times were labelled: its gpu_ms.* are read as times whose
+        # clock nobody recorded, and said so.
+        p = os.path.join(self.dir, "old.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,gpu_ms.total,gpu_ms.propagation\n")
+            f.write("a,A,0,a,2.0,1.0\n")
+        old = S.aggregate(S.load_summary(p))
+        self.assertEqual(old["time.total.ms"].iloc[0], 2.0)
+        self.assertEqual(old["time.propagation.ms"].iloc[0], 1.0)
+        self.assertIn("clock not recorded", S.timed_on(old))
 
     def test_memory_groups_are_numeric(self):
         p = os.path.join(self.dir, "m.csv")
@@ -48,7 +66,7 @@ class SummaryTest(unittest.TestCase):
         agg = S.aggregate(S.load_summary(os.path.join(self.dir, "summary.csv")))
         self.assertEqual(len(agg), 6)
         # propagation at rep 0 = it*f, rep 1 = it*f+1 -> median it*f+0.5
-        self.assertAlmostEqual(agg["gpu_ms.propagation"].iloc[2], 16.5)
+        self.assertAlmostEqual(agg["time.propagation.ms"].iloc[2], 16.5)
         self.assertEqual(S.swept_params(agg), ["param.propagation.type", "param.propagation.iterations"])
         self.assertEqual(agg["variant"].iloc[0], "rsm_vpl/standard/trilinear")
         self.assertIn("propagation.iterations=4", agg["label"].iloc[1])

@@ -14,7 +14,7 @@ def _agg(text):
     return S.aggregate(S.load_summary(p))
 
 
-CSV = ("config_id,config_name,repeat,run_dir,param.propagation.type,gpu_ms.total,gpu_ms.propagation,memory_bytes,"
+CSV = ("config_id,config_name,repeat,run_dir,param.propagation.type,time.total.ms,time.propagation.ms,memory_bytes,"
        "metric.indirect_vs_indirect1.rmse,metric.indirect_vs_indirect1.psnr\n"
        "a,slow,0,a,standard,9.0,5,1048576,0.1,30\n"
        "b,fast,0,b,standard,1.0,0.5,2097152,0.3,inf\n"

@@ -1,6 +1,7 @@
 #pragma once
 // The subcommands behind lpvlab's CLI; each returns the process exit code.
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -27,11 +28,18 @@ struct Options {
   std::string metric;                     // report: the error metric of the speed/accuracy plot
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
   std::string reportOut;                  // report: where it goes ("": DIR/report)
-  bool force = false;                     // run, fit: replace a finished run or fit in --out
+  bool force = false;                     // run, fit, sweep: replace a finished run, fit or other sweep in --out
 };
 
 // "compute: BACKEND; on the CPU: [direct, ]TABLES" from a Pipeline::computeReport().
 std::string computeLine(const nlohmann::json& compute);
+// How a stage's time was taken, for the console: "GL timer query" or "CPU wall clock" (a
+// TimingReport's clock name; "mixed" for a total over both).
+std::string clockLabel(const std::string& clock);
+// "times: GL timer queries on RENDERER (stages); CPU wall clock on CPU (stages)" from a
+// TimingReport's clock map (total left out).
+std::string clocksLine(const std::map<std::string, std::string>& clock, const std::string& renderer,
+                       const std::string& cpu);
 
 int runCommand(const Options& options);
 int benchCommand(const Options& options);

@@ -1,4 +1,5 @@
-// The one line the run and bench commands print about where the strategies' kernels run.
+// The lines the run and bench commands print about where the strategies' kernels run and how
+// each stage was timed.
 
 #include "framework/cli/commands.h"
 
@@ -11,6 +12,26 @@ std::string computeLine(const nlohmann::json& compute) {
     if (where == "cpu") onCpu += (onCpu.empty() ? "" : ", ") + table;
   return "compute: " + compute.value("backend", std::string("?")) +
          (onCpu.empty() ? "; every strategy on GL" : "; on the CPU: " + onCpu);
+}
+
+std::string clockLabel(const std::string& clock) {
+  if (clock == "gl_timer_query") return "GL timer query";
+  if (clock == "cpu_wall_clock") return "CPU wall clock";
+  return clock == "mixed" ? "sum over both clocks" : clock;
+}
+
+std::string clocksLine(const std::map<std::string, std::string>& clock, const std::string& renderer,
+                       const std::string& cpu) {
+  std::string gl, host;
+  for (const auto& [stage, name] : clock) {
+    if (stage == "total") continue;
+    std::string& list = name == "cpu_wall_clock" ? host : gl;
+    list += (list.empty() ? "" : ", ") + stage;
+  }
+  std::string line = "times:";
+  if (!gl.empty()) line += " GL timer queries on " + renderer + " (" + gl + ")";
+  if (!host.empty()) line += std::string(gl.empty() ? "" : ";") + " CPU wall clock on " + cpu + " (" + host + ")";
+  return line;
 }
 
 }  // namespace lpvlab::cli

@@ -64,10 +64,16 @@ int fitCommand(const Options& options) {
   }
   const std::string key = fitKey(spec);
   bool otherFit = false;
-  const std::optional<FitProgress> resume = readFitProgress(progressPath, key, &otherFit);
-  if (resume)
-    std::cerr << "lpvlab: fit: resuming after iteration " << resume->log.back().iteration << " from "
-              << progressPath << " (delete it to start over)\n";
+  std::optional<FitProgress> resume = readFitProgress(progressPath, key, &otherFit);
+  if (resume && !resume->log.empty()) {
+    const int stopped = resume->log.back().iteration;
+    resume = resumePoint(*resume);  // after the last accepted step (fit_problem.h)
+    std::cerr << "lpvlab: fit: resuming after iteration " << resume->log.back().iteration
+              << (resume->log.back().iteration < stopped
+                      ? " (the last accepted step; the rejected ones after it are done again)"
+                      : "")
+              << " from " << progressPath << " (delete it to start over)\n";
+  }
   else if (otherFit)
     std::cerr << "lpvlab: fit: " << progressPath << " is another fit's progress (the file or its "
               << "overrides changed): starting over\n";

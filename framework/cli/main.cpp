@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
   sweep->add_option("-o,--out", options.out, "Sweep directory (default: runs/<file stem>-sweep)");
   sweep->add_option("-j,--jobs", options.jobs, "Configurations run in parallel (child processes)")
       ->check(CLI::Range(1, 1024));
+  sweep->add_flag("--force", options.force,
+                  "Replace another sweep in the sweep directory (its runs are removed first)");
   sweep->add_option("-s,--set", options.overrides,
                     "Override one parameter of every configuration (repeatable)");
   sweep

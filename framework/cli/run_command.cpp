@@ -80,12 +80,22 @@ int runCommand(const Options& options) {
   if (manifest.contains("warnings"))  // also in the manifest, summary.csv and the report
     for (const auto& warning : manifest["warnings"])
       std::cerr << "lpvlab: warning: " << warning.get<std::string>() << "\n";
-  const auto& gpu = manifest["timing"]["gpu_ms"];
-  std::cout << "stage         gpu median ms  (q1-q3)\n";
-  for (const auto& [stage, summary] : gpu.items())
+  // Each stage's time by its own clock, named on its row: a CPU stage's is not a GPU time.
+  const auto& timing = manifest["timing"];
+  const std::map<std::string, std::string> clock = timing.value("clock", std::map<std::string, std::string>{});
+  std::cout << clocksLine(clock, manifest["libraries"].value("gl_renderer", std::string("?")),
+                          manifest["host"].value("cpu", std::string("?")))
+            << "\n";
+  std::cout << "stage         median ms  (q1-q3)          clock\n";
+  for (const auto& [stage, summary] : timing["stage_ms"].items()) {
+    std::ostringstream spread;
+    spread << std::fixed << std::setprecision(3) << "(" << summary["q1"].get<double>() << "-"
+           << summary["q3"].get<double>() << ")";
     std::cout << std::left << std::setw(14) << stage << std::right << std::fixed
-              << std::setprecision(3) << std::setw(10) << summary["median"].get<double>() << "  ("
-              << summary["q1"].get<double>() << "-" << summary["q3"].get<double>() << ")\n";
+              << std::setprecision(3) << std::setw(9) << summary["median"].get<double>() << "  "
+              << std::left << std::setw(22) << spread.str() << std::right << " "
+              << clockLabel(clock.count(stage) ? clock.at(stage) : "") << "\n";
+  }
   if (manifest.contains("propagation_cell_iterations_per_second"))
     std::cout << "propagation throughput: " << std::scientific << std::setprecision(3)
               << manifest["propagation_cell_iterations_per_second"].get<double>()

@@ -68,6 +68,67 @@ pid_t startRun(const std::string& exe, const std::string& config, const std::str
   return pid;
 }
 
+// "FILE -s a=1 -s b=2": where a sweep came from, for the error that refuses another one.
+std::string sourceText(const std::string& file, const std::vector<std::string>& overrides) {
+  std::string text = file;
+  for (const std::string& o : overrides) text += " -s " + o;
+  return text;
+}
+
+// A sweep directory holds one sweep: resuming there is only for the sweep whose hash sweep.json
+// records (another file, another -s, a changed base value or include all change it), or the
+// summary would mix two sweeps' runs and a finished configuration could stand for a changed one.
+// --force removes the old sweep's files (those its sweep.json names) first.
+void resumeOnlyTheSameSweep(const fs::path& dir, const std::string& hash, const std::string& file,
+                            const Options& options) {
+  const fs::path indexPath = dir / "sweep.json";
+  if (!fs::exists(indexPath)) return;
+  nlohmann::json old;
+  try {
+    old = nlohmann::json::parse(std::ifstream(indexPath));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(indexPath.string() + ": not what lpvlab writes there (" + e.what() +
+                "); choose another --out");
+  }
+  const std::string oldHash = old.is_object() ? old.value("sweep_hash", "") : "";
+  if (oldHash == hash) return;
+  if (!options.force) {
+    std::vector<std::string> oldOverrides;
+    if (old.is_object() && old.contains("overrides") && old["overrides"].is_array())
+      for (const auto& o : old["overrides"])
+        if (o.is_string()) oldOverrides.push_back(o.get<std::string>());
+    const std::string oldFile =
+        old.is_object() ? old.value("experiment_file", std::string("?")) : std::string("?");
+    throw Error(std::string(options.out.empty() ? "sweep directory " : "--out ") + dir.string() +
+                ": holds another sweep (" + sourceText(oldFile, oldOverrides) + ", sweep hash " +
+                (oldHash.empty() ? std::string("not recorded") : oldHash) + "), not this one (" +
+                sourceText(fs::absolute(file).lexically_normal().string(), options.overrides) +
+                ", sweep hash " + hash + "); choose a new --out, or --force to replace it");
+  }
+  if (old.is_object() && old.contains("configurations") && old["configurations"].is_array())
+    for (const auto& c : old["configurations"]) {
+      const std::string id = c.is_object() ? c.value("id", "") : "";
+      if (!id.empty() && id.find('/') == std::string::npos && id != "." && id != "..")
+        fs::remove_all(dir / id);
+    }
+  for (const char* name : {"configs", "logs", "report"}) fs::remove_all(dir / name);
+  for (const char* name : {"summary.csv", "sweep.json", "sweep.slurm", "references.slurm", "submit.sh"})
+    fs::remove(dir / name);
+  std::cerr << "lpvlab: sweep: --force: removed the sweep that was in " << dir.string() << "\n";
+}
+
+// What a summary left out, by name and why: every directory that gave no row.
+void reportSkipped(const std::string& dir, const SummaryResult& summary) {
+  const auto at = [&](const std::string& id) { return (fs::path(dir) / id).string(); };
+  for (const std::string& id : summary.incomplete)
+    std::cerr << "lpvlab: " << at(id) << ": incomplete (no manifest.json), skipped\n";
+  for (const auto& [id, why] : summary.dropped)
+    std::cerr << "lpvlab: warning: " << at(id) << ": no rows: " << why << "\n";
+  for (const std::string& id : summary.foreign)
+    std::cerr << "lpvlab: warning: " << at(id) << ": not a configuration of this sweep "
+              << "(sweep.json), skipped\n";
+}
+
 }  // namespace
 
 int sweepCommand(const Options& options) {
@@ -89,9 +150,12 @@ int sweepCommand(const Options& options) {
                 ": holds a single run (manifest.json), not a sweep; choose another directory");
   if (options.emit == "slurm") checkSlurmResources(options.slurm);
   const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
+  const std::string hash = sweepHash(root, file);
+  resumeOnlyTheSameSweep(dir, hash, file, options);
 
   fs::create_directories(dir / "configs");
   nlohmann::json index = {{"experiment_file", fs::absolute(file).lexically_normal().string()},
+                          {"sweep_hash", hash},
                           {"overrides", options.overrides},
                           {"swept_keys", keys},
                           {"configurations", nlohmann::json::array()}};
@@ -167,6 +231,7 @@ int sweepCommand(const Options& options) {
   progress.finish(detail());
 
   const SummaryResult summary = writeSweepSummary(dir.string());
+  reportSkipped(dir.string(), summary);
   std::cout << "wrote " << (dir / "summary.csv").string() << ": " << summary.rows << " rows from "
             << summary.complete.size() << " runs\n";
   if (!failed.empty()) {
@@ -188,9 +253,7 @@ int summaryCommand(const Options& options) {
                 "--out DIR` writes)" +
                 (fs::exists(dir / "manifest.json") ? "; it holds a single run's manifest.json" : ""));
   const SummaryResult summary = writeSweepSummary(options.out);
-  for (const std::string& id : summary.incomplete)
-    std::cerr << "lpvlab: " << (fs::path(options.out) / id).string()
-              << ": incomplete (no manifest.json), skipped\n";
+  reportSkipped(options.out, summary);
   std::cout << "wrote " << (fs::path(options.out) / "summary.csv").string() << ": " << summary.rows
             << " rows from " << summary.complete.size() << " runs\n";
   return 0;

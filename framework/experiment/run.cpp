@@ -16,34 +16,40 @@ namespace lpvlab {
 
 nlohmann::json TimingReport::toJson() const {
   nlohmann::json out = {{"warmup_frames", warmupFrames}, {"repeats", repeats}};
-  for (const auto& [stage, summary] : gpuMs) out["gpu_ms"][stage] = summary.toJson();
+  for (const auto& [stage, summary] : stageMs) out["stage_ms"][stage] = summary.toJson();
   for (const auto& [stage, summary] : wallMs) out["wall_ms"][stage] = summary.toJson();
-  out["samples"] = {{"gpu_ms", gpuSamples}, {"wall_ms", wallSamples}};
+  out["clock"] = clock;
+  out["samples"] = {{"stage_ms", stageSamples}, {"wall_ms", wallSamples}};
   return out;
 }
 
 TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup) {
-  std::map<std::string, std::vector<double>> gpu, wall;
-  for (const FrameTimes& times : frames) {
-    double gpuTotal = 0.0, wallTotal = 0.0;
-    for (const auto& [stage, ms] : times.gpuMs) gpu[stage].push_back(ms), gpuTotal += ms;
-    for (const auto& [stage, ms] : times.wallMs) wall[stage].push_back(ms), wallTotal += ms;
-    gpu["total"].push_back(gpuTotal);
-    wall["total"].push_back(wallTotal);
-  }
+  std::map<std::string, std::vector<double>> byStage, wall;
   TimingReport report;
+  for (const FrameTimes& times : frames) {
+    double stageTotal = 0.0, wallTotal = 0.0;
+    for (const auto& [stage, ms] : times.stageMs) byStage[stage].push_back(ms), stageTotal += ms;
+    for (const auto& [stage, ms] : times.wallMs) wall[stage].push_back(ms), wallTotal += ms;
+    byStage["total"].push_back(stageTotal);
+    wall["total"].push_back(wallTotal);
+    for (const auto& [stage, clock] : times.clock) report.clock[stage] = clock;
+  }
+  // The total adds the stages' times; it is one clock's only when every stage's is.
+  std::string total;
+  for (const auto& [stage, clock] : report.clock) total = total.empty() || total == clock ? clock : "mixed";
+  if (!total.empty()) report.clock["total"] = total;
   report.warmupFrames = warmup;
   report.repeats = int(frames.size());
-  for (auto& [stage, samples] : gpu) report.gpuMs[stage] = summarize(samples);
+  for (auto& [stage, samples] : byStage) report.stageMs[stage] = summarize(samples);
   for (auto& [stage, samples] : wall) report.wallMs[stage] = summarize(samples);
-  report.gpuSamples = std::move(gpu);
+  report.stageSamples = std::move(byStage);
   report.wallSamples = std::move(wall);
   return report;
 }
 
-double medianGpuMs(const TimingReport& timing, const std::string& stage) {
-  const auto found = timing.gpuMs.find(stage);
-  return found == timing.gpuMs.end() ? 0.0 : found->second.median;
+double medianStageMs(const TimingReport& timing, const std::string& stage) {
+  const auto found = timing.stageMs.find(stage);
+  return found == timing.stageMs.end() ? 0.0 : found->second.median;
 }
 
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {
@@ -73,7 +79,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
 
   const std::string hash = sceneHash(experiment.scene);
   nlohmann::json manifest =
-      describeRun(experiment, context, pipeline, hash, medianGpuMs(timing, "propagation"));
+      describeRun(experiment, context, pipeline, hash, medianStageMs(timing, "propagation"));
   manifest["timing"] = timing.toJson();
   if (balance) manifest["injection_flux_W"] = injectionFluxJson(*balance);
   manifest["outputs"] = {

@@ -23,16 +23,20 @@ namespace lpvlab {
 struct TimingReport {
   int warmupFrames = 0;
   int repeats = 0;
-  std::map<std::string, Summary> gpuMs, wallMs;  // per stage, plus "total"
-  std::map<std::string, std::vector<double>> gpuSamples, wallSamples;  // per repeat, in order
+  // Per stage, plus "total" (their sum): stageMs by each stage's clock, wallMs by the steady one.
+  std::map<std::string, Summary> stageMs, wallMs;
+  std::map<std::string, std::vector<double>> stageSamples, wallSamples;  // per repeat, in order
+  // Per stage: kGlTimerQuery or kCpuWallClock (pipeline.h); "total": theirs when all agree, else
+  // "mixed".
+  std::map<std::string, std::string> clock;
   nlohmann::json toJson() const;
 };
 
 // The timings of `frames` (in order) summarised per stage, after `warmup` untimed frames.
 TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup);
-// A stage's median device time (ms), 0 when the run has no such stage (another indirect method
-// has no "propagation").
-double medianGpuMs(const TimingReport& timing, const std::string& stage);
+// A stage's median time by its clock (ms), 0 when the run has no such stage (another indirect
+// method has no "propagation").
+double medianStageMs(const TimingReport& timing, const std::string& stage);
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
 

@@ -206,10 +206,12 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
           {"host", hostInfo()},
           {"compute", pipeline.computeReport()},
           {"timing_method",
-           {{"gpu",
-             "GL timestamp queries around each stage; for a stage on the CPU "
-             "backend (see compute) its wall time"},
-            {"wall", "steady clock, each stage ended by glFinish"}}},
+           {{"stage",
+             "timing.stage_ms: each stage by its clock, timing.clock: gl_timer_query = GL "
+             "timestamp queries around the stage's GL work, on libraries.gl_renderer; "
+             "cpu_wall_clock = the steady clock around a stage whose strategies run on the CPU "
+             "backend (see compute), on host.cpu, its transfers to and from GL included"},
+            {"wall", "timing.wall_ms: steady clock around each stage, ended by glFinish"}}},
           {"propagation_cell_iterations_per_second",
            propagationMs > 0.0
                ? double(pipeline.propagatedCells()) * iterations / (propagationMs * 1e-3)

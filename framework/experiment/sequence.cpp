@@ -45,7 +45,12 @@ nlohmann::json readFrameRecord(const fs::path& path) {
 
 FrameTimes frameTimesOf(const nlohmann::json& record) {
   FrameTimes times;
-  for (const auto& [stage, ms] : record.at("gpu_ms").items()) times.gpuMs[stage] = ms.get<double>();
+  // "gpu_ms": records written before stage times were labelled by their clock (2026-11) named
+  // them so, whatever the clock; they have no stage_clock.
+  const nlohmann::json& stageMs = record.contains("stage_ms") ? record.at("stage_ms") : record.at("gpu_ms");
+  for (const auto& [stage, ms] : stageMs.items()) times.stageMs[stage] = ms.get<double>();
+  if (const auto* clock = findPath(record, "stage_clock"); clock && clock->is_object())
+    for (const auto& [stage, name] : clock->items()) times.clock[stage] = name.get<std::string>();
   for (const auto& [stage, ms] : record.at("wall_ms").items())
     times.wallMs[stage] = ms.get<double>();
   return times;
@@ -97,6 +102,43 @@ void writeVideo(const fs::path& dir, int frames, double fps) {
                 "); the frames are in " + (dir / "frames").string());
   }
   fs::rename(temporary, dir / "video.mp4");
+}
+
+// "0-3, 7, 9-10": frame numbers (ascending) as ranges.
+std::string frameRanges(const std::vector<int>& frames) {
+  std::string text;
+  for (std::size_t i = 0; i < frames.size();) {
+    std::size_t j = i;
+    while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+    text += (text.empty() ? "" : ", ") + std::to_string(frames[i]) +
+            (j > i ? "-" + std::to_string(frames[j]) : "");
+    i = j + 1;
+  }
+  return text;
+}
+
+// The frames' warnings for the manifest: each distinct one once, with the frames it holds for
+// ("every frame: ..." or "frames 0-3, 7: ..."), in the order they first appear.
+std::vector<std::string> sequenceWarnings(const std::vector<nlohmann::json>& records) {
+  std::vector<std::pair<std::string, std::vector<int>>> byWarning;
+  for (std::size_t frame = 0; frame < records.size(); ++frame) {
+    const auto* warnings = findPath(records[frame], "warnings");
+    if (!warnings || !warnings->is_array()) continue;
+    for (const auto& w : *warnings) {
+      if (!w.is_string()) continue;
+      auto it = std::find_if(byWarning.begin(), byWarning.end(),
+                             [&](const auto& entry) { return entry.first == w.get<std::string>(); });
+      if (it == byWarning.end()) it = byWarning.insert(byWarning.end(), {w.get<std::string>(), {}});
+      it->second.push_back(int(frame));
+    }
+  }
+  std::vector<std::string> out;
+  for (const auto& [warning, frames] : byWarning)
+    out.push_back((frames.size() == records.size() ? std::string("every frame: ")
+                   : frames.size() == 1           ? "frame " + frameRanges(frames) + ": "
+                                                  : "frames " + frameRanges(frames) + ": ") +
+                  warning);
+  return out;
 }
 
 }  // namespace
@@ -228,7 +270,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                                {"vertical_fov_deg", glm::degrees(experiment.camera.verticalFov)}}},
                              {"scene_hash", hash},
                              {"configuration_hash", configuration},
-                             {"gpu_ms", times.gpuMs},
+                             {"stage_ms", times.stageMs},
+                             {"stage_clock", times.clock},
                              {"wall_ms", times.wallMs},
                              {"png_exposure_stops", *exposure}};
     for (std::size_t s = 0; s < aliveParticles.size(); ++s)
@@ -237,6 +280,13 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
     // and insertions differ from frame to frame).
     if (const IndirectMethod* method = pipeline.strategies().method.get())
       record["indirect_method"] = method->statistics();
+    // A frame that is black, or whose solve stopped short, is flagged as a static run is
+    // (resultWarnings reads the figures a static manifest has where it finds them).
+    nlohmann::json figures = nlohmann::json::object();
+    if (record.contains("indirect_method"))
+      figures["indirect_method"]["statistics"] = record["indirect_method"];
+    if (const std::vector<std::string> warnings = resultWarnings(aovs, figures); !warnings.empty())
+      record["warnings"] = warnings;
     FrameState state{experiment.camera, hash, aovs, {}};
     if (experiment.compareWithReference) {
       state.reference = frameReference(frame);
@@ -278,7 +328,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   const TimingReport timing = timingReport(times, experiment.warmupFrames);
   nlohmann::json manifest =
       describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
-                  medianGpuMs(timing, "propagation"));
+                  medianStageMs(timing, "propagation"));
   manifest["timing"] = timing.toJson();
   manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
   manifest["sequence"] = {{"frames", animation.frames},
@@ -301,6 +351,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
       {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"},
       {"png_exposure_stops", records.front().at("png_exposure_stops")}};
   if (video) manifest["outputs"]["video"] = "video.mp4";
+  if (const std::vector<std::string> warnings = sequenceWarnings(records); !warnings.empty())
+    manifest["warnings"] = warnings;
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }

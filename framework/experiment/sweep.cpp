@@ -100,6 +100,20 @@ toml::table readChain(const std::string& path, std::vector<std::string>& stack, 
   return table;
 }
 
+// The TOML text a configuration runs with: `root` (extends merged) without its [sweep] table,
+// `overrides` applied, relative scene files made absolute. Both its id and its configs/<id>.toml
+// come from this one text.
+std::string resolvedText(const toml::table& root, const std::string& file,
+                         const std::vector<std::string>& overrides) {
+  toml::table table = root;
+  table.erase("sweep");
+  for (const std::string& o : overrides) applyOverride(table, o);
+  absolutizeSceneFile(table, file);
+  std::ostringstream s;
+  s << toml::toml_formatter(table);
+  return s.str();
+}
+
 // One swept list: its dotted key and values.
 struct SweptList {
   std::string key;
@@ -301,9 +315,9 @@ std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::
         c.name += (c.name.empty() ? "" : ",") + label(list->key) + "=" + list->plain[index];
       }
       if (c.name.empty()) c.name = "base";
-      Hasher h;
-      for (const std::string& o : c.overrides) h.text(o).text("\n");
-      c.id = shortId(h.digest());
+      // The id is the hash of everything the configuration runs with, not of its swept values
+      // alone: a changed base value (or -s) is another configuration, never a finished one.
+      c.id = shortId(Hasher().text(resolvedText(root, file, c.overrides)).digest());
       out.push_back(std::move(c));
     }
   }
@@ -343,16 +357,20 @@ std::vector<std::string> checkConfigurations(
 }
 
 std::string configurationToml(const std::string& file, const SweepConfiguration& configuration) {
-  toml::table root = readExperimentTable(file);
-  root.erase("sweep");
-  for (const std::string& o : configuration.overrides) applyOverride(root, o);
-  absolutizeSceneFile(root, file);
   std::ostringstream s;
   s << "# lpvlab sweep configuration " << configuration.id << " (" << configuration.name
     << ") of " << fs::absolute(file).lexically_normal().string() << "\n";
   for (const std::string& o : configuration.overrides) s << "# override: " << o << "\n";
-  s << "\n" << toml::toml_formatter(root) << "\n";
+  s << "\n" << resolvedText(readExperimentTable(file), file, configuration.overrides) << "\n";
   return s.str();
+}
+
+std::string sweepHash(const toml::table& root, const std::string& file) {
+  toml::table resolved = root;
+  absolutizeSceneFile(resolved, file);
+  std::ostringstream s;
+  s << toml::toml_formatter(resolved);
+  return Hasher().text(s.str()).hex();
 }
 
 namespace {
@@ -391,6 +409,13 @@ std::map<std::string, double> workColumns(const nlohmann::json& manifest) {
   return columns;
 }
 
+// A manifest's per-repeat stage times (timing.samples.stage_ms; "gpu_ms" in manifests written
+// before stage times were labelled by their clock, which have no timing.clock), or nullptr.
+const nlohmann::json* stageSamples(const nlohmann::json& manifest) {
+  if (const auto* s = findPath(manifest, "timing.samples.stage_ms")) return s;
+  return findPath(manifest, "timing.samples.gpu_ms");
+}
+
 // summarise's body: `reading` names the file whose values it reads, for the error when one has
 // an unexpected structure (a string where a number belongs, say: nlohmann's type errors).
 SummaryResult summarise(const std::string& dir, std::string& reading) {
@@ -398,13 +423,14 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   if (!fs::is_directory(root)) throw Error(dir + ": not a directory");
   std::vector<std::string> swept;
   std::map<std::string, std::string> names;
-  if (fs::exists(root / "sweep.json")) {
-    reading = (root / "sweep.json").string();
-    const nlohmann::json index = readJson(root / "sweep.json");
-    for (const auto& k : index.value("swept_keys", nlohmann::json::array())) swept.push_back(k.get<std::string>());
-    for (const auto& c : index.value("configurations", nlohmann::json::array()))
-      names[c.value("id", "")] = c.value("name", "");
-  }
+  if (!fs::exists(root / "sweep.json"))
+    throw Error(dir + ": not a sweep directory (no sweep.json, which `lpvlab sweep FILE --out DIR` "
+                "writes)");
+  reading = (root / "sweep.json").string();
+  const nlohmann::json index = readJson(root / "sweep.json");
+  for (const auto& k : index.value("swept_keys", nlohmann::json::array())) swept.push_back(k.get<std::string>());
+  for (const auto& c : index.value("configurations", nlohmann::json::array()))
+    names[c.value("id", "")] = c.value("name", "");
   const std::vector<std::string> fixed = {"indirect.method",  "injection.type",   "occlusion.type",
                                           "propagation.type", "rendering.type",
                                           "grid.resolution",  "grid.sh_order",
@@ -423,11 +449,24 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   std::sort(subdirs.begin(), subdirs.end());
   for (const fs::path& sub : subdirs) {
     const std::string id = sub.filename().string();
+    if (!names.count(id)) {
+      result.foreign.push_back(id);
+      continue;
+    }
     if (!fs::exists(sub / "manifest.json")) {
       result.incomplete.push_back(id);
       continue;
     }
-    manifests.push_back({id, readJson(sub / "manifest.json")});
+    reading = (sub / "manifest.json").string();
+    nlohmann::json manifest = readJson(sub / "manifest.json");
+    // A row is a timed frame: a manifest without timing samples has none to give.
+    const auto* samples = stageSamples(manifest);
+    const auto* total = samples ? findPath(*samples, "total") : nullptr;
+    if (!total || !total->is_array() || total->empty()) {
+      result.dropped.push_back({id, "its manifest.json has no timing.samples.stage_ms.total"});
+      continue;
+    }
+    manifests.push_back({id, std::move(manifest)});
     result.complete.push_back(id);
   }
   // Particle systems' drawing, where a sweep does not set it: the report tells geometry from light
@@ -475,7 +514,7 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
     if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
       for (const auto& [group, _] : g->items())
         if (group != "total") memoryGroups.insert(group);
-    if (const auto* s = findPath(m, "timing.samples.gpu_ms"); s && s->is_object())
+    if (const auto* s = stageSamples(m); s && s->is_object())
       for (const auto& [stage, _] : s->items()) stages.insert(stage);
     if (const auto* s = findPath(m, "timing.samples.wall_ms"); s && s->is_object())
       for (const auto& [stage, _] : s->items()) stages.insert(stage);
@@ -496,8 +535,13 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   std::ostringstream csv;
   std::vector<std::string> header = {"config_id", "config_name", "repeat", "run_dir"};
   for (const std::string& k : params) header.push_back("param." + k);
-  for (const std::string& s : stages) header.push_back("gpu_ms." + s);
+  // Each stage's time by its clock, and the clock (where the stage ran): gl_timer_query on the
+  // GL renderer, cpu_wall_clock on the CPU; both named in timed_on.*.
+  for (const std::string& s : stages) header.push_back("time." + s + ".ms");
+  for (const std::string& s : stages) header.push_back("time." + s + ".clock");
   for (const std::string& s : stages) header.push_back("wall_ms." + s);
+  header.push_back("timed_on.gl");
+  header.push_back("timed_on.cpu");
   header.push_back("memory_bytes");
   for (const std::string& g : memoryGroups) header.push_back("memory_bytes." + g);
   header.push_back("cells");
@@ -520,7 +564,8 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
     reading = (root / id / "manifest.json").string();
     const nlohmann::json config = m.value("configuration", nlohmann::json::object());
     std::size_t repeats = 0;
-    if (const auto* s = findPath(m, "timing.samples.gpu_ms.total"); s && s->is_array()) repeats = s->size();
+    const nlohmann::json* samples = stageSamples(m);
+    if (const auto* s = findPath(*samples, "total"); s && s->is_array()) repeats = s->size();
     // Cells per propagation iteration: every cascade level's (one level without cascades).
     std::string cells;
     const auto cellsOf = [](const nlohmann::json& counts) {
@@ -538,14 +583,18 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
     for (std::size_t r = 0; r < repeats; ++r) {
       std::vector<std::string> row = {id, names.count(id) ? names[id] : "", std::to_string(r), id};
       for (const std::string& k : params) row.push_back(jsonText(findPath(config, k)));
-      for (const char* kind : {"gpu_ms", "wall_ms"})
-        for (const std::string& s : stages) {
-          const auto* samples = findPath(m, std::string("timing.samples.") + kind);
-          const nlohmann::json* v = nullptr;
-          if (samples && samples->contains(s) && (*samples)[s].is_array() && r < (*samples)[s].size())
-            v = &(*samples)[s][r];
-          row.push_back(jsonText(v));
-        }
+      const auto sample = [&](const nlohmann::json* bySource, const std::string& s) {
+        const nlohmann::json* v = nullptr;
+        if (bySource && bySource->contains(s) && (*bySource)[s].is_array() && r < (*bySource)[s].size())
+          v = &(*bySource)[s][r];
+        row.push_back(jsonText(v));
+      };
+      for (const std::string& s : stages) sample(samples, s);
+      const auto* clock = findPath(m, "timing.clock");
+      for (const std::string& s : stages) row.push_back(jsonText(clock ? findPath(*clock, s) : nullptr));
+      for (const std::string& s : stages) sample(findPath(m, "timing.samples.wall_ms"), s);
+      row.push_back(jsonText(findPath(m, "libraries.gl_renderer")));
+      row.push_back(jsonText(findPath(m, "host.cpu")));
       row.push_back(jsonText(findPath(m, "memory_bytes.total")));
       for (const std::string& g : memoryGroups) {
         const auto* groups = findPath(m, "memory_bytes");

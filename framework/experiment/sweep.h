@@ -30,7 +30,8 @@
 namespace lpvlab {
 
 struct SweepConfiguration {
-  std::string id;                       // short hash of the overrides (stable across runs)
+  std::string id;                       // short hash of the resolved configuration: every value
+                                        // it runs with, swept or not (stable across runs)
   std::string name;                     // readable: "iterations=4,resolution=32" ("base": none)
   std::vector<std::string> overrides;   // "propagation.iterations=4" (TOML value text)
   std::vector<std::pair<std::string, std::string>> values;  // swept key -> value as text
@@ -66,17 +67,26 @@ std::vector<std::string> sweptKeys(const toml::table& root, const std::string& f
 // overrides applied, relative scene.file made absolute): a file `lpvlab run` reads on its own.
 std::string configurationToml(const std::string& file, const SweepConfiguration& configuration);
 
+// The identity of a whole sweep (16 hex digits): the hash of `root` (read from `file` with its
+// extends and includes merged and the -s overrides applied, [sweep] included). A sweep directory
+// records it in sweep.json; only the same sweep resumes there.
+std::string sweepHash(const toml::table& root, const std::string& file);
+
 // The value of a TOML node as TOML text ("4", "\"standard\"", "[1, 2]").
 std::string tomlValueText(const toml::node& node);
 
 struct SummaryResult {
   int rows = 0;
-  std::vector<std::string> complete;     // config ids with a manifest
-  std::vector<std::string> incomplete;   // run directories without one
+  std::vector<std::string> complete;     // config ids with a manifest that gave rows
+  std::vector<std::string> incomplete;   // configurations' run directories without a manifest
+  std::vector<std::string> foreign;      // directories that are no configuration of sweep.json
+  std::vector<std::pair<std::string, std::string>> dropped;  // id, why its manifest gave no row
 };
 
-// Rebuilds DIR/summary.csv from DIR/*/manifest.json (atomically); the swept keys and names come
-// from DIR/sweep.json when present. Directories without a manifest are skipped and returned.
+// Rebuilds DIR/summary.csv from the manifests of the configurations DIR/sweep.json records
+// (atomically), with their swept keys and names. Nothing else in DIR is read: another sweep's or
+// run's directories are returned as foreign, configurations without a manifest as incomplete,
+// manifests with no timed frame (no timing samples) as dropped with the reason.
 SummaryResult writeSweepSummary(const std::string& dir);
 
 }  // namespace lpvlab

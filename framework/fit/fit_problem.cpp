@@ -1,10 +1,12 @@
 #include "framework/fit/fit_problem.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
@@ -214,9 +216,41 @@ std::vector<double> sandwichDeviations(const FitEvaluator& evaluator, const Eige
 
 }  // namespace
 
+FitProgress resumePoint(const FitProgress& progress) {
+  FitProgress point = progress;
+  while (point.log.size() > 1 && !point.log.back().successful) point.log.pop_back();
+  if (!point.log.empty() && point.log.size() < progress.log.size()) {
+    point.renders = point.log.back().renders;
+    point.seconds = point.log.back().seconds;
+  }
+  return point;
+}
+
+namespace {
+
+// Ceres counts the iterations of its own solve ("Number of iterations: K."); a resumed fit's are
+// `done` more.
+std::string withWholeFitIterations(const std::string& message, int done) {
+  const std::string label = "Number of iterations: ";
+  const auto at = message.find(label);
+  if (at == std::string::npos) return message;
+  std::size_t end = at + label.size();
+  while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
+  const std::string digits = message.substr(at + label.size(), end - at - label.size());
+  if (digits.empty()) return message;
+  const int here = std::stoi(digits);
+  return message.substr(0, at) + label + std::to_string(done + here) + " (" + std::to_string(here) +
+         " after resuming at iteration " + std::to_string(done) + ")" + message.substr(end);
+}
+
+}  // namespace
+
 FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIteration&)>& onIteration,
-                 const FitProgress* resume) {
+                 const FitProgress* progress) {
   const auto start = std::chrono::steady_clock::now();
+  std::optional<FitProgress> point;
+  if (progress && !progress->log.empty()) point = resumePoint(*progress);
+  const FitProgress* resume = point ? &*point : nullptr;
   const FitSpec& spec = evaluator.spec();
   const std::size_t p = spec.parameters.size();
   FitResult result;
@@ -272,7 +306,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   result.values = x;
   result.initialCost = resumed ? resume->log.front().cost : summary.initial_cost;
   result.finalCost = summary.final_cost;
-  result.termination = summary.message;
+  result.termination = resumed ? withWholeFitIterations(summary.message, done) : summary.message;
   result.converged = summary.termination_type == ceres::CONVERGENCE;
 
   for (std::size_t j = 0; j < p; ++j)

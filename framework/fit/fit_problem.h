@@ -89,10 +89,19 @@ struct FitProgress {
   double seconds = 0.0;
 };
 
+// Where a resumed solve restarts: `progress` cut after its last accepted iteration (its start if
+// none was), with that iteration's renderings and seconds. Ceres's Levenberg-Marquardt state after
+// an accepted step is x and the trust-region radius alone, which Solver::Options can set; after a
+// rejected step it also holds the factor by which the next rejection shrinks the radius (doubled
+// at each rejection), which it cannot. So the rejected iterations after the last accepted one are
+// done again, and the resumed fit takes the very steps the uninterrupted one takes.
+FitProgress resumePoint(const FitProgress& progress);
+
 // Runs the fit; `onIteration` is called after each iteration (for progress lines and
-// checkpoints). With `resume` the solve starts at its last iteration's x with the iterations
-// `max_iterations` leaves, and the log, numbering, renderings, time and initial cost continue
-// it (Ceres's trust-region radius starts afresh).
+// checkpoints). With `resume` the solve starts at resumePoint(*resume) with the iterations
+// `max_iterations` leaves and that iteration's trust-region radius, and the log, numbering,
+// renderings, time and initial cost continue it; Ceres's termination message counts the
+// iterations of the whole fit.
 FitResult runFit(FitEvaluator& evaluator,
                  const std::function<void(const FitIteration&)>& onIteration = {},
                  const FitProgress* resume = nullptr);

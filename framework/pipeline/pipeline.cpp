@@ -261,12 +261,15 @@ FrameTimes Pipeline::renderFrame() {
   } else {
     renderLpvStages(times);
   }
-  times.gpuMs = gpuTimer_.collectMs();
+  times.stageMs = gpuTimer_.collectMs();
+  for (const auto& [stage, _] : times.stageMs) times.clock[stage] = kGlTimerQuery;
   // A stage whose strategies run on the CPU backend spends its time on the CPU, which GL
-  // timestamps do not see: its device time is its wall time (transfers to and from GL included).
+  // timestamps do not see: its time is its wall time (transfers to and from GL included).
   for (const std::string& stage : cpuStages_)
-    if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end())
-      times.gpuMs[stage] = wall->second;
+    if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end()) {
+      times.stageMs[stage] = wall->second;
+      times.clock[stage] = kCpuWallClock;
+    }
   checkGl("frame");
   return times;
 }

@@ -57,10 +57,17 @@ struct PipelineSettings {
 std::optional<DirectionalFollow> directionalFollow(const PipelineSettings& settings,
                                                    const Camera& camera);
 
+// How a stage's time was taken, by where it ran: GL timestamp queries around its GL work (on
+// the GL renderer), or the steady clock around it when its strategies run on the CPU backend
+// (transfers to and from GL included: GL timestamps do not see CPU work).
+inline constexpr const char* kGlTimerQuery = "gl_timer_query";
+inline constexpr const char* kCpuWallClock = "cpu_wall_clock";
+
 // Stage name -> milliseconds, for one frame.
 struct FrameTimes {
-  std::map<std::string, double> gpuMs;
-  std::map<std::string, double> wallMs;
+  std::map<std::string, double> stageMs;       // by the stage's own clock (below)
+  std::map<std::string, std::string> clock;    // kGlTimerQuery or kCpuWallClock, per stage
+  std::map<std::string, double> wallMs;        // steady clock, each stage ended by glFinish
 };
 
 // Flux bookkeeping of injection (W, summed over RGB): what the RSMs reflect, and what the grid

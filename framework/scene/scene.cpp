@@ -25,4 +25,13 @@ CameraOrientation orientCamera(Camera& camera, const glm::vec3& target, const gl
   return CameraOrientation::Oriented;
 }
 
+const char* lightTypeName(LightType type) {
+  switch (type) {
+    case LightType::Point: return "point";
+    case LightType::Spot: return "spot";
+    case LightType::Directional: return "directional";
+  }
+  return "unknown";
+}
+
 }  // namespace lpvlab

@@ -70,6 +70,8 @@ struct Mesh {
 };
 
 enum class LightType { Point, Spot, Directional };
+// "point", "spot", "directional": the names experiment files use.
+const char* lightTypeName(LightType type);
 
 struct Light {
   std::string name;

@@ -36,6 +36,13 @@ std::string gltfWithCamera(double znear, double zfar) {
          positions + R"("}]})";
 }
 
+// The id of the first configuration a sweep.json lists.
+std::string firstConfigurationId(const std::string& sweepJson) {
+  const std::string key = "\"id\": \"";
+  const auto at = sweepJson.find(key);
+  return at == std::string::npos ? "" : sweepJson.substr(at + key.size(), 10);
+}
+
 struct BadInput {
   std::string name;
   std::string args;                        // after `lpvlab`, in the case's directory
@@ -210,6 +217,18 @@ TEST_F(BadInputs, BlackResultsAndUnconvergedSolvesAreFlaggedInTheOutputManifestA
       << black.err;
   EXPECT_NE(test::readFile(dir_.path() / "black" / "manifest.json").find("\"warnings\""),
             std::string::npos);
+  // A sequence's frames are flagged the same way, each in its record and all in the manifest.
+  const test::LpvlabResult sequence = test::runLpvlab(
+      "run --out black_sequence" + kSmall + dark +
+          " -s animation.frames=2 -s animation.fps=1 -s animation.video=false",
+      dir_.path(), dir_.path());
+  ASSERT_EQ(sequence.exitCode, 0) << sequence.err;
+  EXPECT_NE(sequence.err.find("lpvlab: warning: every frame: every value of 'direct' and "
+                              "'indirect' is zero"),
+            std::string::npos)
+      << sequence.err;
+  EXPECT_NE(test::readFile(dir_.path() / "black_sequence" / "manifest.json").find("\"warnings\""),
+            std::string::npos);
   const test::LpvlabResult unsolved = test::runLpvlab(flags[1], dir_.path(), dir_.path());
   ASSERT_EQ(unsolved.exitCode, 0) << unsolved.err;
   EXPECT_NE(unsolved.err.find("lpvlab: warning: the indirect method's solver did not converge"),
@@ -254,6 +273,71 @@ TEST_F(BadInputs, BlackResultsAndUnconvergedSolvesAreFlaggedInTheOutputManifestA
   EXPECT_NE(csv.find("every value of 'direct' and 'indirect' is zero"), std::string::npos) << csv;
 }
 
+// A sweep directory holds one sweep (its hash in sweep.json). Three ways another sweep's runs
+// got into one summary.csv, each refused now without a change to the directory: another file,
+// the same file with another -s, and a changed base value under the same swept keys (whose
+// configs/<id>.toml said 20 while the runs were 16). --force replaces the old sweep; `summary`
+// counts only the recorded sweep's configurations and names what it left out.
+TEST_F(BadInputs, ASweepDirectoryHoldsOneSweepAndItsSummaryOnlyThatSweepsRuns) {
+  const std::string small =
+      " -s output.width=8 -s output.height=8 -s timing.warmup=0 -s timing.repeats=1";
+  const std::string base = "extends = \"" LPVLAB_SOURCE_DIR "/experiments/cornell_box.toml\"\n";
+  write("a.toml", base + "[sweep.product]\n\"propagation.iterations\" = [1, 2]\n");
+  write("b.toml", base + "[sweep.product]\n\"grid.sh_order\" = [1]\n");
+  const fs::path swept = dir_.path() / "swept";
+  const test::LpvlabResult a = test::runLpvlab("sweep a.toml --out swept" + small, dir_.path(), dir_.path());
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  const std::string index = test::readFile(swept / "sweep.json");
+  ASSERT_NE(index.find("\"sweep_hash\""), std::string::npos) << index;
+  // Resuming the same sweep is still what it was: all complete, nothing rerun.
+  const test::LpvlabResult same = test::runLpvlab("sweep a.toml --out swept" + small, dir_.path(), dir_.path());
+  EXPECT_EQ(same.exitCode, 0) << same.err;
+  EXPECT_NE(same.err.find("2 configurations, 2 complete, 0 to run"), std::string::npos) << same.err;
+
+  write("c16.toml", base + "[grid]\nresolution = 16\n[sweep.product]\n\"propagation.iterations\" = [1, 2]\n");
+  write("c.toml", base + "[grid]\nresolution = 20\n[sweep.product]\n\"propagation.iterations\" = [1, 2]\n");
+  ASSERT_EQ(test::runLpvlab("sweep c16.toml --out swept16" + small, dir_.path(), dir_.path()).exitCode, 0);
+  fs::copy_file(dir_.path() / "c.toml", dir_.path() / "c16.toml", fs::copy_options::overwrite_existing);
+  const std::string index16 = test::readFile(dir_.path() / "swept16" / "sweep.json");
+  for (const auto& [args, source] : std::vector<std::pair<std::string, std::string>>{
+           {"sweep b.toml --out swept" + small, "b.toml"},
+           {"sweep a.toml --out swept -s grid.resolution=12" + small, "-s grid.resolution=12"},
+           {"sweep c16.toml --out swept16" + small, "c16.toml"}}) {
+    SCOPED_TRACE("lpvlab " + args);
+    const test::LpvlabResult r = test::runLpvlab(args, dir_.path(), dir_.path());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(r.err.rfind("lpvlab: error: --out swept", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("holds another sweep ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(source), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("choose a new --out"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_EQ(test::readFile(swept / "sweep.json"), index) << "the old sweep is left as it was";
+  EXPECT_EQ(test::readFile(dir_.path() / "swept16" / "sweep.json"), index16);
+
+  // Another run's directory in the sweep's, and a configuration whose manifest holds nothing:
+  // neither gives a row, and both are named.
+  write("swept/stray/manifest.json", test::readFile(swept / firstConfigurationId(index) / "manifest.json"));
+  write("swept/" + firstConfigurationId(index) + "/manifest.json", "{}\n");
+  const test::LpvlabResult summary = test::runLpvlab("summary swept", dir_.path(), dir_.path());
+  EXPECT_EQ(summary.exitCode, 0) << summary.err;
+  EXPECT_NE(summary.err.find("swept/stray: not a configuration of this sweep"), std::string::npos)
+      << summary.err;
+  EXPECT_NE(summary.err.find("swept/" + firstConfigurationId(index) + ": no rows: its manifest.json has no timing"),
+            std::string::npos)
+      << summary.err;
+  EXPECT_NE(summary.out.find(": 1 rows from 1 runs"), std::string::npos) << summary.out;
+  EXPECT_EQ(test::readFile(swept / "summary.csv").find("stray"), std::string::npos);
+
+  // --force: the other sweep replaces this one; its summary holds its own configuration alone.
+  const test::LpvlabResult forced =
+      test::runLpvlab("sweep b.toml --force --out swept" + small, dir_.path(), dir_.path());
+  ASSERT_EQ(forced.exitCode, 0) << forced.err;
+  EXPECT_NE(forced.out.find(": 1 rows from 1 runs"), std::string::npos) << forced.out;
+  EXPECT_FALSE(fs::exists(swept / firstConfigurationId(index))) << "the old sweep's runs were removed";
+  EXPECT_TRUE(fs::exists(swept / "stray")) << "only what the old sweep wrote goes";
+}
+
 // Usage errors (an unknown command or option, a word too many) are one `lpvlab: error:` line
 // naming the word, with exit code 2 (CLI11's own codes were 105-115, and "A subcommand is
 // required" for an unknown command); --version prints the version and the git revision.
@@ -273,6 +357,17 @@ TEST_F(BadInputs, UsageErrorsExitTwoNamingTheWordAndVersionPrintsTheRevision) {
   const test::LpvlabResult version = test::runLpvlab("--version", dir_.path(), dir_.path());
   EXPECT_EQ(version.exitCode, 0) << version.err;
   EXPECT_EQ(version.out.rfind(std::string("lpvlab ") + LPVLAB_VERSION + " (git ", 0), 0u) << version.out;
+}
+
+// `info` says what a light is and the units of its numbers (it printed "type 1" and a bare
+// intensity): the box's spot light by name, its W/sr and its cone.
+TEST_F(BadInputs, InfoNamesEachLightsTypeAndUnits) {
+  const test::LpvlabResult r = test::runLpvlab("info builtin:cornell_box", dir_.path(), dir_.path());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.find(": type "), std::string::npos) << r.out;
+  for (const char* needle : {"light      spot: spot at [", " m towards [", "W/sr", "cone half-angles ",
+                             "deg, colour [", "bounds     [", "camera     "})
+    EXPECT_NE(r.out.find(needle), std::string::npos) << needle << " in\n" << r.out;
 }
 
 // The cases' files are good but for the fault: the same OBJ with its library, and the glTF with

@@ -5,7 +5,9 @@
 //     progress is not resumed; a damaged file is an error naming it;
 //   - a fit stopped after 2 iterations and resumed with max_iterations 5 starts where it stopped
 //     (its first rendering is at the last iteration's x), keeps the first iterations' log,
-//     numbers on from 3, stops at 5, and ends no worse than where it stopped.
+//     numbers on from 3, stops at 5, and ends no worse than where it stopped; its termination
+//     message counts the whole fit's iterations;
+//   - a fit stopped just after a rejected step and resumed takes the uninterrupted fit's steps.
 
 #include <filesystem>
 #include <fstream>
@@ -102,6 +104,69 @@ TEST(FitCheckpoint, AResumedFitGoesOnFromWhereItStopped) {
   EXPECT_LE(whole.finalCost, part.finalCost * (1.0 + 1e-9));
   EXPECT_GT(whole.renders, part.renders);
   EXPECT_NEAR(whole.values[0], 0.8, 0.02);
+
+  // Resumed with no iteration left, the fit's report counts the iterations of the whole fit, not
+  // Ceres's 0 of the resumed solve (issue 35).
+  ASSERT_NE(part.termination.find("Number of iterations: 2."), std::string::npos) << part.termination;
+  FitEvaluator again(first, views);
+  const FitResult finished = runFit(again, {}, &progress);
+  EXPECT_NE(finished.termination.find("Number of iterations: 2 ("), std::string::npos)
+      << finished.termination;
+  EXPECT_EQ(finished.termination.find("Number of iterations: 0"), std::string::npos)
+      << finished.termination;
+}
+
+// A fit stopped just after a rejected step and resumed takes the steps the uninterrupted fit
+// takes, to the last bit: Ceres's state after a rejection (the factor that shrinks the trust
+// region further) cannot be given back to it, so the resumed fit restarts after the last accepted
+// step (resumePoint) and does the rejected ones again. Before, it restarted at the rejected
+// step's radius with a fresh factor and ended elsewhere (the Cornell box's shift: 1.65 against
+// 3.0).
+TEST(FitCheckpoint, AFitResumedAfterARejectedStepTakesTheUninterruptedSteps) {
+  test::glTestContext();
+  test::FitFiles files("checkpoint-rejected");
+  const auto spec = [&](int iterations) {
+    return test::smallFitSpec(
+        files, 16,
+        "parameters = [{ key = \"propagation.damping\", initial = 1.4, lower = 0.5, upper = 1.5 },"
+        " { key = \"injection.shift\", initial = 2.5, lower = 0.0, upper = 3.0, step = 0.25 }]\n"
+        "max_iterations = " + std::to_string(iterations) + "\n");
+  };
+  constexpr int kIterations = 10;
+  const FitSpec whole = spec(kIterations);
+  const std::vector<FitView> views = test::syntheticViews(whole, {0.85, 1.0});
+  FitEvaluator uninterruptedEvaluator(whole, views);
+  const FitResult uninterrupted = runFit(uninterruptedEvaluator);
+  int rejected = 0;  // the first rejected step that another iteration follows
+  for (const FitIteration& it : uninterrupted.log)
+    if (it.iteration > 0 && it.iteration < uninterrupted.log.back().iteration && !it.successful) {
+      rejected = it.iteration;
+      break;
+    }
+  ASSERT_GT(rejected, 0) << "started far from the truth, this fit has rejected steps near its end";
+
+  const FitSpec early = spec(rejected);  // the evaluator keeps a reference to its spec
+  FitEvaluator stoppedEvaluator(early, views);
+  const FitResult stopped = runFit(stoppedEvaluator);
+  ASSERT_EQ(stopped.log.back().iteration, rejected);
+  ASSERT_FALSE(stopped.log.back().successful);
+  const FitProgress progress{stopped.log, stopped.renders, stopped.seconds};
+  EXPECT_LT(resumePoint(progress).log.back().iteration, rejected);
+  EXPECT_TRUE(resumePoint(progress).log.back().successful);
+
+  FitEvaluator resumedEvaluator(whole, views);
+  const FitResult resumed = runFit(resumedEvaluator, {}, &progress);
+  ASSERT_EQ(resumed.log.size(), uninterrupted.log.size());
+  for (std::size_t i = 0; i < resumed.log.size(); ++i) {
+    EXPECT_EQ(resumed.log[i].iteration, uninterrupted.log[i].iteration);
+    EXPECT_EQ(resumed.log[i].x, uninterrupted.log[i].x) << "iteration " << i;
+    EXPECT_EQ(resumed.log[i].cost, uninterrupted.log[i].cost) << "iteration " << i;
+    EXPECT_EQ(resumed.log[i].successful, uninterrupted.log[i].successful) << "iteration " << i;
+    EXPECT_EQ(resumed.log[i].trustRegionRadius, uninterrupted.log[i].trustRegionRadius)
+        << "iteration " << i << ": the trust region shrinks as the uninterrupted fit's does";
+  }
+  EXPECT_EQ(resumed.values, uninterrupted.values);
+  EXPECT_EQ(resumed.finalCost, uninterrupted.finalCost);
 }
 
 }  // namespace

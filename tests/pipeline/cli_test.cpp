@@ -97,9 +97,23 @@ TEST_F(Cli, RunWritesImagesAndACompleteManifest) {
 
   nlohmann::json manifest;
   ASSERT_NO_THROW(manifest = nlohmann::json::parse(readFile(out / "manifest.json")));
-  const nlohmann::json* median = find(manifest, {"timing", "gpu_ms", "propagation", "median"});
+  const nlohmann::json* median = find(manifest, {"timing", "stage_ms", "propagation", "median"});
   ASSERT_TRUE(median && median->is_number());
   EXPECT_GE(median->get<double>(), 0.0);
+  // Each stage's time says its clock, by where the stage ran (issue 35: CPU times were called GPU
+  // times): the raster passes on GL, propagation where compute says, the total both if they differ.
+  const nlohmann::json* clock = find(manifest, {"timing", "clock"});
+  const nlohmann::json* where = find(manifest, {"compute", "strategies", "propagation"});
+  ASSERT_TRUE(clock && where) << manifest.dump(1);
+  const std::string propagationClock = *where == "cpu" ? "cpu_wall_clock" : "gl_timer_query";
+  EXPECT_EQ(clock->value("propagation", ""), propagationClock);
+  EXPECT_EQ(clock->value("gbuffer", ""), "gl_timer_query");
+  EXPECT_EQ(clock->value("total", ""), propagationClock == "gl_timer_query" ? "gl_timer_query" : "mixed");
+  EXPECT_NE(r.out.find(propagationClock == "cpu_wall_clock" ? "CPU wall clock" : "GL timer query"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("gpu median"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("times: GL timer queries on "), std::string::npos) << r.out;
   const nlohmann::json* iterations = find(manifest, {"configuration", "propagation", "iterations"});
   ASSERT_TRUE(iterations);
   EXPECT_EQ(*iterations, 4);

@@ -88,16 +88,20 @@ std::function<Armed()> whenExists(const fs::path& path) {
 // Kills the command `kills` times, each at a uniformly random moment of the first `window`
 // seconds after the run's `armedFor()` holds (a checkpoint: so that every kill but an early one
 // leaves something to resume from), then lets it finish. Returns the number of kills that landed
-// (the others found it done).
+// (the others found it done). A kill can land after the command finished its outputs, before it
+// exited: `finished` (when given) says so, and the command is not run again, since lpvlab refuses
+// to write over a finished run or fit.
 int killRepeatedlyThenFinish(const std::vector<std::string>& args, const fs::path& log,
                              const std::function<Armed()>& armedFor, double window, int kills,
-                             std::mt19937& random) {
+                             std::mt19937& random, const std::function<bool()>& finished = {}) {
   std::uniform_real_distribution<double> moment(0.0, window);
   int landed = 0;
   for (int i = 0; i < kills; ++i) {
     if (runLpvlab(args, log, moment(random), nullptr, armedFor())) return landed;
     ++landed;
+    if (finished && finished()) return landed;
   }
+  if (finished && finished()) return landed;
   EXPECT_TRUE(runLpvlab(args, log, 1e9)) << test::readFile(log);
   return landed;
 }
@@ -207,7 +211,9 @@ TEST_F(KillResume, AKilledFitResumesToTheUninterruptedConstants) {
                         &seconds, whenExists(whole / "fit.progress.json")()));
   const int landed = killRepeatedlyThenFinish(
       {"fit", file.string(), "--out", killed.string()}, dir_ / "killed.log",
-      whenExists(killed / "fit.progress.json"), 0.8 * seconds, 4, random_);
+      whenExists(killed / "fit.progress.json"), 0.8 * seconds, 4, random_, [&] {
+        return fs::exists(killed / "fit.json") && !fs::exists(killed / "fit.progress.json");
+      });
   std::cout << landed << " kills landed in the " << seconds
             << " s after a fit's first saved iteration\n";
   unsetenv("LPVLAB_CACHE_DIR");
@@ -261,7 +267,8 @@ TEST_F(KillResume, AKilledSequenceResumesToTheUninterruptedFrames) {
       << test::readFile(dir_ / "whole.log");
   const int landed = killRepeatedlyThenFinish(
       {"run", file.string(), "--out", killed.string()}, dir_ / "killed.log",
-      firstNewRecord(killed / "frames"), 0.8 * seconds, 4, random_);
+      firstNewRecord(killed / "frames"), 0.8 * seconds, 4, random_,
+      [&] { return fs::exists(killed / "manifest.json"); });
   std::cout << landed << " kills landed in the " << seconds
             << " s after the first frame of a sequence\n";
   EXPECT_GE(landed, 1);

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "sweep_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/sweep.h"
@@ -197,11 +198,12 @@ TEST(Particles, WithoutInjectionTheGridGetsWhatTheSceneWithoutThemInjects) {
 TEST(Particles, TheSweepSummaryHasTheirCountsAndDrawing) {
   test::TempDir dir;
   const auto write = [&](const std::string& id, nlohmann::json manifest) {  // one timed repeat
-    manifest["timing"] = {{"samples", {{"gpu_ms", {{"total", {12.5}}}}}}};
+    manifest["timing"] = {{"samples", {{"stage_ms", {{"total", {12.5}}}}}}};
     std::filesystem::create_directories(dir.path() / id);
     std::ofstream(dir.path() / id / "manifest.json") << manifest.dump();
   };
   const auto table = [&]() {
+    test::writeSweepIndex(dir.path(), {"a", "b"});
     writeSweepSummary(dir.path().string());
     std::ifstream csv(dir.path() / "summary.csv");
     std::vector<std::vector<std::string>> rows;

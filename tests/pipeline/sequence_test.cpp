@@ -2,6 +2,7 @@
 // frame is the static run, every frame is what a static run of that frame's scene renders (so
 // moving lights and meshes reach the GPU as the animation says), an interrupted sequence resumes
 // at its first missing frame, and the video holds every frame.
+#include "sweep_support.h"
 #include "framework/experiment/sequence.h"
 
 #include <gtest/gtest.h>
@@ -89,7 +90,7 @@ TEST(Sequence, EveryFrameIsWhatAStaticRunOfThatFrameRenders) {
   ASSERT_TRUE(sequence.animation.movesGeometry() && sequence.animation.movesLights());
   const nlohmann::json manifest = runExperiment(sequence, context, (dir / "run").string());
   EXPECT_EQ(manifest["sequence"]["frames"].get<int>(), 3);
-  EXPECT_EQ(manifest["timing"]["samples"]["gpu_ms"]["total"].size(), 3u);
+  EXPECT_EQ(manifest["timing"]["samples"]["stage_ms"]["total"].size(), 3u);
 
   for (int frame : {0, 2}) {
     // The same experiment, its scene moved to the frame's time and rendered statically.
@@ -173,17 +174,25 @@ translation = [0.15, 0, 0.12]
 
   // The summary has a row per frame, each with that frame's figures (the per-frame error curve).
   fs::remove_all(dir / "cache");
+  test::writeSweepIndex(dir, {"run"});
   const SummaryResult summary = writeSweepSummary(dir.string());
   EXPECT_EQ(summary.rows, 3);
   std::ifstream csv(dir / "summary.csv");
   std::string header, line;
   std::getline(csv, header);
-  const auto split = [](const std::string& text) {
-    std::vector<std::string> fields;
-    std::size_t at = 0;
-    for (std::size_t comma; (comma = text.find(',', at)) != std::string::npos; at = comma + 1)
-      fields.push_back(text.substr(at, comma - at));
-    fields.push_back(text.substr(at));
+  const auto split = [](const std::string& text) {  // CSV: a quoted field may hold commas
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] == '"') {
+        if (quoted && i + 1 < text.size() && text[i + 1] == '"') fields.back() += text[++i];
+        else quoted = !quoted;
+      } else if (text[i] == ',' && !quoted) {
+        fields.emplace_back();
+      } else {
+        fields.back() += text[i];
+      }
+    }
     return fields;
   };
   const std::vector<std::string> columns = split(header);

@@ -144,7 +144,9 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
                                             "param.scene.file"};
   ASSERT_GE(before.header.size(), leading.size());
   for (std::size_t i = 0; i < leading.size(); ++i) EXPECT_EQ(before.header[i], leading[i]);
-  for (const char* column : {"gpu_ms.total", "wall_ms.total", "gpu_ms.propagation", "memory_bytes",
+  for (const char* column : {"time.total.ms", "time.total.clock", "wall_ms.total",
+                             "time.propagation.ms", "time.propagation.clock", "timed_on.gl",
+                             "timed_on.cpu", "memory_bytes",
                              "memory_bytes.light_grid", "memory_bytes.light_maps", "cells"})
     EXPECT_NE(std::find(before.header.begin(), before.header.end(), column), before.header.end()) << column;
   std::set<std::string> iterations;
@@ -152,7 +154,11 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
     iterations.insert(row.at("param.propagation.iterations"));
     EXPECT_EQ(row.at("param.grid.resolution"), "4");
     EXPECT_EQ(row.at("cells").empty(), false);
-    EXPECT_FALSE(row.at("gpu_ms.total").empty());
+    EXPECT_FALSE(row.at("time.total.ms").empty());
+    EXPECT_FALSE(row.at("timed_on.gl").empty());
+    EXPECT_TRUE(row.at("time.propagation.clock") == "gl_timer_query" ||
+                row.at("time.propagation.clock") == "cpu_wall_clock")
+        << row.at("time.propagation.clock");
   }
   EXPECT_EQ(iterations, (std::set<std::string>{"1", "2", "4"}));
   // Sorted by config id, then repeat.

@@ -13,6 +13,7 @@
 #include "error_support.h"
 
 #include "framework/core/error.h"
+#include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/json_path.h"
 #include "framework/experiment/sweep.h"
@@ -65,6 +66,35 @@ product = { "propagation.iterations" = [1, 4, 16], "grid.resolution" = [16, 32] 
   ASSERT_EQ(strings.size(), 1u);
   EXPECT_EQ(strings[0].overrides[0], "propagation.type=\"standard\"");
   EXPECT_EQ(strings[0].name, "type=standard");
+}
+
+// A configuration is everything it runs with: the same swept values over another base value
+// (or another -s) are other configurations, with other ids, and the whole sweep another hash.
+TEST_F(SweepExpand, IdsAndTheSweepHashCoverEveryResolvedValue) {
+  const std::string sweep = "[sweep]\nproduct = { \"propagation.iterations\" = [1, 4] }\n";
+  const std::string at16 = write("g16.toml", "[grid]\nresolution = 16\n" + sweep);
+  const std::string at20 = write("g20.toml", "[grid]\nresolution = 20\n" + sweep);
+  const auto a = expandSweep(at16), b = expandSweep(at20), c = expandSweep(at16, {"grid.sh_order=2"});
+  ASSERT_EQ(a.size(), 2u);
+  ASSERT_EQ(b.size(), 2u);
+  ASSERT_EQ(c.size(), 2u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].name, b[i].name);
+    EXPECT_NE(a[i].id, b[i].id) << "the base resolution differs";
+    EXPECT_NE(a[i].id, c[i].id) << "the -s differs";
+  }
+  const auto hashOf = [](const std::string& file, const std::vector<std::string>& overrides) {
+    toml::table root = readExperimentTable(file);
+    for (const std::string& o : overrides) applyOverride(root, o);
+    return sweepHash(root, file);
+  };
+  EXPECT_EQ(hashOf(at16, {}), hashOf(at16, {}));
+  EXPECT_NE(hashOf(at16, {}), hashOf(at20, {}));
+  EXPECT_NE(hashOf(at16, {}), hashOf(at16, {"grid.sh_order=2"}));
+  // The same values written another way are the same sweep.
+  const std::string reordered = write("r16.toml", sweep + "[grid]\nresolution = 16\n");
+  EXPECT_EQ(hashOf(at16, {}), hashOf(reordered, {}));
+  EXPECT_EQ(expandSweep(reordered)[1].id, a[1].id);
 }
 
 TEST_F(SweepExpand, ZipIteratesTogetherAndCombinesWithProduct) {

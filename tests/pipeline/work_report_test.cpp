@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sweep_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/sweep.h"
 #include "framework/io/atomic_file.h"
@@ -171,9 +172,10 @@ TEST(WorkReport, TheSweepSummaryHasWorkColumns) {
   test::TempDir dir;
   const Report r = workOf({});
   const nlohmann::json manifest = {{"work", r.work},
-                                   {"timing", {{"samples", {{"gpu_ms", {{"total", {1.0}}}}}}}}};
+                                   {"timing", {{"samples", {{"stage_ms", {{"total", {1.0}}}}}}}}};
   std::filesystem::create_directories(dir.file("c0"));
   writeTextAtomically(dir.file("c0/manifest.json"), manifest.dump());
+  test::writeSweepIndex(dir.path(), {"c0"});
   writeSweepSummary(dir.path().string());
   std::ifstream csv(dir.file("summary.csv"));
   std::string header, row;
