@@ -12,7 +12,14 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from lpvlab_analysis.report import main  # noqa: E402
+try:
+    from lpvlab_analysis.report import main  # noqa: E402
+except ImportError as missing:  # a Python without the analysis's packages (a bundle's host, say)
+    print(f"lpvlab: error: report: {sys.executable} lacks the Python package "
+          f"'{missing.name}' that the report needs (Debian: scripts/install-deps.sh; elsewhere: "
+          f"pip install numpy pandas matplotlib; or set LPVLAB_PYTHON to a Python that has them)",
+          file=sys.stderr)
+    sys.exit(2)
 
 if __name__ == "__main__":
     sys.exit(main())

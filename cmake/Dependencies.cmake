@@ -18,12 +18,19 @@ set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
 find_package(CGAL 5.5 CONFIG REQUIRED)
 # OpenImageIO 2.4's CMake config names /usr/include/opencv4; its pkg-config module works.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
-pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)   # offscreen GL 4.5 core on llvmpipe
+# The GL context backends' headers only: libOSMesa (offscreen GL 4.5 core on llvmpipe) and libEGL
+# are opened at run time (framework/gl/shared_library.h), so that lpvlab runs where either is
+# missing (a GPU machine without Mesa, Mesa 25.1 without OSMesa) and bundles stay small.
+pkg_check_modules(OSMESA REQUIRED osmesa)
+add_library(lpvlab_gl_headers INTERFACE)
+target_include_directories(lpvlab_gl_headers INTERFACE ${OSMESA_INCLUDE_DIRS})
+target_link_libraries(lpvlab_gl_headers INTERFACE ${CMAKE_DL_LIBS})
 
-set(LPVLAB_EGL_TARGET "")
+set(LPVLAB_HAVE_EGL_HEADERS FALSE)
 if(LPVLAB_WITH_EGL)
-  pkg_check_modules(EGL QUIET IMPORTED_TARGET egl)
+  pkg_check_modules(EGL QUIET egl)
   if(EGL_FOUND)
-    set(LPVLAB_EGL_TARGET PkgConfig::EGL)
+    set(LPVLAB_HAVE_EGL_HEADERS TRUE)
+    target_include_directories(lpvlab_gl_headers INTERFACE ${EGL_INCLUDE_DIRS})
   endif()
 endif()

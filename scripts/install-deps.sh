@@ -31,6 +31,8 @@ test_packages=(
   chromium chromium-driver python3-selenium  # tests/report: the report in a headless browser
   clang libfuzzer-14-dev libclang-rt-14-dev  # LPVLAB_SANITIZE and LPVLAB_FUZZ builds (tests/fuzz)
   valgrind                         # memcheck of the path tracer's tests (docs/testing.md)
+  zstd                             # scripts/bundle.sh --archive, which tests/bundle makes
+  mmdebstrap                       # tests/bundle: the bundle in bare Debian 11 and 13 roots
 )
 case "${1:-}" in
   "") ;;

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   // The version a run's manifest records, and the source's git revision.
   app.set_version_flag("--version", []() {
-    return std::string("lpvlab ") + LPVLAB_VERSION + " (git " + lpvlab::gitRevision(LPVLAB_SOURCE_DIR) + ")";
+    return std::string("lpvlab ") + LPVLAB_VERSION + " (git " + lpvlab::lpvlabRevision() + ")";
   });
   lpvlab::cli::Options options;
 

@@ -20,6 +20,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/slurm_script.h"
 #include "framework/core/error.h"
+#include "framework/core/install_layout.h"
 #include "framework/core/parameters.h"
 #include "framework/core/progress.h"
 #include "framework/experiment/experiment.h"
@@ -135,7 +136,7 @@ int sweepCommand(const Options& options) {
   const std::string file = options.experiment;
   const std::string stem = fs::path(file).stem().string();
   const fs::path dir = options.out.empty() ? fs::path("runs") / (stem + "-sweep") : fs::path(options.out);
-  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+  const std::string exe = executablePath().string();  // the bundle's: its wrapper script
 
   toml::table root = readExperimentTable(file);
   for (const std::string& o : options.overrides) applyOverride(root, o);

@@ -195,7 +195,7 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
           {"experiment", experiment.name},
           {"experiment_file", experiment.file.empty() ? "(built-in default)" : experiment.file},
           {"created_utc", utcTimestamp()},
-          {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+          {"git_revision", lpvlabRevision()},
           {"configuration", experiment.configuration},
           {"scene",
            {{"source", experiment.scene.source},

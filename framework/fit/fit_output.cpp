@@ -106,7 +106,7 @@ nlohmann::json fitJson(const FitSpec& spec, const FitResult& result, const nlohm
   return {{"lpvlab_version", LPVLAB_VERSION},
           {"experiment_file", std::filesystem::absolute(spec.file).lexically_normal().string()},
           {"created_utc", utcTimestamp()},
-          {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+          {"git_revision", lpvlabRevision()},
           {"settings", {{"residual", residualName(spec.residual)}, {"epsilon", spec.epsilon},
                         {"loss", lossName(spec.loss)}, {"loss_scale", spec.lossScale},
                         {"step", spec.relativeStep}, {"max_iterations", spec.maxIterations},
@@ -166,7 +166,7 @@ std::string fitReport(const FitSpec& spec, const FitResult& result, const nlohma
   std::ostringstream s;
   s << "# Fit report: " << std::filesystem::path(spec.file).filename().string() << "\n\n"
     << "File " << std::filesystem::absolute(spec.file).lexically_normal().string() << ", "
-    << utcTimestamp() << ", revision " << gitRevision(LPVLAB_SOURCE_DIR) << ".\n"
+    << utcTimestamp() << ", revision " << lpvlabRevision() << ".\n"
     << (result.converged ? "Converged" : "**Not converged**") << " after "
     << (result.log.empty() ? 0 : result.log.size() - 1) << " iterations (" << result.termination
     << "); " << result.renders << " renderings in " << format("%.0f", result.seconds)

@@ -116,17 +116,22 @@ std::unique_ptr<GlContext> GlContext::create(const std::string& backend) {
   if (backend == "osmesa") return finish(gl_detail::createOsMesaContext());
 #if LPVLAB_HAVE_EGL
   if (backend == "egl") return finish(gl_detail::createEglContext(false));
-  // "auto": a GPU through EGL, else osmesa; the EGL failure matters only if osmesa fails too.
-  std::string eglFailure;
-  try {
-    return finish(gl_detail::createEglContext(true));
-  } catch (const Error& e) {
-    eglFailure = e.what();
+  // "auto": a GPU through EGL; else Mesa's software renderer through EGL (surfaceless: OSMesa is
+  // gone from Mesa since 25.1); else OSMesa where it is still installed. The failures matter only
+  // if the last fails too.
+  std::string failures;
+  for (const auto& create : {+[] { return gl_detail::createEglContext(true); },
+                             +[] { return gl_detail::createEglContext(false); }}) {
+    try {
+      return finish(create());
+    } catch (const Error& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + e.what();
+    }
   }
   try {
     return finish(gl_detail::createOsMesaContext());
   } catch (const Error& e) {
-    throw Error(std::string(e.what()) + "; and before that, " + eglFailure);
+    throw Error(std::string(e.what()) + "; and before that, " + failures);
   }
 #else
   return finish(gl_detail::createOsMesaContext());

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "framework/core/install_layout.h"
 #include "framework/core/error.h"
 #include "framework/gl/shader_includer.h"
 
@@ -123,10 +124,7 @@ ShaderCompiler::ShaderCompiler(std::filesystem::path root) : root_(std::move(roo
 
 ShaderCompiler::~ShaderCompiler() = default;
 
-std::filesystem::path ShaderCompiler::defaultRoot() {
-  if (const char* dir = std::getenv("LPVLAB_SHADER_DIR"); dir && *dir) return dir;
-  return std::filesystem::path(LPVLAB_SOURCE_DIR) / "shaders";
-}
+std::filesystem::path ShaderCompiler::defaultRoot() { return shaderDirectory(); }
 
 std::vector<std::uint32_t> ShaderCompiler::compileToSpirv(const std::string& path) {
   if (auto cached = cache_.find(path); cached != cache_.end()) return cached->second;

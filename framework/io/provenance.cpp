@@ -12,6 +12,8 @@
 #include <glm/glm.hpp>
 #include <toml++/toml.h>
 
+#include "framework/core/install_layout.h"
+
 namespace lpvlab {
 
 namespace {
@@ -74,6 +76,13 @@ std::string gitRevision(const std::string& sourceDir) {
   const auto status = capture(git + " status --porcelain");
   const bool dirty = !status || !trimmed(*status).empty();  // can't tell: don't claim clean
   return trimmed(*head) + (dirty ? "-dirty" : "");
+}
+
+std::string lpvlabRevision() {
+  if (runsFromSourceTree()) return gitRevision(LPVLAB_SOURCE_DIR);
+  std::ifstream file(dataDirectory() / "REVISION");
+  std::string line;
+  return std::getline(file, line) && !trimmed(line).empty() ? trimmed(line) : "unknown";
 }
 
 nlohmann::json libraryVersions() {

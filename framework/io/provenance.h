@@ -12,6 +12,11 @@ namespace lpvlab {
 // when it isn't a git checkout or git is missing.
 std::string gitRevision(const std::string& sourceDir);
 
+// This lpvlab's revision: gitRevision of its source tree when it runs from its build tree, else
+// the REVISION file of its data folder (install_layout.h), which scripts/bundle.sh and
+// `cmake --install` write from the source tree; "unknown" without either.
+std::string lpvlabRevision();
+
 // Versions of the libraries available to this module and of the compiler, e.g.
 // {"openimageio": "2.4.7", "glm": "0.9.9.8", "compiler": "GCC 12.2.0", ...}. Modules with
 // more dependencies add theirs.

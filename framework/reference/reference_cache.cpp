@@ -16,6 +16,7 @@
 #include <sstream>
 #include <thread>
 
+#include "framework/core/install_layout.h"
 #include "framework/core/available_cores.h"
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
@@ -104,7 +105,14 @@ void readDoubles(std::istream& in, std::vector<double>& v, std::size_t expected,
 
 std::string defaultCacheDir() {
   if (const char* env = std::getenv("LPVLAB_CACHE_DIR")) return env;
-  return (fs::path(LPVLAB_SOURCE_DIR) / ".cache" / "references").string();
+  // A build tree keeps its references in the checkout; an installed or bundled lpvlab, whose
+  // folder may be read-only or shared, in the user's cache.
+  if (runsFromSourceTree()) return (fs::path(LPVLAB_SOURCE_DIR) / ".cache" / "references").string();
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return (fs::path(xdg) / "lpvlab" / "references").string();
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return (fs::path(home) / ".cache" / "lpvlab" / "references").string();
+  return (fs::temp_directory_path() / "lpvlab-references").string();
 }
 
 namespace {
@@ -305,7 +313,7 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
         {"threads", request.threads > 0 ? request.threads : availableCores()},
         {"engine", engine}}},
       {"created_utc", utcTimestamp()},
-      {"git_revision", gitRevision(LPVLAB_SOURCE_DIR)},
+      {"git_revision", lpvlabRevision()},
       {"host", hostInfo()}};
   writeExr((dir / "images.exr").string(), ref.aovs, {{"lpvlab:reference_key", ref.key}});
   writeTextAtomically((dir / "manifest.json").string(), ref.manifest.dump(2) + "\n");
