@@ -3,7 +3,7 @@
 # into parts) that runs on any x86-64 Linux without root and without apt (docs/bundle.md).
 #
 #   scripts/bundle.sh [--build DIR] [--out DIR] [--archive] [--level N] [--part-size SIZE]
-#                     [--no-osmesa]
+#                     [--no-osmesa] [--no-build]
 #
 #   --build DIR       the build tree whose lpvlab is bundled (default: build; built first)
 #   --out DIR         where the folder lpvlab-<version>-x86_64/ goes (default: dist)
@@ -12,11 +12,14 @@
 #                     machines this project reaches take 64 MiB per transfer, checkout included)
 #   --level N         zstd level of the archive (default 19; 1-3 for a quick one)
 #   --no-osmesa       leave out libOSMesa and its LLVM (117 MB): for GPU machines only
+#   --no-build        bundle the build tree's lpvlab as it is (the tests: they must not rebuild
+#                     the tree they test)
 #
 # The folder:
 #   bin/lpvlab              a script that runs the binary through the bundle's own dynamic
 #                           loader with the bundle's libraries, so the host's glibc and
 #                           libraries do not matter
+#   bin/gpu-check           scripts/gpu-check.sh: the whole program checked on a GPU
 #   libexec/lpvlab          the binary, stripped
 #   lib/                    every shared library it needs, glibc's loader included; glvnd's
 #                           vendor-neutral libEGL/libGL/libGLX/libGLdispatch (OpenCV links
@@ -25,12 +28,13 @@
 #   share/lpvlab/           shaders/, experiments/, analysis/ (the report's Python package),
 #                           REVISION, README.md
 # Not in it: the GPU vendor's GL and EGL implementations (libEGL_nvidia, libEGL_mesa, ...), which
-# glvnd finds on the host through its vendor files (a driver must match its kernel module); Python and its packages for `lpvlab report` (the host's: LPVLAB_PYTHON
-# names one); ffmpeg for videos; scenes other than the built-in Cornell box (LPVLAB_SHARED_DIR).
+# glvnd finds on the host through its vendor files (a driver must match its kernel module);
+# Python and its packages for `lpvlab report` (the host's: LPVLAB_PYTHON names one); ffmpeg for
+# videos; scenes other than the built-in Cornell box (LPVLAB_SHARED_DIR).
 set -eu
 
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-build=build out=dist archive=0 level=19 part_size=40M osmesa=1
+build=build out=dist archive=0 level=19 part_size=40M osmesa=1 rebuild=1
 while [ $# -gt 0 ]; do
   case $1 in
     --build) build=$2; shift 2 ;;
@@ -39,7 +43,8 @@ while [ $# -gt 0 ]; do
     --level) level=$2; shift 2 ;;
     --part-size) part_size=$2; shift 2 ;;
     --no-osmesa) osmesa=0; shift ;;
-    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
+    --no-build) rebuild=0; shift ;;
+    -h|--help) sed -n '2,33p' "$0"; exit 0 ;;
     *) echo "bundle.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -53,10 +58,13 @@ if [ "$archive" = 1 ] && ! command -v zstd >/dev/null; then
 fi
 
 start=$(date +%s)
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+if [ "$rebuild" = 1 ]; then
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$source_dir" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  fi
+  cmake --build "$build" -j "$(nproc)" --target lpvlab
 fi
-cmake --build "$build" -j "$(nproc)" --target lpvlab
+[ -x "$build/lpvlab" ] || { echo "bundle.sh: error: $build/lpvlab is missing (build it, or drop --no-build)" >&2; exit 1; }
 version=$(sed -n 's/^project(lpvlab VERSION \([0-9.]*\).*/\1/p' "$source_dir/CMakeLists.txt")
 name=lpvlab-$version-$(uname -m)
 folder=$out/$name
@@ -116,6 +124,8 @@ exec "$root/lib/ld-linux-x86-64.so.2" --library-path "$root/lib" --argv0 "$0" \
   "$root/libexec/lpvlab" "$@"
 WRAPPER
 chmod +x "$partial/bin/lpvlab"
+# The whole-program check for a GPU machine (docs/gpu.md): bin/gpu-check runs bin/lpvlab.
+cp "$source_dir/scripts/gpu-check.sh" "$partial/bin/gpu-check"
 
 cp -r "$source_dir/shaders" "$source_dir/experiments" "$partial/share/lpvlab/"
 mkdir -p "$partial/share/lpvlab/analysis"

@@ -28,6 +28,9 @@ struct Options {
   std::string metric;                     // report: the error metric of the speed/accuracy plot
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
   std::string reportOut;                  // report: where it goes ("": DIR/report)
+  std::vector<std::string> images;        // compare: TEST and REFERENCE (run directories or EXRs)
+  std::vector<std::string> aovs;          // compare: the AOVs (default direct, indirect)
+  bool json = false;                      // compare: JSON instead of the table
   bool force = false;                     // run, fit, sweep: replace a finished run, fit or other sweep in --out
 };
 
@@ -47,7 +50,8 @@ int referenceCommand(const Options& options);
 int benchTracerCommand(const Options& options);
 int sweepCommand(const Options& options);    // options.out: the sweep directory
 int summaryCommand(const Options& options);  // options.out: the sweep directory
-int reportCommand(const Options& options);   // options.out: the sweep directory
+int reportCommand(const Options& options);
+int compareCommand(const Options& options);   // options.out: the sweep directory
 int fitCommand(const Options& options);      // options.out: the fit's directory
 int listCommand();
 int infoCommand(const Options& options);  // options.experiment holds the scene

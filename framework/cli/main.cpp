@@ -1,6 +1,6 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
 // `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
-// `lpvlab report DIR`, `lpvlab fit FILE`.
+// `lpvlab report DIR`, `lpvlab fit FILE`, `lpvlab compare TEST REFERENCE`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1; a usage error (an unknown
 // command or option, a missing argument) is one such line too, with exit code 2.
@@ -107,6 +107,15 @@ int main(int argc, char** argv) {
                 "Replace a finished fit in the fit directory (its outputs are removed first)");
   fit->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
 
+  CLI::App* compare = app.add_subcommand(
+      "compare", "How far one run's images are from another's: per AOV the mean, 99th percentile "
+                 "and maximum relative difference over the covered pixels");
+  compare->add_option("images", options.images, "TEST and REFERENCE: run directories or EXR files")
+      ->required()
+      ->expected(2);
+  compare->add_option("--aov", options.aovs, "An AOV to compare (repeatable; default direct, indirect)");
+  compare->add_flag("--json", options.json, "Print JSON instead of the table");
+
   app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
   info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
@@ -142,6 +151,7 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) return lpvlab::cli::sweepCommand(options);
     if (summary->parsed()) return lpvlab::cli::summaryCommand(options);
     if (report->parsed()) return lpvlab::cli::reportCommand(options);
+    if (compare->parsed()) return lpvlab::cli::compareCommand(options);
     if (fit->parsed()) return lpvlab::cli::fitCommand(options);
     return lpvlab::cli::listCommand();
   } catch (const std::exception& e) {

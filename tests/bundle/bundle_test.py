@@ -6,8 +6,8 @@ with an empty environment from elsewhere.
 Checks: the binary links neither libOSMesa nor libEGL (they are opened at run time); the bundle
 carries glibc's loader and OSMesa and not the GPU vendors' GL; no part exceeds 40 MiB and the parts
 are the archive; the unpacked bundle's Cornell box equals the build tree's to the bit (same CPU,
-OSMesa both); "auto" runs; a sweep runs its configurations through the bundle's own script; the
-revision is the source tree's.
+OSMesa both); "auto" runs; a sweep runs its configurations through the bundle's own script; its
+gpu-check runs; the revision is the source tree's.
 
     bundle_test.py BUILD_DIR/lpvlab
 """
@@ -58,7 +58,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="lpvlab-bundle-") as tmp:
         dist = os.path.join(tmp, "dist")
         made = run([os.path.join(SOURCE, "scripts", "bundle.sh"), "--build", build, "--out", dist,
-                    "--archive", "--level", "1", "--part-size", "40M"], cwd=tmp)
+                    "--archive", "--level", "1", "--part-size", "40M", "--no-build"], cwd=tmp)
         if made.returncode != 0:
             print("FAIL: bundle.sh failed", file=sys.stderr)
             return 1
@@ -124,6 +124,12 @@ def main():
 
         auto = run([bundled, "run", "--out", os.path.join(tmp, "auto")] + SMALL, cwd=work, env=bare)
         check(auto.returncode == 0, "the bundle runs with gl.backend = auto")
+
+        check_dir = os.path.join(tmp, "gpu-check")
+        gpu_check = run([os.path.join(moved, "bin", "gpu-check"), "--only", "cornell,directed",
+                         "--size", "32", "--grid", "8", "--out", check_dir], cwd=work, env=bare)
+        check(gpu_check.returncode == 0 and "every configuration matches" in gpu_check.stdout,
+              "the bundle's gpu-check runs the bundle's lpvlab and passes")
 
         sweep_file = os.path.join(work, "s.toml")
         with open(sweep_file, "w") as f:

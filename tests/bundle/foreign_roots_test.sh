@@ -31,7 +31,7 @@ mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sourc
 
 tmp=$(mktemp -d "${TMPDIR:-/var/tmp}/lpvlab-foreign.XXXXXX")
 trap 'rm -rf --one-file-system "$tmp"' EXIT
-"$source_dir/scripts/bundle.sh" --build "$(dirname "$lpvlab")" --out "$tmp/dist" | tail -2
+"$source_dir/scripts/bundle.sh" --build "$(dirname "$lpvlab")" --out "$tmp/dist" --no-build | tail -2
 bundle=$(ls -d "$tmp"/dist/lpvlab-*-x86_64)
 
 small="-s output.width=96 -s output.height=64 -s timing.warmup=0 -s timing.repeats=1 -s grid.resolution=16 -s light_maps.rsm_resolution=64 -s light_maps.shadow_resolution=256"

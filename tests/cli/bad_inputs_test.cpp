@@ -343,7 +343,7 @@ TEST_F(BadInputs, ASweepDirectoryHoldsOneSweepAndItsSummaryOnlyThatSweepsRuns) {
 // required" for an unknown command); --version prints the version and the git revision.
 TEST_F(BadInputs, UsageErrorsExitTwoNamingTheWordAndVersionPrintsTheRevision) {
   for (const auto& [args, word] : std::vector<std::pair<std::string, std::string>>{
-           {"compare", "unknown command 'compare' (commands: run, "},
+           {"comapre", "unknown command 'comapre' (commands: run, "},
            {"", "A subcommand is required"},
            {"run --nosuch", "--nosuch"},
            {"run a.toml b.toml", "b.toml"}}) {
