@@ -23,6 +23,7 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 # missing (a GPU machine without Mesa, Mesa 25.1 without OSMesa) and bundles stay small.
 pkg_check_modules(OSMESA REQUIRED osmesa)
 add_library(lpvlab_gl_headers INTERFACE)
+set_target_properties(lpvlab_gl_headers PROPERTIES EXPORT_NAME gl_headers)
 target_include_directories(lpvlab_gl_headers INTERFACE ${OSMESA_INCLUDE_DIRS})
 target_link_libraries(lpvlab_gl_headers INTERFACE ${CMAKE_DL_LIBS})
 

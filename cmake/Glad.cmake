@@ -10,5 +10,7 @@ add_custom_command(
   COMMENT "Generating the GL 4.5 core loader with glad"
   VERBATIM)
 add_library(lpvlab_glad STATIC "${LPVLAB_GLAD_DIR}/src/gl.c")
-target_include_directories(lpvlab_glad SYSTEM PUBLIC "${LPVLAB_GLAD_DIR}/include")
+target_include_directories(lpvlab_glad SYSTEM PUBLIC "$<BUILD_INTERFACE:${LPVLAB_GLAD_DIR}/include>"
+                                                     "$<INSTALL_INTERFACE:include/lpvlab>")
+set_target_properties(lpvlab_glad PROPERTIES EXPORT_NAME glad)
 set_target_properties(lpvlab_glad PROPERTIES POSITION_INDEPENDENT_CODE ON)
