@@ -18,6 +18,16 @@ with the GPU's peak rates from gpus.toml. What it leaves out, so how to read it:
 The raster passes (shadow maps, RSM, G-buffer) have no counted arithmetic (it is the
 rasteriser's): no estimate.
 
+The calibrated estimate divides that bound by the efficiency a GPU's kernels were measured to
+reach (gpus.toml's [[<gpu>.measured]]: measured units per second over the roofline's, for the
+measured configuration's counts). A stage's efficiency is the median over the measurements of its
+kernel family at the row's SH order (all orders where none matches), with their minimum and
+maximum as its range; a GPU with no measurements borrows those of `calibrate_like`, else takes
+the range over every measured GPU of the family. What the calibration assumes: that a kernel's
+efficiency carries over from the measured configuration to the estimated one (another grid, the
+GV, another variant of the family), which the spread between the measured grids bounds only
+roughly: read the range, not the middle.
+
 thesis_comparison() sets the estimate beside the thesis's measured tables 8.3-8.7 on the GPUs it
 ran on (R9 Fury and GTX 960), at the thesis's configuration (a 32^3 grid in four cascade levels,
 one RSM tile of the given side per level) with the per-unit counts of the sweep's own rows.
@@ -38,11 +48,53 @@ class GpuTableError(Exception):
     """A malformed GPU table: the message names the file, the GPU and the key."""
 
 
+class Measured:
+    """One measured throughput of a kernel family on a GPU, with the counts of what was measured."""
+
+    def __init__(self, family, sh_order, units_per_s, multiply_adds_per_unit, bytes_per_unit, source):
+        self.family, self.sh_order, self.units_per_s = family, sh_order, units_per_s
+        self.multiply_adds_per_unit, self.bytes_per_unit = multiply_adds_per_unit, bytes_per_unit
+        self.source = source
+
+
 class Gpu:
-    def __init__(self, key, name, fma_per_s, bytes_per_s, thesis_setup=None):
+    def __init__(self, key, name, fma_per_s, bytes_per_s, thesis_setup=None, measured=(),
+                 calibrate_like=None):
         self.key, self.name = key, name
         self.fma_per_s, self.bytes_per_s = fma_per_s, bytes_per_s
         self.thesis_setup = thesis_setup
+        self.measured = list(measured)
+        self.calibrate_like = calibrate_like
+
+    def efficiency(self, m):
+        """Measured units per second over the roofline's for the measured counts."""
+        roofline_s = max(m.multiply_adds_per_unit / self.fma_per_s, m.bytes_per_unit / self.bytes_per_s)
+        return m.units_per_s * roofline_s
+
+
+def _positive(path, key, field, v):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+        raise GpuTableError(f"{path}: [{key}] {field} = {v!r} is not a positive number")
+    return float(v)
+
+
+def _measured(path, key, entries):
+    if not isinstance(entries, list):
+        raise GpuTableError(f"{path}: [{key}] measured must be an array of tables ([[{key}.measured]])")
+    out = []
+    for i, e in enumerate(entries):
+        where = f"{key}.measured[{i}]"
+        if not isinstance(e, dict):
+            raise GpuTableError(f"{path}: [{where}] is not a table")
+        for field in ("family", "sh_order", "units_per_s", "multiply_adds_per_unit", "bytes_per_unit", "source"):
+            if field not in e:
+                raise GpuTableError(f"{path}: [{where}] has no '{field}'")
+        out.append(Measured(str(e["family"]), int(e["sh_order"]),
+                            _positive(path, where, "units_per_s", e["units_per_s"]),
+                            _positive(path, where, "multiply_adds_per_unit", e["multiply_adds_per_unit"]),
+                            _positive(path, where, "bytes_per_unit", e["bytes_per_unit"]),
+                            str(e["source"])))
+    return out
 
 
 def load_gpus(path=DEFAULT_TABLE):
@@ -61,15 +113,43 @@ def load_gpus(path=DEFAULT_TABLE):
         for field in ("name", "fma_per_s", "bytes_per_s"):
             if field not in entry:
                 raise GpuTableError(f"{path}: [{key}] has no '{field}'")
-        for field in ("fma_per_s", "bytes_per_s"):
-            v = entry[field]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
-                raise GpuTableError(f"{path}: [{key}] {field} = {v!r} is not a positive number")
-        gpus.append(Gpu(key, str(entry["name"]), float(entry["fma_per_s"]), float(entry["bytes_per_s"]),
-                        entry.get("thesis_setup")))
+        gpus.append(Gpu(key, str(entry["name"]), _positive(path, key, "fma_per_s", entry["fma_per_s"]),
+                        _positive(path, key, "bytes_per_s", entry["bytes_per_s"]),
+                        entry.get("thesis_setup"), _measured(path, key, entry.get("measured", [])),
+                        entry.get("calibrate_like")))
     if not gpus:
         raise GpuTableError(f"{path}: no GPUs")
+    keys = {g.key for g in gpus}
+    for g in gpus:
+        if g.calibrate_like is not None and g.calibrate_like not in keys:
+            raise GpuTableError(f"{path}: [{g.key}] calibrate_like = {g.calibrate_like!r} names no GPU "
+                                f"of the table")
     return gpus
+
+
+def efficiency(gpu, gpus, family, sh_order):
+    """(median, low, high, basis) of the efficiency of `family` on `gpu` at `sh_order` (see the
+    module's docstring); None without any measurement of the family. basis says whose: "measured",
+    "like <name>" or "every measured GPU"."""
+    by_key = {g.key: g for g in gpus}
+
+    def of(g):
+        ms = [m for m in g.measured if m.family == family]
+        same = [m for m in ms if m.sh_order == sh_order]
+        return [g.efficiency(m) for m in (same or ms)]
+
+    values, basis = of(gpu), "measured"
+    if not values and gpu.calibrate_like in by_key:
+        values, basis = of(by_key[gpu.calibrate_like]), f"like {by_key[gpu.calibrate_like].name}"
+    if not values:
+        values = [v for g in gpus for v in of(g)]
+        basis = "every measured GPU"
+    if not values:
+        return None
+    values = sorted(values)
+    middle = len(values) // 2
+    median = values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
+    return median, values[0], values[-1], basis
 
 
 def stage_ms(multiply_adds, bytes_, gpu):
@@ -97,11 +177,18 @@ def _column(df, name):
     return df[name].astype(float) if name in df.columns else pd.Series([math.nan] * len(df), index=df.index)
 
 
+CALIBRATED = "gpu_calibrated_ms."
+
+
 def with_estimates(df, gpus):
-    """df with a gpu_estimate_ms.<gpu>.<stage> column per GPU and counted stage, and
-    gpu_estimate_ms.<gpu>.total (their sum: the stages with counts only)."""
+    """df with, per GPU and counted stage, the roofline bound gpu_estimate_ms.<gpu>.<stage> (and
+    .total, the sum over the counted stages), and where the stage's kernel family has a measured
+    efficiency (efficiency()) the calibrated estimate gpu_calibrated_ms.<gpu>.<stage>, its range
+    .<stage>.low and .<stage>.high, and .<stage>.basis (whose measurements)."""
     out = df.copy()
     stages = counted_stages(df)
+    orders = (df["param.grid.sh_order"] if "param.grid.sh_order" in df.columns
+              else pd.Series([1] * len(df), index=df.index))
     for gpu in gpus:
         total = pd.Series([0.0] * len(df), index=df.index)
         for stage in stages:
@@ -110,6 +197,25 @@ def with_estimates(df, gpus):
             ms = pd.Series([stage_ms(m, b, gpu) for m, b in zip(madds, nbytes)], index=df.index)
             out[f"{PREFIX}{gpu.key}.{stage}"] = ms
             total = total + ms.fillna(0.0)
+            calibrated = {"": [], ".low": [], ".high": [], ".basis": []}
+            for bound, order in zip(ms, orders):
+                try:
+                    order = int(order)
+                except (TypeError, ValueError):
+                    order = 1
+                e = efficiency(gpu, gpus, stage, order)
+                if e is None or math.isnan(bound):
+                    for k in calibrated:
+                        calibrated[k].append("" if k == ".basis" else math.nan)
+                    continue
+                median, low, high, basis = e
+                calibrated[""].append(bound / median)
+                calibrated[".low"].append(bound / high)
+                calibrated[".high"].append(bound / low)
+                calibrated[".basis"].append(basis)
+            if any(b for b in calibrated[".basis"]):
+                for k, values in calibrated.items():
+                    out[f"{CALIBRATED}{gpu.key}.{stage}{k}"] = pd.Series(values, index=df.index)
         out[f"{PREFIX}{gpu.key}.total"] = total
     return out
 

@@ -121,26 +121,51 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
     return result
 
 
+_BASIS_MARK = {"measured": "", "every measured GPU": "†"}
+
+
+def _calibrated_text(row, gpu, stage):
+    """'m (lo-hi)' of the calibrated estimate, marked by whose measurements; '—' without any."""
+    key = f"{G.CALIBRATED}{gpu.key}.{stage}"
+    value = row.get(key, float("nan"))
+    if not isinstance(value, float) or value != value:
+        return "—"
+    basis = str(row.get(key + ".basis", ""))
+    mark = _BASIS_MARK.get(basis, "*")  # "like <GPU>": borrowed from the same chip
+    return (f"{tables.fmt(value)} ({tables.fmt(row[key + '.low'])}–{tables.fmt(row[key + '.high'])})"
+            f"{mark}")
+
+
 def _gpu_estimate_section(agg, gpus):
-    """Per configuration and counted stage: the time measured here and the estimate per GPU."""
+    """Per configuration and counted stage: the time measured here and, per GPU, the roofline
+    bound and the calibrated estimate, each labelled (G.with_estimates)."""
     stages = G.counted_stages(agg)
     if not stages:
         return [], ""
     est = G.with_estimates(agg, gpus)
-    head = "".join(f"<th>estimate {html.escape(g.name)}</th>" for g in gpus)
-    md_head = "| configuration | stage | measured here (ms) | " + " | ".join(f"est. {g.name} (ms)" for g in gpus) + " |"
-    md = [md_head, "|" + "---|" * (3 + len(gpus))]
+    head = "".join(f"<th>{html.escape(g.name)}: roofline bound</th><th>{html.escape(g.name)}: calibrated "
+                   f"(range)</th>" for g in gpus)
+    md_head = ("| configuration | stage | measured here (ms) | "
+               + " | ".join(f"{g.name} roofline bound (ms) | {g.name} calibrated (range) (ms)" for g in gpus) + " |")
+    md = [md_head, "|" + "---|" * (3 + 2 * len(gpus))]
     h = [f"<table><thead><tr><th>configuration</th><th>stage</th><th>measured here (ms)</th>{head}</tr></thead><tbody>"]
     for _, row in est.iterrows():
         for stage in stages:
             measured = row.get(S.time_col(stage), float("nan"))
-            values = [row[f"{G.PREFIX}{g.key}.{stage}"] for g in gpus]
-            cells = "".join(f"<td class='num'>{tables.fmt(v)}</td>" for v in values)
+            pairs = [(tables.fmt(row[f"{G.PREFIX}{g.key}.{stage}"]), _calibrated_text(row, g, stage)) for g in gpus]
+            cells = "".join(f"<td class='num'>{b}</td><td class='num'>{html.escape(c)}</td>" for b, c in pairs)
             h.append(f"<tr><td>{html.escape(str(row['config_name']))}</td><td>{html.escape(stage)}</td>"
                      f"<td class='num'>{tables.fmt(measured)}</td>{cells}</tr>")
             md.append(f"| {row['config_name']} | {stage} | {tables.fmt(measured)} | "
-                      + " | ".join(tables.fmt(v) for v in values) + " |")
+                      + " | ".join(f"{b} | {c}" for b, c in pairs) + " |")
     h.append("</tbody></table>")
+    note = ("Roofline bound: the fastest the counted work could run. Calibrated: the bound divided by "
+            "the efficiency measured for the stage's kernel family (median over the measurements, range "
+            "over them); * borrowed from the same chip (calibrate_like), † the range over every measured "
+            "GPU, — no measurement of the family. Measurements: gpus.toml.")
+    h.append(f"<p class='note'>{html.escape(note)}</p>")
+    md.append("")
+    md.append(note)
     return h, "\n".join(md) + "\n"
 
 
@@ -369,11 +394,13 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     if estimate:
         body.append("<h2>Estimated GPU time (an estimate, not a measurement)</h2>")
         body.append("<p class='note'>Per stage with counted work: the time measured here (on this machine's "
-                    "backend) and, per GPU of <code>analysis/lpvlab_analysis/gpus.toml</code>, the roofline bound "
+                    f"backend: {html.escape(S.timed_on(agg))}) and, per GPU of "
+                    "<code>analysis/lpvlab_analysis/gpus.toml</code>, two labelled figures: the roofline bound "
                     "of the GL kernels' counted arithmetic and memory traffic, max(multiply-adds / peak rate, "
-                    "bytes / bandwidth). Not in it: launch costs, caches serving re-read neighbours (the memory "
-                    "term is pessimistic), the peak rate never reached (the arithmetic term is optimistic); "
-                    "see gpu_estimate.py. The raster passes have no counted arithmetic.</p>")
+                    "bytes / bandwidth), and the calibrated estimate, that bound over the efficiency the "
+                    "stage's kernels were measured to reach on a GPU (lpvlab's gather on an H200 reached 2-7% of "
+                    "its bound; the thesis's kernels 30-40% on their GPUs). Not in either: launch costs. See "
+                    "gpu_estimate.py and docs/benchmarks.md. The raster passes have no counted arithmetic.</p>")
         body.extend(estimate)
         fsutil.write_text(os.path.join(out_dir, "gpu_estimate.md"), estimate_md)
         body.append("<p class='note'>Markdown version: <a href='gpu_estimate.md'>gpu_estimate.md</a></p>")

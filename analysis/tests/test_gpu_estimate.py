@@ -181,9 +181,58 @@ class ReportSectionTest(unittest.TestCase):
                             "gpu_work.propagation.multiply_adds": 1e9, "gpu_work.propagation.bytes": 1e6}])
         html, md = report._gpu_estimate_section(df, [_gpu(1e12, 100e9)])
         text = "\n".join(html)
-        self.assertIn("estimate Test GPU", text)
+        self.assertIn("Test GPU: roofline bound", text)
+        self.assertIn("Test GPU: calibrated (range)", text)
         self.assertIn("measured here (ms)", text)
-        self.assertIn("| a | propagation | 12.5 | 1 |", md)   # 1e9 / 1e12 s = 1 ms
+        self.assertIn("| a | propagation | 12.5 | 1 | — |", md)   # 1e9 / 1e12 s = 1 ms; no measurement
+
+    def test_the_calibrated_estimate_divides_the_bound_by_the_measured_efficiency(self):
+        # A GPU measured at a quarter and at half of its roofline (bytes-bound: 400 bytes per unit
+        # at 100 GB/s is 2.5e8 units/s): the median efficiency 3/8, the range 1/4..1/2.
+        measured = [G.Measured("propagation", 1, 2.5e8 * e, 10, 400, "test") for e in (0.25, 0.5)]
+        gpu = G.Gpu("m", "Measured GPU", 1e12, 100e9, measured=measured)
+        like = G.Gpu("l", "Like GPU", 1e12, 50e9, calibrate_like="m")
+        none = G.Gpu("n", "Other GPU", 1e12, 100e9)
+        gpus = [gpu, like, none]
+        self.assertEqual(G.efficiency(gpu, gpus, "propagation", 1), (0.375, 0.25, 0.5, "measured"))
+        self.assertEqual(G.efficiency(like, gpus, "propagation", 1)[3], "like Measured GPU")
+        self.assertEqual(G.efficiency(none, gpus, "propagation", 1)[3], "every measured GPU")
+        self.assertIsNone(G.efficiency(gpu, gpus, "injection", 1))
+        df = pd.DataFrame([{"config_name": "a", "param.grid.sh_order": 1,
+                            "gpu_work.propagation.multiply_adds": 1e6, "gpu_work.propagation.bytes": 1e9}])
+        est = G.with_estimates(df, gpus)
+        bound = est["gpu_estimate_ms.m.propagation"][0]
+        self.assertAlmostEqual(bound, 10.0)                         # 1e9 B / 100 GB/s
+        self.assertAlmostEqual(est["gpu_calibrated_ms.m.propagation"][0], 10.0 / 0.375)
+        self.assertAlmostEqual(est["gpu_calibrated_ms.m.propagation.low"][0], 20.0)
+        self.assertAlmostEqual(est["gpu_calibrated_ms.m.propagation.high"][0], 40.0)
+        # The like GPU has half the bandwidth: twice the bound, the same efficiencies.
+        self.assertAlmostEqual(est["gpu_calibrated_ms.l.propagation"][0], 20.0 / 0.375)
+
+    def test_malformed_measurements_name_the_file_gpu_and_key(self):
+        base = "[x]\nname = 'X'\nfma_per_s = 1e12\nbytes_per_s = 1e9\n"
+        for extra, needle in (("[[x.measured]]\nfamily = 'propagation'\n", "x.measured[0]] has no 'sh_order'"),
+                              ("[[x.measured]]\nfamily = 'p'\nsh_order = 1\nunits_per_s = -1\n"
+                               "multiply_adds_per_unit = 1\nbytes_per_unit = 1\nsource = 's'\n", "units_per_s = -1"),
+                              ("calibrate_like = 'nope'\n", "calibrate_like = 'nope' names no GPU")):
+            table = _table(base + extra)
+            with self.assertRaises(G.GpuTableError) as ctx:
+                G.load_gpus(table)
+            self.assertIn(table, str(ctx.exception))
+            self.assertIn(needle, str(ctx.exception))
+
+    def test_the_shipped_measurements_say_the_gather_reaches_a_few_percent_on_an_h200(self):
+        gpus = G.load_gpus()
+        h200 = next(g for g in gpus if g.key == "h200")
+        median, low, high, basis = G.efficiency(h200, gpus, "propagation", 1)
+        self.assertEqual(basis, "measured")
+        # 4.8e12 B/s / 432 B = 1.11e10 cell-iterations/s is the bound; 4.5e8..7.9e8 were measured.
+        self.assertAlmostEqual(low, 4.5e8 * 432 / 4.8e12)
+        self.assertAlmostEqual(high, 7.9e8 * 432 / 4.8e12)
+        fury = next(g for g in gpus if g.key == "r9_fury")
+        self.assertGreater(G.efficiency(fury, gpus, "propagation", 1)[0], 5 * median)
+        h100 = next(g for g in gpus if g.key == "h100_sxm")
+        self.assertEqual(G.efficiency(h100, gpus, "propagation", 3)[3], "like NVIDIA H200")
 
 
 if __name__ == "__main__":
