@@ -12,7 +12,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/lpvlab-gpu-check.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 status=0
 
-"$source_dir/scripts/gpu-check.sh" --lpvlab "$lpvlab" --out "$tmp/all" --size 64 --grid 16
+"$source_dir/scripts/gpu-check.sh" --lpvlab "$lpvlab" --out "$tmp/all" --size 32 --grid 8
 [ $? -eq 0 ] || { echo "FAIL: gpu-check on this machine's GL"; status=1; }
 
 "$source_dir/scripts/gpu-check.sh" --lpvlab "$lpvlab" --out "$tmp/strict" --size 64 --grid 16 \
