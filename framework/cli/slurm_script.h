@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_expansion.h"
 
 namespace lpvlab::cli {
 

@@ -24,7 +24,10 @@
 #include "framework/core/parameters.h"
 #include "framework/core/progress.h"
 #include "framework/experiment/experiment.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/experiment_file.h"
+#include "framework/experiment/sweep_check.h"
+#include "framework/experiment/sweep_expansion.h"
+#include "framework/experiment/sweep_summary.h"
 #include "framework/io/atomic_file.h"
 
 namespace lpvlab::cli {

@@ -9,7 +9,8 @@
 #include "framework/animation/animation_file.h"
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/experiment_file.h"
+#include "framework/experiment/sweep_expansion.h"
 #include "framework/particles/particle_file.h"
 #include "framework/scene/scene_loader.h"
 

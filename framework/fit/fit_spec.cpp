@@ -8,7 +8,7 @@
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/experiment_file.h"
 
 namespace lpvlab {
 

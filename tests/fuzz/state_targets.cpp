@@ -5,7 +5,7 @@
 #include <string>
 
 #include "framework/core/error.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_summary.h"
 #include "framework/fit/fit_checkpoint.h"
 #include "framework/reference/reference_cache.h"
 #include "fuzz/fuzz_targets.h"

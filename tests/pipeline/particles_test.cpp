@@ -31,7 +31,7 @@
 #include "sweep_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/run.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_summary.h"
 #include "framework/particles/particle_billboards.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/raster_passes.h"

@@ -19,7 +19,7 @@
 
 #include "error_support.h"
 #include "framework/experiment/run.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_summary.h"
 #include "framework/io/child_process.h"
 #include "framework/io/image.h"
 #include "framework/math/cascade_placement.h"

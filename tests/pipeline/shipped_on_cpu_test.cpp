@@ -20,7 +20,7 @@
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/scene_cache.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_expansion.h"
 #include "framework/pipeline/pipeline.h"
 #include "io/temp_dir.h"
 #include "pipeline_test_support.h"

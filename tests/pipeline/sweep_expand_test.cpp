@@ -16,7 +16,8 @@
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/json_path.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/experiment_file.h"
+#include "framework/experiment/sweep_expansion.h"
 #include "io/temp_dir.h"
 
 namespace lpvlab {

@@ -19,7 +19,7 @@
 
 #include "sweep_support.h"
 #include "framework/experiment/experiment.h"
-#include "framework/experiment/sweep.h"
+#include "framework/experiment/sweep_summary.h"
 #include "framework/io/atomic_file.h"
 #include "framework/pipeline/pipeline.h"
 #include "io/temp_dir.h"
