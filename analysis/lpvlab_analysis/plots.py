@@ -17,7 +17,6 @@ from . import summary as S  # noqa: E402
 from . import thesis_tables as T  # noqa: E402
 
 TIME_COL = S.TIME_COL
-STAGE_ORDER = [s for s in S.STAGES if s != "total"]
 
 
 def _save(fig, path):
@@ -84,10 +83,8 @@ def stage_times(agg, param, path):
     (summary.one_at_a_time)."""
     sl = S.one_at_a_time(agg, param)
     col = S.time_col
-    stages = [s for s in STAGE_ORDER if col(s) in sl.columns and sl[col(s)].notna().any()]
-    # A method's own stages (docs/methods.md) that the list above does not know, after them.
-    stages += sorted(c[len("time."):-len(".ms")] for c in sl.columns
-                     if S.is_time_col(c) and c[len("time."):-len(".ms")] not in S.STAGES and sl[c].notna().any())
+    # In the order the runs ran them (the summary's column order), the total left out.
+    stages = [s for s in S.stages(sl) if s != "total" and sl[col(s)].notna().any()]
     if sl[param].nunique() < 2 or not stages:
         return None
     variants = sorted(set(sl["variant"]))

@@ -15,9 +15,6 @@ import os
 import numpy as np
 import pandas as pd
 
-STAGES = ["shadow_maps", "rsm", "gbuffer", "direct", "clear", "occlusion", "injection",
-          "propagation", "vpls", "vpl_shadow_maps", "meshing", "form_factors", "first_shot", "solve",
-          "refine", "indirect", "total"]
 TYPE_PARAMS = ["param.injection.type", "param.occlusion.type", "param.propagation.type",
                "param.rendering.type"]
 # [indirect] method: "lpv" (the strategies above) or another indirect-light method, whose rows
@@ -47,6 +44,12 @@ TIME_COL = time_col("total")
 
 def is_time_col(col):
     return col.startswith("time.") and col.endswith(".ms")
+
+
+def stages(df):
+    """The stages of the summary's time.<stage>.ms columns, in their column order: the order the
+    runs ran them (lpvlab summary merges the manifests' timing.stage_order), "total" last."""
+    return [c[len("time."):-len(".ms")] for c in df.columns if is_time_col(c)]
 
 
 def _unique(df, col):

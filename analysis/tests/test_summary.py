@@ -53,6 +53,15 @@ class SummaryTest(unittest.TestCase):
         self.assertEqual(old["time.propagation.ms"].iloc[0], 1.0)
         self.assertIn("clock not recorded", S.timed_on(old))
 
+    def test_stages_come_in_the_summarys_column_order(self):
+        # lpvlab summary writes the time columns in the order the runs ran the stages; the report
+        # stacks them in that order (no list of stage names of its own).
+        p = os.path.join(self.dir, "o.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,time.rsm.ms,time.vpls.ms,time.indirect.ms,time.total.ms\n")
+            f.write("a,A,0,a,1,2,3,6\n")
+        self.assertEqual(S.stages(S.load_summary(p)), ["rsm", "vpls", "indirect", "total"])
+
     def test_memory_groups_are_numeric(self):
         p = os.path.join(self.dir, "m.csv")
         with open(p, "w") as f:

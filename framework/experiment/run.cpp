@@ -1,5 +1,6 @@
 #include "framework/experiment/run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -19,6 +20,7 @@ nlohmann::json TimingReport::toJson() const {
   for (const auto& [stage, summary] : stageMs) out["stage_ms"][stage] = summary.toJson();
   for (const auto& [stage, summary] : wallMs) out["wall_ms"][stage] = summary.toJson();
   out["clock"] = clock;
+  out["stage_order"] = order;
   out["samples"] = {{"stage_ms", stageSamples}, {"wall_ms", wallSamples}};
   return out;
 }
@@ -33,7 +35,11 @@ TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup) {
     byStage["total"].push_back(stageTotal);
     wall["total"].push_back(wallTotal);
     for (const auto& [stage, clock] : times.clock) report.clock[stage] = clock;
+    for (const std::string& stage : times.order)
+      if (std::find(report.order.begin(), report.order.end(), stage) == report.order.end())
+        report.order.push_back(stage);
   }
+  if (!frames.empty()) report.order.push_back("total");
   // The total adds the stages' times; it is one clock's only when every stage's is.
   std::string total;
   for (const auto& [stage, clock] : report.clock) total = total.empty() || total == clock ? clock : "mixed";

@@ -29,6 +29,8 @@ struct TimingReport {
   // Per stage: kGlTimerQuery or kCpuWallClock (pipeline.h); "total": theirs when all agree, else
   // "mixed".
   std::map<std::string, std::string> clock;
+  // The stages in the order the frames ran them (the maps above are sorted by name), then "total".
+  std::vector<std::string> order;
   nlohmann::json toJson() const;
 };
 

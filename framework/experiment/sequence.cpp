@@ -51,6 +51,8 @@ FrameTimes frameTimesOf(const nlohmann::json& record) {
   for (const auto& [stage, ms] : stageMs.items()) times.stageMs[stage] = ms.get<double>();
   if (const auto* clock = findPath(record, "stage_clock"); clock && clock->is_object())
     for (const auto& [stage, name] : clock->items()) times.clock[stage] = name.get<std::string>();
+  if (const auto* order = findPath(record, "stage_order"); order && order->is_array())
+    for (const auto& stage : *order) times.order.push_back(stage.get<std::string>());
   for (const auto& [stage, ms] : record.at("wall_ms").items())
     times.wallMs[stage] = ms.get<double>();
   return times;
@@ -272,6 +274,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
                              {"configuration_hash", configuration},
                              {"stage_ms", times.stageMs},
                              {"stage_clock", times.clock},
+                             {"stage_order", times.order},
                              {"wall_ms", times.wallMs},
                              {"png_exposure_stops", *exposure}};
     for (std::size_t s = 0; s < aliveParticles.size(); ++s)

@@ -140,7 +140,10 @@ Manifests readManifests(const fs::path& root, const SweepIndex& index, SummaryRe
 // The columns beyond the fixed ones: what any of the manifests has, each set sorted.
 struct Columns {
   std::vector<std::string> params;  // the swept keys, then the ones every summary has
-  std::set<std::string> stages, memoryGroups, workKeys, temporal, figures;
+  // The stages in the order the runs ran them (timing.stage_order: a merge of every manifest's,
+  // first seen first), then any a manifest has without an order (older manifests), sorted.
+  std::vector<std::string> stages;
+  std::set<std::string> memoryGroups, workKeys, temporal, figures;
   std::set<std::pair<std::string, std::string>> metrics;  // pair, metric
   bool warnings = false;
   // Per id: the work counts (workColumns) and the figures beside the timings: another indirect
@@ -178,9 +181,15 @@ void Columns::add(const std::string& id, const nlohmann::json& m) {
   if (const auto* g = findPath(m, "memory_bytes"); g && g->is_object())
     for (const auto& [group, _] : g->items())
       if (group != "total") memoryGroups.insert(group);
+  const auto addStage = [&](const std::string& stage) {
+    if (std::find(stages.begin(), stages.end(), stage) == stages.end()) stages.push_back(stage);
+  };
+  if (const auto* order = findPath(m, "timing.stage_order"); order && order->is_array())
+    for (const auto& stage : *order)
+      if (stage.is_string()) addStage(stage.get<std::string>());
   for (const nlohmann::json* s : {stageSamples(m), findPath(m, "timing.samples.wall_ms")})
     if (s && s->is_object())
-      for (const auto& [stage, _] : s->items()) stages.insert(stage);
+      for (const auto& [stage, _] : s->items()) addStage(stage);
   // A sequence's temporal figures (sequence_temporal.h): its frames' relative change and error.
   if (const auto* records = findPath(m, "sequence.frame_records"); records && records->is_array())
     for (const auto& record : *records)
@@ -217,6 +226,9 @@ Columns columnsOf(const SweepIndex& index, const Manifests& manifests, const fs:
   // Particle systems' drawing, where a sweep does not set it: the report tells geometry from light
   // fields by it.
   if (columns.figures.count("particles.alive")) addParam("particles[0].draw");
+  // The frame's total after every stage of every run.
+  std::stable_partition(columns.stages.begin(), columns.stages.end(),
+                        [](const std::string& stage) { return stage != "total"; });
   return columns;
 }
 

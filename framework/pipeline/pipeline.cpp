@@ -148,6 +148,8 @@ void Pipeline::stage(const std::string& name, FrameTimes& times, F&& work) {
   glFinish();
   times.wallMs[name] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (std::find(times.order.begin(), times.order.end(), name) == times.order.end())
+    times.order.push_back(name);
 }
 
 Frame Pipeline::frame(int level) {

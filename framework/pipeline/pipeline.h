@@ -68,6 +68,7 @@ struct FrameTimes {
   std::map<std::string, double> stageMs;       // by the stage's own clock (below)
   std::map<std::string, std::string> clock;    // kGlTimerQuery or kCpuWallClock, per stage
   std::map<std::string, double> wallMs;        // steady clock, each stage ended by glFinish
+  std::vector<std::string> order;              // the stages in the order they ran
 };
 
 // Flux bookkeeping of injection (W, summed over RGB): what the RSMs reflect, and what the grid

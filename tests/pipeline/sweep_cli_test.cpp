@@ -149,6 +149,15 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
                              "timed_on.cpu", "memory_bytes",
                              "memory_bytes.light_grid", "memory_bytes.light_maps", "cells"})
     EXPECT_NE(std::find(before.header.begin(), before.header.end(), column), before.header.end()) << column;
+  // The stages' columns in the order the pipeline ran them (not alphabetical), the total last.
+  std::vector<std::string> timed;
+  for (const std::string& column : before.header)
+    if (column.rfind("time.", 0) == 0 && column.size() > 8 && column.substr(column.size() - 3) == ".ms")
+      timed.push_back(column);
+  EXPECT_EQ(timed, (std::vector<std::string>{"time.shadow_maps.ms", "time.rsm.ms", "time.gbuffer.ms",
+                                             "time.direct.ms", "time.clear.ms", "time.occlusion.ms",
+                                             "time.injection.ms", "time.propagation.ms",
+                                             "time.indirect.ms", "time.total.ms"}));
   std::set<std::string> iterations;
   for (const auto& row : before.rows) {
     iterations.insert(row.at("param.propagation.iterations"));
