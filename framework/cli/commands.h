@@ -30,7 +30,7 @@ struct Options {
   std::string reportOut;                  // report: where it goes ("": DIR/report)
   std::vector<std::string> images;        // compare: TEST and REFERENCE (run directories or EXRs)
   std::vector<std::string> aovs;          // compare: the AOVs (default direct, indirect)
-  bool json = false;                      // compare: JSON instead of the table
+  bool json = false;                      // compare, list: JSON instead of the text
   bool force = false;                     // run, fit, sweep: replace a finished run, fit or other sweep in --out
 };
 
@@ -53,7 +53,7 @@ int summaryCommand(const Options& options);  // options.out: the sweep directory
 int reportCommand(const Options& options);
 int compareCommand(const Options& options);   // options.out: the sweep directory
 int fitCommand(const Options& options);      // options.out: the fit's directory
-int listCommand();
+int listCommand(bool json);  // json: `lpvlab list --json`
 int infoCommand(const Options& options);  // options.experiment holds the scene
 
 }  // namespace lpvlab::cli

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "framework/cli/commands.h"
+#include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/strategy_catalogue.h"
 
 namespace lpvlab::cli {
@@ -23,6 +24,42 @@ std::string resourceLine(const ResourceUses& uses) {
   return line;
 }
 
+nlohmann::json resourcesJson(const ResourceUses& uses) {
+  nlohmann::json out = {{"produces", nlohmann::json::array()},
+                        {"consumes", nlohmann::json::array()},
+                        {"reads", nlohmann::json::array()}};
+  for (const ResourceUses::Use& use : uses.uses())
+    out[use.kind == ResourceUses::Kind::Produces   ? "produces"
+        : use.kind == ResourceUses::Kind::Consumes ? "consumes"
+                                                   : "reads"]
+        .push_back(use.name);
+  return out;
+}
+
+// `lpvlab list --json`: the same, for programs (the analysis, scripts): LPV's stages in the order
+// the pipeline runs them, every strategy and method with its parameters' defaults, resources and
+// CPU kernel, each method's own stages.
+int listJson() {
+  nlohmann::json out = {{"lpv_stages", Pipeline::stageNames()},
+                        {"strategies", nlohmann::json::array()},
+                        {"methods", nlohmann::json::array()}};
+  for (const CatalogueEntry& entry : strategyCatalogue())
+    out["strategies"].push_back({{"stage", entry.stage},
+                                 {"name", entry.name},
+                                 {"description", entry.description},
+                                 {"resources", resourcesJson(entry.uses)},
+                                 {"cpu_kernel", entry.cpuRefusal.empty()},
+                                 {"cpu_refusal", entry.cpuRefusal},
+                                 {"parameters", entry.defaults}});
+  for (const MethodCatalogueEntry& method : methodCatalogue())
+    out["methods"].push_back({{"name", method.name},
+                              {"description", method.description},
+                              {"stages", method.stages},
+                              {"parameters", method.defaults}});
+  std::cout << out.dump(2) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 // The strategies of each stage in pipeline order, with the resources each produces and consumes
@@ -30,7 +67,8 @@ std::string resourceLine(const ResourceUses& uses) {
 // parameters; their parameters are documented in the header of variants/<stage>/<name>.cpp and in
 // docs/variants.md. Then the indirect methods beside LPV with their parameters' defaults
 // (variants/methods/, docs/methods.md).
-int listCommand() {
+int listCommand(bool json) {
+  if (json) return listJson();
   std::string stage;
   for (const CatalogueEntry& entry : strategyCatalogue()) {
     if (entry.stage != stage) std::cout << "[" << (stage = entry.stage) << "] type =\n";

@@ -116,7 +116,10 @@ int main(int argc, char** argv) {
   compare->add_option("--aov", options.aovs, "An AOV to compare (repeatable; default direct, indirect)");
   compare->add_flag("--json", options.json, "Print JSON instead of the table");
 
-  app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");
+  CLI::App* list =
+      app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");
+  list->add_flag("--json", options.json,
+                 "Print JSON (stages, strategies, methods, resources, parameters' defaults)");
   CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
   info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
       ->required();
@@ -153,7 +156,7 @@ int main(int argc, char** argv) {
     if (report->parsed()) return lpvlab::cli::reportCommand(options);
     if (compare->parsed()) return lpvlab::cli::compareCommand(options);
     if (fit->parsed()) return lpvlab::cli::fitCommand(options);
-    return lpvlab::cli::listCommand();
+    return lpvlab::cli::listCommand(options.json);
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";
     return 1;

@@ -50,6 +50,7 @@ void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
     alone.backend = ComputeBackend::Cpu;
     item.cpuRefusal = strategy->cpuRefusal(alone);
     item.parameters = parameterLine(params);
+    item.defaults = params.resolved();
     out.push_back(std::move(item));
   }
 }
@@ -70,8 +71,9 @@ std::vector<MethodCatalogueEntry> methodCatalogue() {
   for (const auto& [name, entry] : Registry<IndirectMethod>::instance().entries()) {
     const toml::table defaults;
     Params params(defaults, "the method catalogue", "indirect");
-    entry.factory(params);
-    entries.push_back({name, entry.description, parameterLine(params)});
+    const auto method = entry.factory(params);
+    entries.push_back({name, entry.description, parameterLine(params), params.resolved(),
+                       method->stageNames()});
   }
   return entries;
 }

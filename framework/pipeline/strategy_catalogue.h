@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
@@ -17,6 +19,7 @@ struct CatalogueEntry {
   ResourceUses uses;  // with the default parameters (a parameter may change them)
   std::string cpuRefusal;  // why it has no CPU kernel with its defaults alone, or "" if it has one
   std::string parameters;  // "key = value, ..." as the strategy reads them by default
+  nlohmann::json defaults;  // the same as an object: key -> default value
 };
 
 // In pipeline order, each stage's strategies by name.
@@ -28,6 +31,8 @@ struct MethodCatalogueEntry {
   std::string name;
   std::string description;
   std::string parameters;  // "key = value, ..." as the method reads them by default
+  nlohmann::json defaults;  // the same as an object: key -> default value
+  std::vector<std::string> stages;  // its timed stages, in the order it runs them
 };
 std::vector<MethodCatalogueEntry> methodCatalogue();
 
