@@ -10,8 +10,9 @@
 #include "framework/cli/commands.h"
 #include "framework/io/atomic_file.h"
 #include "framework/io/provenance.h"
-#include "framework/experiment/run.h"
-#include "framework/particles/particle_billboards.h"
+#include "framework/experiment/experiment_renderer.h"
+#include "framework/experiment/timing.h"
+#include "framework/gl/context.h"
 
 namespace lpvlab::cli {
 
@@ -39,8 +40,8 @@ int benchCommand(const Options& options) {
         std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "
                   << e.warmupFrames << " warm-up + " << e.repeats << " repeats, medians (ms)\n";
       }
-      Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
-      const ParticleBillboardSet billboards(e.particles, e.animation.frameTime(0), shaders, pipeline);
+      ExperimentRenderer renderer(e, e.animation.frameTime(0), shaders);
+      Pipeline& pipeline = renderer.pipeline();
       const std::size_t cells = pipeline.propagatedCells();  // every cascade level's
       const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
       if (!header) {

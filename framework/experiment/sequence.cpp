@@ -16,7 +16,8 @@
 #include "framework/core/hash.h"
 #include "framework/core/progress.h"
 #include "framework/experiment/json_path.h"
-#include "framework/experiment/run.h"
+#include "framework/experiment/experiment_renderer.h"
+#include "framework/experiment/timing.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/experiment/sequence_temporal.h"
 #include "framework/io/atomic_file.h"
@@ -222,9 +223,9 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
 
   ShaderCompiler shaders;
   setSceneTime(experiment, animation.frameTime(start));
-  Pipeline pipeline(experiment.scene, experiment.camera, experiment.settings,
-                    std::move(experiment.strategies), shaders);
-  ParticleBillboardSet billboards(experiment.particles, animation.frameTime(start), shaders, pipeline);
+  ExperimentRenderer renderer(experiment, animation.frameTime(start), shaders);
+  Pipeline& pipeline = renderer.pipeline();
+  ParticleBillboardSet& billboards = renderer.billboards();
   for (int i = 0; i < experiment.warmupFrames; ++i) pipeline.renderFrame();
   const bool geometryMoves = movesGeometry(experiment);
   std::vector<std::size_t> aliveParticles;  // per particle system, in the frame moved to last

@@ -1,0 +1,27 @@
+#pragma once
+// An experiment's pipeline with its particle systems' billboards: what `lpvlab run`, a sequence
+// and `lpvlab bench` render with, wired in one place.
+
+#include "framework/experiment/experiment.h"
+#include "framework/gl/shader_compiler.h"
+#include "framework/particles/particle_billboards.h"
+#include "framework/pipeline/pipeline.h"
+
+namespace lpvlab {
+
+class ExperimentRenderer {
+public:
+  // The pipeline of `experiment` (its strategies are moved into it) on the current GL context,
+  // with the particles alive at `seconds` drawn by its raster passes. `shaders` must outlive it
+  // (bench shares one compiler across its configurations).
+  ExperimentRenderer(Experiment& experiment, double seconds, ShaderCompiler& shaders);
+
+  Pipeline& pipeline() { return pipeline_; }
+  ParticleBillboardSet& billboards() { return billboards_; }
+
+private:
+  Pipeline pipeline_;
+  ParticleBillboardSet billboards_;
+};
+
+}  // namespace lpvlab
