@@ -214,18 +214,10 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   return loadExperiment(root, path, loadScene);
 }
 
-Experiment loadExperiment(const toml::table& root, const std::string& path, const SceneLoader& loadScene) {
-  const std::string file = path.empty() ? "built-in default experiment" : path;
-  Params params(root, file);
+namespace {
 
-  Experiment e;
-  e.file = path;
-  e.name = path.empty() ? "cornell_box" : fs::path(path).stem().string();
-  // A label for analyses only (recorded in the manifest, so a sweep that sweeps it has a
-  // param.series column): the report compares every configuration with those whose series is
-  // "baseline" (docs/experiments.md, "Equal time").
-  params.get<std::string>("series", "");
-
+// [scene], [[lights]] and [[materials]]: the scene, its lights replaced or added to, its materials changed.
+void readScene(Params& params, const std::string& path, const SceneLoader& loadScene, Experiment& e) {
   Params sceneParams = params.table("scene");
   const std::string sceneRef = sceneParams.get<std::string>("file", "builtin:cornell_box");
   try {
@@ -237,7 +229,9 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   if (sceneParams.get<bool>("replace_lights", false)) e.scene.lights.clear();
   for (Params& lightParams : params.tables("lights")) e.scene.lights.push_back(readLight(lightParams));
   for (Params& materialParams : params.tables("materials")) readMaterialOverride(materialParams, e.scene);
+}
 
+void readCameraAndAnimation(Params& params, const toml::table& root, Experiment& e) {
   // The camera is [camera]'s (or the scene's first); a path in [animation.camera] moves it, and
   // then needs none (a scene without cameras and no [camera] table).
   Params cameraParams = params.table("camera");
@@ -247,6 +241,10 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   if (cameraGiven) e.camera = readCamera(cameraParams, e.scene);
   e.animation = readAnimation(animationParams, e.scene, e.camera, cameraGiven);
   applyAnimation(e.animation, e.animation.frameTime(0), e.scene, e.camera);
+}
+
+// [[particles]]: each system with its model, placed in the scene at frame 0.
+void readParticles(Params& params, const std::string& path, const SceneLoader& loadScene, Experiment& e) {
   std::vector<Params> particleTables = params.tables("particles");
   for (std::size_t i = 0; i < particleTables.size(); ++i) {
     ParticleSettings settings = readParticleSettings(particleTables[i], int(i));
@@ -262,7 +260,10 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
     }
     table.finish();
   }
+}
 
+// [output] and [light_maps]: the image and the light views' maps.
+void readImages(Params& params, Experiment& e) {
   Params output = params.table("output");
   e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});
   e.settings.height = output.get<int>("height", 512, {.min = 1, .max = 16384});
@@ -286,7 +287,10 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
                                                                    : "directional_snap") +
                 ": only used with light_maps.directional = \"camera\"");
   e.settings.directional.snap = lightMaps.get<bool>("directional_snap", true);
+}
 
+// [grid] and [cascades]: the light grid's placement and its levels.
+void readGrid(Params& params, Experiment& e) {
   Params gridParams = params.table("grid");
   GridPlacement placement;
   placement.resolution = gridParams.get<int>("resolution", 32, {.min = 1, .max = 1024});
@@ -311,13 +315,19 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
     throw Error(cascades.where("snap") +
                 ": false needs cascades.carry = false (carrying a level's light to its parent "
                 "needs the level on whole parent cells)");
+}
 
+// [timing], [gl] and [compute].
+void readTimingAndBackends(Params& params, Experiment& e) {
   Params timing = params.table("timing");
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
   e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
   e.settings.backend = params.table("compute").getChoice("backend", "auto", {"auto", "gl", "cpu"});
+}
 
+// [sky] and [reference]: what the path tracer renders and how long.
+void readReference(Params& params, Experiment& e) {
   Params sky = params.table("sky");
   e.reference.tracer.skyRadiance = sky.get<glm::vec3>("radiance", glm::vec3(0.0f), {.min = glm::vec3(0.0f)});
   e.settings.skyRadiance = e.reference.tracer.skyRadiance;
@@ -355,7 +365,10 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
                 std::to_string(e.reference.tracer.engine.packetWidth) +
                 " is not one of 0 (the instruction set's native width), 1, 4, 8, 16");
   e.compareWithReference = reference.get<bool>("compare", false);
+}
 
+// [metrics]: the comparison's pairs and regions.
+void readMetrics(Params& params, Experiment& e) {
   Params metrics = params.table("metrics");
   const std::vector<std::string> runOutputs = {"direct", "indirect", "combined"};
   const std::vector<std::string> referenceOutputs = {"direct", "indirect", "indirect1", "combined"};
@@ -387,7 +400,9 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
                   "top < bottom are required)");
     e.comparison.regions.push_back(r);
   }
+}
 
+void readIndirect(Params& params, Experiment& e) {
   // [indirect] method: "lpv" (the strategies below) or a registered method with its parameters
   // in the same table (framework/pipeline/indirect_method.h).
   Params indirect = params.table("indirect");
@@ -407,7 +422,11 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   Params propagation = params.table("propagation");
   e.strategies.propagation = Registry<PropagationStrategy>::instance().create(propagation, "standard");
   e.strategies.rendering = createStage<RenderingStrategy>(params.table("rendering"), "trilinear");
+}
 
+// After every table is read: the composition checked, and the resolved configuration the
+// manifest records.
+void recordConfiguration(Params& params, const std::string& file, Experiment& e) {
   params.finish();
   if (!e.strategies.method) {
     try {
@@ -436,6 +455,32 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
       {"origin", {g.origin.x, g.origin.y, g.origin.z}},
       {"cell_size", g.cellSize},
       {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}};
+}
+
+}  // namespace
+
+Experiment loadExperiment(const toml::table& root, const std::string& path, const SceneLoader& loadScene) {
+  const std::string file = path.empty() ? "built-in default experiment" : path;
+  Params params(root, file);
+
+  Experiment e;
+  e.file = path;
+  e.name = path.empty() ? "cornell_box" : fs::path(path).stem().string();
+  // A label for analyses only (recorded in the manifest, so a sweep that sweeps it has a
+  // param.series column): the report compares every configuration with those whose series is
+  // "baseline" (docs/experiments.md, "Equal time").
+  params.get<std::string>("series", "");
+
+  readScene(params, path, loadScene, e);
+  readCameraAndAnimation(params, root, e);
+  readParticles(params, path, loadScene, e);
+  readImages(params, e);
+  readGrid(params, e);
+  readTimingAndBackends(params, e);
+  readReference(params, e);
+  readMetrics(params, e);
+  readIndirect(params, e);
+  recordConfiguration(params, file, e);
   return e;
 }
 
