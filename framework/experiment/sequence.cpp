@@ -144,6 +144,104 @@ std::vector<std::string> sequenceWarnings(const std::vector<nlohmann::json>& rec
   return out;
 }
 
+// The first frame without a record in `dir`: a resumed sequence goes on there. Records of another
+// configuration (a changed file with the same --out) are an error: two sequences would mix.
+int firstMissingFrame(const Experiment& experiment, const fs::path& dir,
+                      const std::string& configuration) {
+  const Animation& animation = experiment.animation;
+  int first = 0;
+  for (;; ++first) {
+    const fs::path record = dir / (frameStem(first, animation.frames) + ".json");
+    if (first >= animation.frames || !fs::exists(record)) return first;
+    if (readFrameRecord(record).value("configuration_hash", "") != configuration)
+      throw Error(record.string() + ": a frame of another configuration of " + experiment.name +
+                  "; give another --out, or delete " + dir.string() + " to start again");
+  }
+}
+
+// Whether what a frame computes depends on the frames before it (a GV history, incremental
+// instant radiosity): a resumed sequence then renders the frames before its first again.
+bool keepsStateBetweenFrames(const Experiment& experiment) {
+  if (const IndirectMethod* method = experiment.strategies.method.get())
+    return method->keepsStateBetweenFrames();
+  const auto strategies = experiment.strategies.all();
+  return std::any_of(strategies.begin(), strategies.end(),
+                     [](auto& s) { return s.second->keepsStateBetweenFrames(); });
+}
+
+// A rendered frame's record (frames/<stem>.json): where the camera was, its times by stage, the
+// particles alive, another method's figures, and the warnings a static run would get.
+nlohmann::json frameRecord(const Experiment& experiment, Pipeline& pipeline, int frame,
+                           const std::string& hash, const std::string& configuration,
+                           const FrameTimes& times, const std::vector<std::size_t>& aliveParticles,
+                           const std::vector<NamedImage>& aovs, float exposure) {
+  const double seconds = experiment.animation.frameTime(frame);
+  nlohmann::json record = {{"frame", frame},
+                           {"time_s", seconds},
+                           {"camera",
+                            {{"position", vec3Json(experiment.camera.position)},
+                             {"forward", vec3Json(experiment.camera.forward)},
+                             {"vertical_fov_deg", glm::degrees(experiment.camera.verticalFov)}}},
+                           {"scene_hash", hash},
+                           {"configuration_hash", configuration},
+                           {"stage_ms", times.stageMs},
+                           {"stage_clock", times.clock},
+                           {"stage_order", times.order},
+                           {"wall_ms", times.wallMs},
+                           {"png_exposure_stops", exposure}};
+  for (std::size_t s = 0; s < aliveParticles.size(); ++s)
+    record["particles_alive"][experiment.particles[s].system().name] = aliveParticles[s];
+  // Another indirect method's figures of this frame (incremental instant radiosity's removals
+  // and insertions differ from frame to frame).
+  if (const IndirectMethod* method = pipeline.strategies().method.get())
+    record["indirect_method"] = method->statistics();
+  // A frame that is black, or whose solve stopped short, is flagged as a static run is
+  // (resultWarnings reads the figures a static manifest has where it finds them).
+  nlohmann::json figures = nlohmann::json::object();
+  if (record.contains("indirect_method"))
+    figures["indirect_method"]["statistics"] = record["indirect_method"];
+  if (const std::vector<std::string> warnings = resultWarnings(aovs, figures); !warnings.empty())
+    record["warnings"] = warnings;
+  return record;
+}
+
+// The sequence's manifest from every frame's record, in order.
+nlohmann::json sequenceManifest(Experiment& experiment, const GlContext& context, Pipeline& pipeline,
+                                const std::vector<nlohmann::json>& records, int first, bool video) {
+  const Animation& animation = experiment.animation;
+  std::vector<FrameTimes> times;
+  for (const nlohmann::json& record : records) times.push_back(frameTimesOf(record));
+  const TimingReport timing = timingReport(times, experiment.warmupFrames);
+  nlohmann::json manifest =
+      describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
+                  medianStageMs(timing, "propagation"));
+  manifest["timing"] = timing.toJson();
+  manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
+  manifest["sequence"] = {{"frames", animation.frames},
+                          {"fps", animation.fps},
+                          {"moves",
+                           {{"camera", animation.movesCamera()},
+                            {"lights", animation.movesLights()},
+                            {"geometry", movesGeometry(experiment)}}},
+                          {"resumed_at_frame", first},
+                          {"temporal", temporalSummary(records)},
+                          {"frame_records", records}};
+  if (experiment.compareWithReference)
+    manifest["reference"] = {
+        {"per_frame", true},
+        {"comparison", meanComparison(records)},
+        {"note", "metrics averaged over the frames; per frame under sequence.frame_records"}};
+  manifest["outputs"] = {
+      {"frames", frameStem(0, animation.frames) + ".{exr,png,json} and on"},
+      {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
+      {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"},
+      {"png_exposure_stops", records.front().at("png_exposure_stops")}};
+  if (video) manifest["outputs"]["video"] = "video.mp4";
+  if (const std::vector<std::string> warnings = sequenceWarnings(records); !warnings.empty())
+    manifest["warnings"] = warnings;
+  return manifest;
+}
+
 }  // namespace
 
 std::string frameStem(int frame, int frames) {
@@ -169,14 +267,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   // Frames already there must be this configuration's (a changed file with the same --out would
   // otherwise mix two sequences).
   const std::string configuration = Hasher().text(experiment.configuration.dump()).hex();
-  int first = 0;
-  while (first < animation.frames && fs::exists(recordPath(first))) {
-    if (readFrameRecord(recordPath(first)).value("configuration_hash", "") != configuration)
-      throw Error(recordPath(first).string() + ": a frame of another configuration of " +
-                  experiment.name + "; give another --out, or delete " + outDir +
-                  " to start again");
-    ++first;
-  }
+  const int first = firstMissingFrame(experiment, dir, configuration);
   // A run killed while writing a frame's files (or the video) left temporaries: that frame has no
   // record, so it is rendered again below.
   removeLeftoverTemporaries((dir / "frames").string());
@@ -209,13 +300,7 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
 
   // A composition whose frames depend on the frames before (a GV history) renders the frames
   // before `first` again, unwritten, so a resumed sequence matches an uninterrupted one.
-  const auto strategies = experiment.strategies.all();
-  const IndirectMethod* method = experiment.strategies.method.get();
-  const bool keepsState =
-      method ? method->keepsStateBetweenFrames()
-             : std::any_of(strategies.begin(), strategies.end(),
-                           [](auto& s) { return s.second->keepsStateBetweenFrames(); });
-  const bool replay = first > 0 && keepsState;
+  const bool replay = first > 0 && keepsStateBetweenFrames(experiment);
   const int start = replay ? 0 : first;
   if (replay)
     std::cerr << "lpvlab: " << experiment.name << ": rendering frames 0-" << first - 1
@@ -252,7 +337,6 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   ProgressBar progress(experiment.name + " frames");
   const auto started = std::chrono::steady_clock::now();
   for (int frame = first; frame < animation.frames; ++frame) {
-    const double seconds = animation.frameTime(frame);
     moveTo(frame);
     const FrameTimes times = pipeline.renderFrame();
     const std::vector<NamedImage> aovs = pipeline.readOutputs();
@@ -265,32 +349,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
       exposure = experiment.exposureStops +
                  (experiment.autoExposure ? middleGreyExposure(findAov(aovs, "combined")) : 0.0f);
     const std::string hash = sceneHash(experiment.scene);
-    nlohmann::json record = {{"frame", frame},
-                             {"time_s", seconds},
-                             {"camera",
-                              {{"position", vec3Json(experiment.camera.position)},
-                               {"forward", vec3Json(experiment.camera.forward)},
-                               {"vertical_fov_deg", glm::degrees(experiment.camera.verticalFov)}}},
-                             {"scene_hash", hash},
-                             {"configuration_hash", configuration},
-                             {"stage_ms", times.stageMs},
-                             {"stage_clock", times.clock},
-                             {"stage_order", times.order},
-                             {"wall_ms", times.wallMs},
-                             {"png_exposure_stops", *exposure}};
-    for (std::size_t s = 0; s < aliveParticles.size(); ++s)
-      record["particles_alive"][experiment.particles[s].system().name] = aliveParticles[s];
-    // Another indirect method's figures of this frame (incremental instant radiosity's removals
-    // and insertions differ from frame to frame).
-    if (const IndirectMethod* method = pipeline.strategies().method.get())
-      record["indirect_method"] = method->statistics();
-    // A frame that is black, or whose solve stopped short, is flagged as a static run is
-    // (resultWarnings reads the figures a static manifest has where it finds them).
-    nlohmann::json figures = nlohmann::json::object();
-    if (record.contains("indirect_method"))
-      figures["indirect_method"]["statistics"] = record["indirect_method"];
-    if (const std::vector<std::string> warnings = resultWarnings(aovs, figures); !warnings.empty())
-      record["warnings"] = warnings;
+    nlohmann::json record = frameRecord(experiment, pipeline, frame, hash, configuration, times,
+                                        aliveParticles, aovs, *exposure);
     FrameState state{experiment.camera, hash, aovs, {}};
     if (experiment.compareWithReference) {
       state.reference = frameReference(frame);
@@ -324,39 +384,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
 
   // The manifest, from every frame's record (also those of an earlier, interrupted run).
   std::vector<nlohmann::json> records;
-  std::vector<FrameTimes> times;
-  for (int frame = 0; frame < animation.frames; ++frame) {
-    records.push_back(readFrameRecord(recordPath(frame)));
-    times.push_back(frameTimesOf(records.back()));
-  }
-  const TimingReport timing = timingReport(times, experiment.warmupFrames);
-  nlohmann::json manifest =
-      describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
-                  medianStageMs(timing, "propagation"));
-  manifest["timing"] = timing.toJson();
-  manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
-  manifest["sequence"] = {{"frames", animation.frames},
-                          {"fps", animation.fps},
-                          {"moves",
-                           {{"camera", animation.movesCamera()},
-                            {"lights", animation.movesLights()},
-                            {"geometry", movesGeometry(experiment)}}},
-                          {"resumed_at_frame", first},
-                          {"temporal", temporalSummary(records)},
-                          {"frame_records", records}};
-  if (experiment.compareWithReference)
-    manifest["reference"] = {
-        {"per_frame", true},
-        {"comparison", meanComparison(records)},
-        {"note", "metrics averaged over the frames; per frame under sequence.frame_records"}};
-  manifest["outputs"] = {
-      {"frames", frameStem(0, animation.frames) + ".{exr,png,json} and on"},
-      {"aovs", {"direct", "indirect", "combined", "albedo", "normal", "depth"}},
-      {"units", "radiance W/(m^2 sr); depth: view depth in metres, 0 = no surface"},
-      {"png_exposure_stops", records.front().at("png_exposure_stops")}};
-  if (video) manifest["outputs"]["video"] = "video.mp4";
-  if (const std::vector<std::string> warnings = sequenceWarnings(records); !warnings.empty())
-    manifest["warnings"] = warnings;
+  for (int frame = 0; frame < animation.frames; ++frame) records.push_back(readFrameRecord(recordPath(frame)));
+  const nlohmann::json manifest = sequenceManifest(experiment, context, pipeline, records, first, video);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }
