@@ -66,7 +66,7 @@ class Gpu:
         self.measured = list(measured)
         self.calibrate_like = calibrate_like
 
-    def efficiency(self, m):
+    def efficiency_of(self, m):
         """Measured units per second over the roofline's for the measured counts."""
         roofline_s = max(m.multiply_adds_per_unit / self.fma_per_s, m.bytes_per_unit / self.bytes_per_s)
         return m.units_per_s * roofline_s
@@ -136,7 +136,7 @@ def efficiency(gpu, gpus, family, sh_order):
     def of(g):
         ms = [m for m in g.measured if m.family == family]
         same = [m for m in ms if m.sh_order == sh_order]
-        return [g.efficiency(m) for m in (same or ms)]
+        return [g.efficiency_of(m) for m in (same or ms)]
 
     values, basis = of(gpu), "measured"
     if not values and gpu.calibrate_like in by_key:

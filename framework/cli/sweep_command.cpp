@@ -164,7 +164,7 @@ int sweepCommand(const Options& options) {
                           {"swept_keys", keys},
                           {"configurations", nlohmann::json::array()}};
   for (const SweepConfiguration& c : configs) {
-    writeTextAtomically((dir / "configs" / (c.id + ".toml")).string(), configurationToml(file, c));
+    writeTextAtomically((dir / "configs" / (c.id + ".toml")).string(), configurationToml(root, file, c));
     nlohmann::json values = nlohmann::json::object();
     for (const auto& [k, v] : c.values) values[k] = v;
     index["configurations"].push_back(
@@ -249,13 +249,6 @@ int sweepCommand(const Options& options) {
 }
 
 int summaryCommand(const Options& options) {
-  // Without sweep.json the directory is a run's, or a parent of unrelated runs: a summary of it
-  // would be empty or a mixture (issue 35).
-  const fs::path dir(options.out);
-  if (fs::is_directory(dir) && !fs::exists(dir / "sweep.json"))
-    throw Error(options.out + ": not a sweep directory (no sweep.json, which `lpvlab sweep FILE " +
-                "--out DIR` writes)" +
-                (fs::exists(dir / "manifest.json") ? "; it holds a single run's manifest.json" : ""));
   const SummaryResult summary = writeSweepSummary(options.out);
   reportSkipped(options.out, summary);
   std::cout << "wrote " << (fs::path(options.out) / "summary.csv").string() << ": " << summary.rows

@@ -207,7 +207,7 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
   toml::table root = path.empty() ? toml::table{} : readExperimentTable(path);
   for (const std::string& assignment : overrides) applyOverride(root, assignment);
   if (root.contains("sweep")) {
-    expandSweep(root, path.empty() ? "built-in default experiment" : path);
+    checkSweep(root, path.empty() ? "built-in default experiment" : path);
     root.erase("sweep");
   }
   root.erase("fit");

@@ -148,20 +148,13 @@ std::vector<std::string> sweptKeys(const toml::table& root, const std::string& f
   return {keys.begin(), keys.end()};
 }
 
-std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
-                                            const std::vector<std::string>& extraOverrides) {
+std::size_t checkSweep(const toml::table& root, const std::string& file) {
   const SweepSpec spec = readSweep(root, file);
   std::set<std::string> seen;
   for (const auto* group : {&spec.zip, &spec.product})
     for (const SweptList& l : *group)
       if (!seen.insert(l.key).second)
         throw Error(file + ": key 'sweep': '" + l.key + "' is swept twice");
-  // Readable names use the last component of a key unless two swept keys share it.
-  std::map<std::string, int> leafCount;
-  for (const std::string& k : seen) ++leafCount[leaf(k)];
-  auto label = [&](const std::string& k) { return leafCount[leaf(k)] > 1 ? k : leaf(k); };
-
-  // Choices: one per zip index, times every combination of the product lists (last fastest).
   const std::size_t zipCount = spec.zip.empty() ? 1 : spec.zip[0].texts.size();
   std::size_t productCount = 1;
   for (const SweptList& l : spec.product) {
@@ -172,6 +165,23 @@ std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::
                   "'); split it into several sweeps");
     productCount *= l.texts.size();
   }
+  return zipCount * productCount;
+}
+
+std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
+                                            const std::vector<std::string>& extraOverrides) {
+  checkSweep(root, file);
+  const SweepSpec spec = readSweep(root, file);
+  // Readable names use the last component of a key unless two swept keys share it.
+  std::map<std::string, int> leafCount;
+  for (const auto* group : {&spec.zip, &spec.product})
+    for (const SweptList& l : *group) ++leafCount[leaf(l.key)];
+  auto label = [&](const std::string& k) { return leafCount[leaf(k)] > 1 ? k : leaf(k); };
+
+  // Choices: one per zip index, times every combination of the product lists (last fastest).
+  const std::size_t zipCount = spec.zip.empty() ? 1 : spec.zip[0].texts.size();
+  std::size_t productCount = 1;
+  for (const SweptList& l : spec.product) productCount *= l.texts.size();
 
   std::vector<SweepConfiguration> out;
   for (std::size_t z = 0; z < zipCount; ++z) {
@@ -209,13 +219,18 @@ std::vector<SweepConfiguration> expandSweep(const std::string& file,
   return expandSweep(root, file, extraOverrides);
 }
 
-std::string configurationToml(const std::string& file, const SweepConfiguration& configuration) {
+std::string configurationToml(const toml::table& root, const std::string& file,
+                              const SweepConfiguration& configuration) {
   std::ostringstream s;
   s << "# lpvlab sweep configuration " << configuration.id << " (" << configuration.name
     << ") of " << fs::absolute(file).lexically_normal().string() << "\n";
   for (const std::string& o : configuration.overrides) s << "# override: " << o << "\n";
-  s << "\n" << resolvedText(readExperimentTable(file), file, configuration.overrides) << "\n";
+  s << "\n" << resolvedText(root, file, configuration.overrides) << "\n";
   return s.str();
+}
+
+std::string configurationToml(const std::string& file, const SweepConfiguration& configuration) {
+  return configurationToml(readExperimentTable(file), file, configuration);
 }
 
 std::string sweepHash(const toml::table& root, const std::string& file) {

@@ -37,12 +37,20 @@ std::vector<SweepConfiguration> expandSweep(const std::string& file,
 std::vector<SweepConfiguration> expandSweep(const toml::table& root, const std::string& file,
                                             const std::vector<std::string>& extraOverrides = {});
 
+// Checks `root`'s [sweep] table as expandSweep does (its lists, a key swept twice, more than
+// 100000 configurations) without expanding it; returns the number of configurations.
+std::size_t checkSweep(const toml::table& root, const std::string& file);
+
 // The swept keys, in column order (sorted, unique).
 std::vector<std::string> sweptKeys(const toml::table& root, const std::string& file);
 
 // The resolved TOML text of one configuration of `file` (extends merged, [sweep] removed,
 // overrides applied, relative scene.file made absolute): a file `lpvlab run` reads on its own.
 std::string configurationToml(const std::string& file, const SweepConfiguration& configuration);
+// The same from `root`, the file's table as read (extends merged; -s overrides may be applied:
+// applying the configuration's overrides again changes nothing), so a sweep reads its file once.
+std::string configurationToml(const toml::table& root, const std::string& file,
+                              const SweepConfiguration& configuration);
 
 // The identity of a whole sweep (16 hex digits): the hash of `root` (read from `file` with its
 // extends and includes merged and the -s overrides applied, [sweep] included). A sweep directory

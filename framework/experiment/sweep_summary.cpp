@@ -88,9 +88,12 @@ struct SweepIndex {
 };
 
 SweepIndex readIndex(const fs::path& root, std::string& reading) {
+  // Without sweep.json the directory is a run's, or a parent of unrelated runs: a summary of it
+  // would be empty or a mixture.
   if (!fs::exists(root / "sweep.json"))
     throw Error(root.string() + ": not a sweep directory (no sweep.json, which `lpvlab sweep FILE "
-                "--out DIR` writes)");
+                "--out DIR` writes)" +
+                (fs::exists(root / "manifest.json") ? "; it holds a single run's manifest.json" : ""));
   reading = (root / "sweep.json").string();
   const nlohmann::json index = readJson(root / "sweep.json");
   SweepIndex out;
