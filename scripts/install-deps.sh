@@ -33,7 +33,7 @@ test_packages=(
   valgrind                         # memcheck of the path tracer's tests (docs/testing.md)
   zstd                             # scripts/bundle.sh --archive, which tests/bundle makes
   mmdebstrap                       # tests/bundle: the bundle in bare Debian 11 and 13 roots
-  python3-venv python3-setuptools  # tests/analysis_package: pip install of analysis/ in a venv
+  python3-venv python3-setuptools python3-wheel  # tests/analysis_package: pip install of analysis/ in a venv (wheel: setuptools builds one)
 )
 case "${1:-}" in
   "") ;;

@@ -21,7 +21,6 @@ skip() {
 }
 [ "$(id -u)" = 0 ] || skip "making Debian roots needs root (mmdebstrap, chroot)"
 command -v mmdebstrap >/dev/null || skip "mmdebstrap is not installed (scripts/install-deps.sh --tests)"
-command -v unshare >/dev/null || skip "unshare is not installed"
 [ -f "$shared/scenes/sponza/Sponza.gltf" ] || skip "$shared/scenes/sponza is missing"
 
 # The mirror this machine's apt uses (its sources name only its own suite), else Debian's.
@@ -30,7 +29,15 @@ mirror=$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sourc
 [ -n "$mirror" ] || mirror=http://deb.debian.org/debian
 
 tmp=$(mktemp -d "${TMPDIR:-/var/tmp}/lpvlab-foreign.XXXXXX")
-trap 'rm -rf --one-file-system "$tmp"' EXIT
+# The roots' mounts are made directly, not in a private mount namespace: under CI this test runs
+# in a chroot whose / is no mount point, where `unshare --propagation private` fails (EINVAL).
+# They are undone on every exit; --one-file-system keeps rm out of any one left behind.
+mounted=""
+cleanup() {
+  for m in $mounted; do umount "$m" 2>/dev/null || umount -l "$m" 2>/dev/null || true; done
+  rm -rf --one-file-system "$tmp"
+}
+trap cleanup EXIT
 "$source_dir/scripts/bundle.sh" --build "$(dirname "$lpvlab")" --out "$tmp/dist" --no-build | tail -2
 bundle=$(ls -d "$tmp"/dist/lpvlab-*-x86_64)
 
@@ -70,16 +77,18 @@ for suite in bullseye trixie; do
   cp -al "$bundle" "$root/opt/lpvlab" 2>/dev/null || { rm -rf "$root/opt/lpvlab"; cp -a "$bundle" "$root/opt/lpvlab"; }
   cp "$tmp/sponza_sun.toml" "$root/tmp/"
   mkdir -p "$root/shared"
-  export root shared small
-  # shellcheck disable=SC2016
-  if ! unshare --mount --propagation private sh -c '
-      mount -t proc proc "$root/proc"
-      mount --bind -o ro "$shared" "$root/shared"
-      chroot "$root" /usr/bin/env -i HOME=/tmp PATH=/usr/bin:/bin LPVLAB_SHARED_DIR=/shared sh -c "
+  mount -t proc proc "$root/proc" || { echo "FAIL: cannot mount /proc in the $suite root"; exit 1; }
+  mounted="$root/proc"
+  mount --bind -o ro "$shared" "$root/shared" || { echo "FAIL: cannot bind $shared into the $suite root"; exit 1; }
+  mounted="$root/shared $root/proc"
+  status=0
+  chroot "$root" /usr/bin/env -i HOME=/tmp PATH=/usr/bin:/bin LPVLAB_SHARED_DIR=/shared sh -c "
         cd /tmp &&
         /opt/lpvlab/bin/lpvlab run --out /tmp/cornell $small &&
-        /opt/lpvlab/bin/lpvlab run /tmp/sponza_sun.toml --out /tmp/sponza $small"
-    ' > "$tmp/$suite-run.log" 2>&1; then
+        /opt/lpvlab/bin/lpvlab run /tmp/sponza_sun.toml --out /tmp/sponza $small" \
+      > "$tmp/$suite-run.log" 2>&1 || status=$?
+  umount "$root/shared" "$root/proc" && mounted=""
+  if [ "$status" != 0 ]; then
     echo "FAIL: $suite (glibc $glibc): the bundle did not run:"; tail -5 "$tmp/$suite-run.log"
     failed=$((failed + 1))
     continue
