@@ -3,6 +3,8 @@
 // (cell-iterations per second) for each grid resolution and iteration count. A benchmark prints
 // figures; it asserts nothing.
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -29,12 +31,13 @@ int benchCommand(const Options& options) {
       overrides.push_back("grid.margin=0");
       overrides.push_back("propagation.iterations=" + std::to_string(iterations));
       Experiment e = loadExperiment(options.experiment, overrides);
-      if (e.strategies.method)
+      const std::vector<std::string> stages = e.method->stageNames();
+      if (std::find(stages.begin(), stages.end(), "propagation") == stages.end())
         throw Error((options.experiment.empty() ? std::string("the built-in default")
                                                  : options.experiment) +
-                    ": indirect.method = \"" + e.strategies.method->name() +
-                    "\": lpvlab bench measures LPV propagation over grid sizes and iterations; "
-                    "time another method with lpvlab run or lpvlab sweep");
+                    ": indirect.method = \"" + e.method->name() +
+                    "\" has no propagation stage: lpvlab bench measures propagation over grid "
+                    "sizes and iterations; time another method with lpvlab run or lpvlab sweep");
       if (!context) {
         context = GlContext::create(e.glBackend);
         std::cout << "lpvlab bench: " << e.name << " on " << context->renderer() << ", "
@@ -42,8 +45,12 @@ int benchCommand(const Options& options) {
       }
       ExperimentRenderer renderer(e, e.animation.frameTime(0), shaders);
       Pipeline& pipeline = renderer.pipeline();
-      const std::size_t cells = pipeline.propagatedCells();  // every cascade level's
       const TimingReport report = measureFrames(pipeline, e.warmupFrames, e.repeats);
+      // Cell-iterations as the propagation's work report counts them (every cascade level's).
+      double cellIterations = 0.0;
+      for (const nlohmann::json& work : pipeline.workReport().at("propagation"))
+        if (work.value("unit", "") == "cell-iteration") cellIterations += work.at("units").get<double>();
+      const long long cells = iterations > 0 ? std::llround(cellIterations / iterations) : 0;
       if (!header) {
         std::cout << computeLine(pipeline.computeReport()) << "\n"
                   << clocksLine(report.clock, context->renderer(), hostInfo()["cpu"].get<std::string>())
@@ -64,7 +71,7 @@ int benchCommand(const Options& options) {
       }
       const double propagationS = report.stageMs.at("propagation").median * 1e-3;
       std::cout << std::setw(15) << std::scientific << std::setprecision(3)
-                << (propagationS > 0 ? double(cells) * iterations / propagationS : 0.0) << "\n"
+                << (propagationS > 0 ? cellIterations / propagationS : 0.0) << "\n"
                 << std::flush;
     }
   }

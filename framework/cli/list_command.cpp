@@ -36,11 +36,11 @@ nlohmann::json resourcesJson(const ResourceUses& uses) {
   return out;
 }
 
-// `lpvlab list --json`: the same, for programs (the analysis, scripts): LPV's stages in the order
-// the pipeline runs them, every strategy and method with its parameters' defaults, resources and
-// CPU kernel, each method's own stages.
+// `lpvlab list --json`: the same, for programs (the analysis, scripts): the pipeline's own stages
+// in the order a frame runs them (the method's follow), every strategy and method with its
+// parameters' defaults, resources and CPU kernel, each method's own stages.
 int listJson() {
-  nlohmann::json out = {{"lpv_stages", Pipeline::stageNames()},
+  nlohmann::json out = {{"pipeline_stages", Pipeline::stageNames()},
                         {"strategies", nlohmann::json::array()},
                         {"methods", nlohmann::json::array()}};
   for (const CatalogueEntry& entry : strategyCatalogue())

@@ -198,8 +198,15 @@ Params Params::table(std::string_view key) {
   for (const auto& [name, existing] : state_->children)
     if (name == key) return existing;
   Params child(node ? *node->as_table() : empty, state_->file, dotted(key));
+  child.state_->parent = state_;
   state_->children.emplace_back(std::string(key), child);
   return child;
+}
+
+Params Params::document() const {
+  std::shared_ptr<State> state = state_;
+  while (std::shared_ptr<State> parent = state->parent.lock()) state = std::move(parent);
+  return Params(std::move(state));
 }
 
 std::vector<Params> Params::tables(std::string_view key) {
@@ -220,6 +227,7 @@ std::vector<Params> Params::tables(std::string_view key) {
     }
     Params child(*array->get(i)->as_table(), state_->file,
                  dotted(key) + "[" + std::to_string(i) + "]");
+    child.state_->parent = state_;
     state_->children.emplace_back(name, child);
     out.push_back(child);
   }

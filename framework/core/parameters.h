@@ -48,6 +48,10 @@ public:
   Params table(std::string_view key);
   // Arrays of tables ([[lights]]).
   std::vector<Params> tables(std::string_view key);
+  // The whole file's root table, whose keys are tracked together with this one's: for a reader
+  // whose parameters span several tables (LPV's method reads [indirect] and its stages' tables).
+  // The root itself for a root.
+  Params document() const;
 
   // Throws an Error for every key present in the table that nobody asked for.
   void finish() const;
@@ -66,7 +70,9 @@ private:
     std::vector<std::string> asked;           // keys asked for, in order
     nlohmann::json resolved = nlohmann::json::object();
     std::vector<std::pair<std::string, Params>> children;
+    std::weak_ptr<State> parent;  // weak: the parent owns its children
   };
+  explicit Params(std::shared_ptr<State> state) : state_(std::move(state)) {}
   std::shared_ptr<State> state_;  // Params is a cheap handle: copies share tracking state
 
   const toml::node* lookup(std::string_view key);

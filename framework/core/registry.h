@@ -22,6 +22,9 @@ public:
   struct Entry {
     std::string description;
     Factory factory;
+    // Top-level tables of the experiment file it reads beyond its own (empty for most: a
+    // strategy reads its stage's table, a method [indirect]). LPV's method reads its stages'.
+    std::vector<std::string> tables;
   };
 
   static Registry& instance() {
@@ -29,8 +32,9 @@ public:
     return registry;
   }
 
-  bool add(const std::string& name, std::string description, Factory factory) {
-    entries_[name] = Entry{std::move(description), std::move(factory)};
+  bool add(const std::string& name, std::string description, Factory factory,
+           std::vector<std::string> tables = {}) {
+    entries_[name] = Entry{std::move(description), std::move(factory), std::move(tables)};
     return true;
   }
 
@@ -63,5 +67,15 @@ private:
           [](::lpvlab::Params& params) -> std::unique_ptr<Interface> {                       \
             return std::make_unique<Type>(params);                                          \
           })
+// The same, for an implementation that also reads the experiment file's top-level tables named
+// after the description, e.g. LPVLAB_REGISTER_READING(IndirectMethod, "lpv", "...", Lpv, "grid").
+#define LPVLAB_REGISTER_READING(Interface, name, description, Type, ...)                     \
+  static const bool LPVLAB_CONCAT(lpvlabRegistered_, __LINE__) =                            \
+      ::lpvlab::Registry<Interface>::instance().add(                                        \
+          name, description,                                                                \
+          [](::lpvlab::Params& params) -> std::unique_ptr<Interface> {                       \
+            return std::make_unique<Type>(params);                                          \
+          },                                                                                \
+          std::vector<std::string>{__VA_ARGS__})
 
 }  // namespace lpvlab

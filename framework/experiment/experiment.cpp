@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "framework/animation/animation_file.h"
@@ -168,17 +169,6 @@ std::string resolveScenePath(const std::string& reference, const std::string& ex
 }
 
 namespace {
-
-// A stage with a main table and optional [[<stage>.also]] tables (e.g. sky light added to the RSM
-// injection), each with its own type and parameters; the main one runs first.
-template <class Interface>
-std::vector<std::unique_ptr<Interface>> createStage(Params table, const std::string& defaultType) {
-  std::vector<std::unique_ptr<Interface>> strategies;
-  strategies.push_back(Registry<Interface>::instance().create(table, defaultType));
-  for (Params& also : table.tables("also"))
-    strategies.push_back(Registry<Interface>::instance().create(also, defaultType));
-  return strategies;
-}
 
 }  // namespace
 
@@ -402,48 +392,40 @@ void readMetrics(Params& params, Experiment& e) {
   }
 }
 
-void readIndirect(Params& params, Experiment& e) {
-  // [indirect] method: "lpv" (the strategies below) or a registered method with its parameters
-  // in the same table (framework/pipeline/indirect_method.h).
+// [indirect] method: a registered method (framework/pipeline/indirect_method.h), "lpv" by
+// default. So that one file can sweep indirect.method over methods, the tables another method
+// reads (LPV's stages) are read and checked whichever method runs; they are returned, to be left
+// out of the configuration (a summary's param.propagation.* columns are then empty on another
+// method's rows, not defaults it never used).
+std::set<std::string> readIndirect(Params& params, Experiment& e) {
   Params indirect = params.table("indirect");
-  std::vector<std::string> methods = {"lpv"};
-  for (const std::string& name : Registry<IndirectMethod>::instance().names()) methods.push_back(name);
-  const std::string method = indirect.getChoice("method", "lpv", methods);
-  if (method != "lpv") {
-    e.strategies.method = Registry<IndirectMethod>::instance().entries().at(method).factory(indirect);
-    e.strategies.method->setRegisteredName(method);
+  const auto& methods = Registry<IndirectMethod>::instance();
+  const std::string chosen = indirect.getChoice("method", "lpv", methods.names());
+  e.method = methods.entries().at(chosen).factory(indirect);
+  e.method->setRegisteredName(chosen);
+  const std::vector<std::string>& own = methods.entries().at(chosen).tables;
+  std::set<std::string> foreign;
+  for (const auto& [name, entry] : methods.entries()) {
+    if (name == chosen || entry.tables.empty()) continue;
+    entry.factory(indirect);  // reads and checks its tables' keys; never run
+    for (const std::string& table : entry.tables)
+      if (std::find(own.begin(), own.end(), table) == own.end()) foreign.insert(table);
   }
-
-  // The LPV strategies are read whatever the method, so that one file can sweep
-  // indirect.method over LPV and the other methods (their keys are checked either way).
-  Params occlusion = params.table("occlusion");
-  e.strategies.injection = createStage<InjectionStrategy>(params.table("injection"), "rsm_vpl");
-  e.strategies.occlusion = Registry<OcclusionStrategy>::instance().create(occlusion, "none");
-  Params propagation = params.table("propagation");
-  e.strategies.propagation = Registry<PropagationStrategy>::instance().create(propagation, "standard");
-  e.strategies.rendering = createStage<RenderingStrategy>(params.table("rendering"), "trilinear");
+  return foreign;
 }
 
-// After every table is read: the composition checked, and the resolved configuration the
-// manifest records.
-void recordConfiguration(Params& params, const std::string& file, Experiment& e) {
+// After every table is read: the method's check, and the resolved configuration the manifest
+// records (without `foreignTables`, the tables only another method reads).
+void recordConfiguration(Params& params, const std::string& file,
+                         const std::set<std::string>& foreignTables, Experiment& e) {
   params.finish();
-  if (!e.strategies.method) {
-    try {
-      // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.
-      resolveRequirements(e.strategies, e.settings.shOrder, e.settings.skyRadiance,
-                          e.settings.cascades.levels,
-                          e.settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl);
-    } catch (const Error& error) {
-      throw Error(file + ": " + error.what());
-    }
+  try {
+    e.method->check(e.settings);
+  } catch (const Error& error) {
+    throw Error(file + ": " + error.what());
   }
   e.configuration = params.resolved();
-  // Another method's run records none of LPV's keys (a summary's param.propagation.* columns are
-  // then empty on its rows, not LPV defaults it never used).
-  if (e.strategies.method)
-    for (const char* lpvTable : {"grid", "cascades", "occlusion", "injection", "propagation", "rendering"})
-      e.configuration.erase(lpvTable);
+  for (const std::string& table : foreignTables) e.configuration.erase(table);
   e.configuration["scene"]["resolved_path"] = e.scene.source;
   e.configuration["camera"]["resolved"] = {
       {"name", e.camera.name},
@@ -451,7 +433,7 @@ void recordConfiguration(Params& params, const std::string& file, Experiment& e)
       {"forward", {e.camera.forward.x, e.camera.forward.y, e.camera.forward.z}},
       {"vertical_fov_deg", e.camera.verticalFov / kDegrees}};
   const GridGeometry& g = e.settings.grid;
-  if (!e.strategies.method) e.configuration["grid"]["resolved"] = {
+  if (e.configuration.contains("grid")) e.configuration["grid"]["resolved"] = {
       {"origin", {g.origin.x, g.origin.y, g.origin.z}},
       {"cell_size", g.cellSize},
       {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}};
@@ -479,8 +461,8 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   readTimingAndBackends(params, e);
   readReference(params, e);
   readMetrics(params, e);
-  readIndirect(params, e);
-  recordConfiguration(params, file, e);
+  const std::set<std::string> foreignTables = readIndirect(params, e);
+  recordConfiguration(params, file, foreignTables, e);
   return e;
 }
 

@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -55,7 +56,8 @@ struct Experiment {
   // time beside what the animation moves (setSceneTime).
   std::vector<ParticleGeometry> particles;
   PipelineSettings settings;
-  Strategies strategies;
+  // [indirect] method: LPV by default (its strategies are its own), or another.
+  std::unique_ptr<IndirectMethod> method;
   int warmupFrames = 2;
   int repeats = 5;
   // The PNG only (data in the EXR is never scaled): with autoExposure the median lit pixel goes

@@ -27,15 +27,17 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   const TimingReport timing = measureFrames(pipeline, experiment.warmupFrames, experiment.repeats);
   std::vector<NamedImage> aovs = pipeline.readOutputs();
   requireFiniteImages(aovs);
-  // LPV's injection bookkeeping (another method injects into no grid).
-  std::optional<InjectionBalance> balance;
-  if (!pipeline.strategies().method) balance = pipeline.measureInjection();
+  // The method's diagnostics after the timed frames (LPV's injection flux balance), with what
+  // they found suspect.
+  nlohmann::json audit = pipeline.method().audit();
+  const std::vector<std::string> auditWarnings =
+      audit.value("warnings", std::vector<std::string>{});
+  audit.erase("warnings");
 
   const std::string hash = sceneHash(experiment.scene);
-  nlohmann::json manifest =
-      describeRun(experiment, context, pipeline, hash, medianStageMs(timing, "propagation"));
+  nlohmann::json manifest = describeRun(experiment, context, pipeline, hash, medianStageMs(timing));
   manifest["timing"] = timing.toJson();
-  if (balance) manifest["injection_flux_W"] = injectionFluxJson(*balance);
+  manifest.update(audit);
   manifest["outputs"] = {
       {"exr", "images.exr"},
       {"png", "combined.png"},
@@ -54,8 +56,9 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
         heatMapName + " (FLIP of " + mine + " against the reference's " + theirs + ")";
   }
 
-  if (const std::vector<std::string> warnings = resultWarnings(aovs, manifest); !warnings.empty())
-    manifest["warnings"] = warnings;
+  std::vector<std::string> warnings = resultWarnings(aovs, manifest);
+  warnings.insert(warnings.end(), auditWarnings.begin(), auditWarnings.end());
+  if (!warnings.empty()) manifest["warnings"] = warnings;
 
   std::filesystem::create_directories(outDir);
   const std::filesystem::path dir(outDir);

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 
 #include "framework/core/error.h"
 #include "framework/experiment/json_path.h"
@@ -43,20 +41,6 @@ std::vector<std::string> resultWarnings(const std::vector<NamedImage>& aovs,
                        "they reach)");
   else if (zero("indirect"))
     warnings.push_back("'indirect' is zero everywhere while 'direct' is not");
-  // VPLs binned outside the light grid are dropped: a fixed grid that misses lit surfaces, or a
-  // lit surface facing out on the scene's bounds, whose VPLs one cell out lie on the boundary of
-  // a grid with one cell of margin (docs/variants.md#energy-audit).
-  const auto* rsm = findPath(manifest, "injection_flux_W.rsm");
-  const auto* added = findPath(manifest, "injection_flux_W.added_by.injection");
-  const auto* type = findPath(manifest, "configuration.injection.type");
-  if (rsm && added && type && rsm->is_number() && added->is_number() && *type == "rsm_vpl" &&
-      rsm->get<double>() > 0.0 && added->get<double>() < 0.999 * rsm->get<double>()) {
-    std::ostringstream percent;
-    percent << std::setprecision(3) << 100.0 * (1.0 - added->get<double>() / rsm->get<double>());
-    warnings.push_back(percent.str() + "% of the RSMs' reflected flux fell outside the light grid "
-                       "and was dropped (a fixed grid that misses lit surfaces, or lit surfaces "
-                       "facing out on the scene's bounds: grid.margin = 2 keeps their VPLs)");
-  }
   // A solve that stopped before its tolerance (radiosity's max_iterations, say).
   if (const auto* statistics = findPath(manifest, "indirect_method.statistics")) {
     const nlohmann::json flat = statistics->flatten();  // items() refers into it
@@ -145,27 +129,7 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
   return out;
 }
 
-// For an RSM injection, RSM flux minus what it added fell outside the grid; other injections (sky
-// light) add flux that is not in the RSMs.
-nlohmann::json injectionFluxJson(const InjectionBalance& balance) {
-  nlohmann::json added = nlohmann::json::object();
-  for (const auto& [table, flux] : balance.byInjection) added[table] = flux;
-  return {{"rsm", balance.rsmFlux}, {"grid", balance.gridFlux}, {"added_by", added}};
-}
-
 namespace {
-
-// Where each light grid sat (finest first; one entry without cascades).
-nlohmann::json cascadeLevelsJson(const Pipeline& pipeline) {
-  nlohmann::json levels = nlohmann::json::array();
-  for (const LightGrid& grid : pipeline.levels()) {
-    const GridGeometry& g = grid.geometry;
-    levels.push_back({{"origin", {g.origin.x, g.origin.y, g.origin.z}},
-                      {"cell_size", g.cellSize},
-                      {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}});
-  }
-  return levels;
-}
 
 // Each particle system's size: its model, the most copies alive at once (the triangles it adds to
 // the scene) and how many are alive at frame 0 (a sequence's frame records give every frame's).
@@ -189,8 +153,7 @@ nlohmann::json particlesJson(const Experiment& experiment) {
 
 nlohmann::json describeRun(const Experiment& experiment, const GlContext& context,
                            const Pipeline& pipeline, const std::string& sceneHash,
-                           double propagationMs) {
-  const int iterations = pipeline.strategies().propagation->iterations();
+                           const std::map<std::string, double>& medianStageMs) {
   nlohmann::json description = {{"lpvlab_version", LPVLAB_VERSION},
           {"experiment", experiment.name},
           {"experiment_file", experiment.file.empty() ? "(built-in default)" : experiment.file},
@@ -212,22 +175,11 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
              "cpu_wall_clock = the steady clock around a stage whose strategies run on the CPU "
              "backend (see compute), on host.cpu, its transfers to and from GL included"},
             {"wall", "timing.wall_ms: steady clock around each stage, ended by glFinish"}}},
-          {"propagation_cell_iterations_per_second",
-           propagationMs > 0.0
-               ? double(pipeline.propagatedCells()) * iterations / (propagationMs * 1e-3)
-               : 0.0},
-          {"cascade_levels", cascadeLevelsJson(pipeline)},
           {"memory_bytes", pipeline.memoryReport()},
           {"work", pipeline.workReport()},
           {"gpu_work", pipeline.workReport(true)}};
   if (!experiment.particles.empty()) description["particles"] = particlesJson(experiment);
-  if (const IndirectMethod* method = pipeline.strategies().method.get()) {
-    // No light grid: what the method's last frame did instead.
-    description.erase("propagation_cell_iterations_per_second");
-    description.erase("cascade_levels");
-    description["indirect_method"] = {{"name", method->name()},
-                                      {"statistics", method->statistics()}};
-  }
+  description.update(pipeline.method().describe(medianStageMs));
   return description;
 }
 

@@ -4,6 +4,7 @@
 // opens its manifest.
 
 #include <nlohmann/json.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,14 +37,11 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
                                     const Image& mask, const ComparisonSettings& settings);
 
 // The manifest's description of the run: versions, configuration, scene, host, libraries, where
-// the kernels ran, the grids, memory and work per frame, and the propagation throughput from the
-// median propagation time `propagationMs`.
+// the kernels ran, memory and work per frame, and what the method says of itself given each
+// stage's median time (IndirectMethod::describe: LPV's grids and propagation throughput).
 nlohmann::json describeRun(const Experiment& experiment, const GlContext& context,
                            const Pipeline& pipeline, const std::string& sceneHash,
-                           double propagationMs);
+                           const std::map<std::string, double>& medianStageMs);
 
-// The flux bookkeeping of injection (W, RGB summed): what the RSMs reflect, what the grid holds,
-// and what each injection added.
-nlohmann::json injectionFluxJson(const InjectionBalance& balance);
 
 }  // namespace lpvlab

@@ -162,11 +162,7 @@ int firstMissingFrame(const Experiment& experiment, const fs::path& dir,
 // Whether what a frame computes depends on the frames before it (a GV history, incremental
 // instant radiosity): a resumed sequence then renders the frames before its first again.
 bool keepsStateBetweenFrames(const Experiment& experiment) {
-  if (const IndirectMethod* method = experiment.strategies.method.get())
-    return method->keepsStateBetweenFrames();
-  const auto strategies = experiment.strategies.all();
-  return std::any_of(strategies.begin(), strategies.end(),
-                     [](auto& s) { return s.second->keepsStateBetweenFrames(); });
+  return experiment.method->keepsStateBetweenFrames();
 }
 
 // A rendered frame's record (frames/<stem>.json): where the camera was, its times by stage, the
@@ -191,10 +187,10 @@ nlohmann::json frameRecord(const Experiment& experiment, Pipeline& pipeline, int
                            {"png_exposure_stops", exposure}};
   for (std::size_t s = 0; s < aliveParticles.size(); ++s)
     record["particles_alive"][experiment.particles[s].system().name] = aliveParticles[s];
-  // Another indirect method's figures of this frame (incremental instant radiosity's removals
-  // and insertions differ from frame to frame).
-  if (const IndirectMethod* method = pipeline.strategies().method.get())
-    record["indirect_method"] = method->statistics();
+  // The method's figures of this frame (incremental instant radiosity's removals and insertions
+  // differ from frame to frame), where it has any.
+  if (nlohmann::json statistics = pipeline.method().statistics(); !statistics.empty())
+    record["indirect_method"] = std::move(statistics);
   // A frame that is black, or whose solve stopped short, is flagged as a static run is
   // (resultWarnings reads the figures a static manifest has where it finds them).
   nlohmann::json figures = nlohmann::json::object();
@@ -214,7 +210,7 @@ nlohmann::json sequenceManifest(Experiment& experiment, const GlContext& context
   const TimingReport timing = timingReport(times, experiment.warmupFrames);
   nlohmann::json manifest =
       describeRun(experiment, context, pipeline, records.front().at("scene_hash"),
-                  medianStageMs(timing, "propagation"));
+                  medianStageMs(timing));
   manifest["timing"] = timing.toJson();
   manifest["timing"]["per"] = "frame: each frame of the sequence rendered once, in order";
   manifest["sequence"] = {{"frames", animation.frames},

@@ -42,9 +42,10 @@ TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup) {
   return report;
 }
 
-double medianStageMs(const TimingReport& timing, const std::string& stage) {
-  const auto found = timing.stageMs.find(stage);
-  return found == timing.stageMs.end() ? 0.0 : found->second.median;
+std::map<std::string, double> medianStageMs(const TimingReport& timing) {
+  std::map<std::string, double> medians;
+  for (const auto& [stage, summary] : timing.stageMs) medians[stage] = summary.median;
+  return medians;
 }
 
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats) {

@@ -30,9 +30,8 @@ struct TimingReport {
 
 // The timings of `frames` (in order) summarised per stage, after `warmup` untimed frames.
 TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup);
-// A stage's median time by its clock (ms), 0 when the run has no such stage (another indirect
-// method has no "propagation").
-double medianStageMs(const TimingReport& timing, const std::string& stage);
+// Each stage's median time by its clock (ms), by stage name.
+std::map<std::string, double> medianStageMs(const TimingReport& timing);
 // Renders `warmup` untimed frames and `repeats` timed ones.
 TimingReport measureFrames(Pipeline& pipeline, int warmup, int repeats);
 

@@ -94,7 +94,7 @@ std::unique_ptr<Pipeline> FitEvaluator::pipeline(const FitView& view, const std:
   // The residuals compare the indirect light alone: no shadow maps, no direct light (their
   // read-back for the CPU's direct light was most of a rendering's time).
   e.settings.directLight = false;
-  return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.strategies), shaders_);
+  return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.method), shaders_);
 }
 
 // The last frame's indirect image and coverage; an Error for NaN or Inf.

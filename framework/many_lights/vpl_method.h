@@ -38,7 +38,7 @@ VplVisibility readExactOrMappedVisibility(Params& p);
 class VplMethod : public IndirectMethod {
 public:
   std::vector<std::string> stageNames() const override;
-  bool readsReflectiveShadowMaps() const override { return false; }  // VPLs from rays
+  std::set<std::string> consumes() const override { return {}; }  // VPLs from rays
   void prepare(const MethodSetup& setup) override;
   void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) override;
   void render(MethodFrame& frame) override;

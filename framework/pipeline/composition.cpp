@@ -3,7 +3,6 @@
 #include <map>
 
 #include "framework/core/error.h"
-#include "framework/pipeline/sky_light.h"
 #include "framework/pipeline/strategy_catalogue.h"
 
 namespace lpvlab {
@@ -26,8 +25,7 @@ std::string strategyLabel(const std::string& table, const Strategy& strategy) {
 
 }  // namespace
 
-std::map<std::string, ResourceAllocator> resolveResources(
-    const std::vector<std::pair<std::string, ResourceUses>>& declared) {
+std::map<std::string, ResourceAllocator> resolveResources(const DeclaredUses& declared) {
   std::map<std::string, ResourceAllocator> produced;  // the first producer's allocator
   std::map<std::string, bool> used;
   for (const auto& [by, uses] : declared)
@@ -67,8 +65,14 @@ std::vector<std::pair<std::string, Strategy*>> Strategies::all() const {
   return out;
 }
 
-Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
-                                 int cascadeLevels, ComputeBackend backend) {
+std::string stageOfTable(const std::string& table) {
+  const std::string stage = table.substr(0, table.find('.'));
+  return stage == "rendering" ? "indirect" : stage;
+}
+
+Requirements resolveRequirements(const Strategies& strategies, int shOrder,
+                                 const DeclaredUses& alsoDeclared, int cascadeLevels,
+                                 ComputeBackend backend) {
   if (strategies.injection.empty() || !strategies.occlusion || !strategies.propagation ||
       strategies.rendering.empty())
     throw Error("pipeline: every stage needs a strategy");
@@ -76,19 +80,15 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm:
   requirements.shOrder = shOrder;
   requirements.cascadeLevels = cascadeLevels;
   requirements.backend = backend;
-  // Every strategy's uses of resources, and the experiment's own: a sky brighter than 0 must be
-  // injected by some strategy.
-  std::vector<std::pair<std::string, ResourceUses>> declared;
+  // Every strategy's uses of resources, and the others' (e.g. a sky that some strategy must
+  // inject).
+  DeclaredUses declared;
   for (const auto& [table, strategy] : strategies.all()) {
     ResourceUses uses;
     strategy->declare(uses);
     declared.emplace_back(strategyLabel(table, *strategy), std::move(uses));
   }
-  if (glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f)))) {
-    ResourceUses sky;
-    sky.consumes(kSkyLight);
-    declared.emplace_back("[sky] radiance", std::move(sky));
-  }
+  declared.insert(declared.end(), alsoDeclared.begin(), alsoDeclared.end());
   requirements.resources = resolveResources(declared);
   for (const auto& [table, strategy] : strategies.all()) {
     const std::string who = strategyLabel(table, *strategy);

@@ -10,37 +10,40 @@
 
 #include <glm/glm.hpp>
 
-#include "framework/pipeline/indirect_method.h"
 #include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
 
+// LPV's strategies, one per stage (variants/methods/lpv runs them).
 struct Strategies {
   std::vector<std::unique_ptr<InjectionStrategy>> injection;  // run in order, adding to the grid
   std::unique_ptr<OcclusionStrategy> occlusion;
   std::unique_ptr<PropagationStrategy> propagation;
   std::vector<std::unique_ptr<RenderingStrategy>> rendering;  // run in order, adding to `indirect`
-  // [indirect] method: null for LPV (the strategies above); else the method that replaces LPV's
-  // stages, and the strategies above are not run.
-  std::unique_ptr<IndirectMethod> method;
 
   // Every strategy with the experiment-file table it came from, e.g. ("propagation", strategy).
   std::vector<std::pair<std::string, Strategy*>> all() const;
 };
 
-// The resources a run has, from who declared what (e.g. "[propagation] type = \"directed\"" and
-// its uses): each one produced and used (consumed or read) by someone, with its first producer's
-// allocator. A consumed resource that nobody produces is an Error naming the consumer and the
-// resource.
-std::map<std::string, ResourceAllocator> resolveResources(
-    const std::vector<std::pair<std::string, ResourceUses>>& declared);
+// The stage whose time a strategy's work shows in, from its experiment table (Strategies::all):
+// "injection.also[0]" -> "injection", "rendering" -> "indirect".
+std::string stageOfTable(const std::string& table);
 
-// Every strategy's declare() resolved (resolveResources; a sky brighter than 0 consumes
-// kSkyLight, sky_light.h), starting from the grid's SH order and cascade levels, after
-// checking that each strategy handles that order and has no refusal.
+// Who declared which uses of resources, e.g. ("[propagation] type = \"directed\"", its uses).
+using DeclaredUses = std::vector<std::pair<std::string, ResourceUses>>;
+
+// The resources a run has, from who declared what: each one produced and used (consumed or read)
+// by someone, with its first producer's allocator. A consumed resource that nobody produces is an
+// Error naming the consumer and the resource.
+std::map<std::string, ResourceAllocator> resolveResources(const DeclaredUses& declared);
+
+// Every strategy's declare() resolved (resolveResources), with `alsoDeclared`, the uses of others
+// than the strategies (a sky brighter than 0 consumes the sky's light, which some injection
+// strategy must produce: variants/resources/sky_light.h), starting from the grid's SH order and
+// cascade levels, after checking that each strategy handles that order and has no refusal.
 // With ComputeBackend::Cpu, a strategy without a CPU kernel for the composition is an Error.
-Requirements resolveRequirements(const Strategies& strategies, int shOrder, glm::vec3 skyRadiance,
-                                 int cascadeLevels = 1,
+Requirements resolveRequirements(const Strategies& strategies, int shOrder,
+                                 const DeclaredUses& alsoDeclared = {}, int cascadeLevels = 1,
                                  ComputeBackend backend = ComputeBackend::Gl);
 
 // "gl", "cpu" or "auto" ([compute] backend) as the backend a run uses, given the GL renderer's

@@ -7,7 +7,6 @@
 
 #include "framework/gl/resources.h"
 #include "framework/pipeline/dual_image.h"
-#include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/light_grid.h"
 #include "framework/pipeline/light_views.h"

@@ -1,24 +1,32 @@
 #pragma once
-// An indirect-light method other than LPV ([indirect] method in the experiment file; "lpv", the
-// default, is the pipeline's own stages and strategies). A method runs after the same raster
-// passes (shadow maps, RSMs, G-buffer) and the same direct light as LPV, in place of LPV's
-// clear, occlusion, injection, propagation and indirect stages, and writes the same `indirect`
-// image: so every run, whatever its method, has the same AOVs, per-stage timings, memory and work
-// reports, and summaries, equal-time tables and plots need no case for it.
+// An indirect-light method ([indirect] method in the experiment file): LPV ("lpv", the default:
+// variants/methods/lpv/, with its strategies), instant radiosity, radiosity, ... Every method runs
+// after the same raster passes (shadow maps, RSMs, G-buffer) and the same direct light, and
+// writes the same `indirect` image: so every run, whatever its method, has the same AOVs,
+// per-stage timings, memory and work reports, and summaries, equal-time tables and plots need no
+// case for it. The pipeline never asks which method runs: what a method needs it declares
+// (consumes), what it reports it gives through the virtual functions below, and what only some
+// methods can do (derivatives through a frame, diagnostics after the timed frames) is a
+// capability every method answers, most by refusing.
 //
 // A method lives in variants/methods/<name>/, reads its parameters from the [indirect] table in
 // its constructor (unread keys are errors) and registers itself:
 //   LPVLAB_REGISTER(IndirectMethod, "instant_radiosity", "one-line description", InstantRadiosity);
+// A method that reads further top-level tables names them (LPVLAB_REGISTER_READING): so that one
+// file can sweep indirect.method over methods, those tables are read and checked whichever
+// method runs, and recorded in the configuration only when theirs does.
 
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "framework/core/registry.h"
+#include "framework/io/image.h"
 #include "framework/pipeline/strategy.h"
 
 namespace lpvlab {
@@ -30,6 +38,7 @@ struct PipelineSettings;
 struct Scene;
 class DualImage;
 class HostReadback;
+class SceneGpu;
 class ShaderCompiler;
 
 // What a method is prepared with, once per run.
@@ -37,50 +46,90 @@ struct MethodSetup {
   const Scene& scene;  // at construction (moveScene brings later frames' moves)
   const PipelineSettings& settings;
   ShaderCompiler& shaders;
+  ComputeBackend backend;       // [compute] backend, resolved against the GL renderer
+  const SceneGpu& sceneGpu;     // the scene on GL, as the raster passes draw it
+  const LightMaps& lightMaps;   // allocated; each frame renders them before render()
+  const Camera& camera;         // at construction (setCamera brings later moves)
 };
 
 // What one frame gives a method.
 struct MethodFrame {
   const Camera& camera;
   const GBuffer& gbuffer;      // this frame's, on GL (read it on the host through `host`)
-  const LightMaps& lightMaps;  // this frame's shadow maps and RSMs
+  const LightMaps& lightMaps;  // this frame's shadow maps and RSMs (those consumed)
   HostReadback& host;          // the raster passes' images on the CPU, read once per frame
-  DualImage& indirect;         // the output, zeros when the frame starts: W/(m^2 sr), albedo included
+  DualImage& indirect;         // the output: W/(m^2 sr), albedo included
   // Runs `work` as the timed stage `name` (one of the method's stageNames()).
   std::function<void(const std::string& name, const std::function<void()>& work)> stage;
 };
+
+// A WorkCount as the manifest's work report lists it.
+nlohmann::json workCountJson(const WorkCount& work);
 
 class IndirectMethod {
 public:
   virtual ~IndirectMethod() = default;
 
   // Its stages in the order a frame runs them (timing and work-report names), e.g. {"vpls",
-  // "indirect"}. The stage that writes the image is called "indirect", as LPV's is.
+  // "indirect"}. The stage that writes the image is called "indirect".
   virtual std::vector<std::string> stageNames() const = 0;
-  // Whether its kernels run on the CPU (its stages' device time is then their wall time).
+  // The raster inputs it reads (raster_inputs.h); the pipeline renders only those (and the
+  // G-buffer, and shadow maps for direct light).
+  virtual std::set<std::string> consumes() const = 0;
+  // Whether its kernels run on the CPU.
   virtual bool runsOnCpu() const { return true; }
+  // The stages whose work runs on the CPU after prepare (their time is then wall time, which
+  // GL timestamps do not see). By default every stage if runsOnCpu().
+  virtual std::set<std::string> cpuStages() const;
+  // Refuses, with an Error, what cannot run with these settings (checked when the experiment is
+  // read, before any GL); "cpu" as the backend checks that every kernel has a CPU version.
+  virtual void check(const PipelineSettings& settings) const { (void)settings; }
   virtual void prepare(const MethodSetup& setup) = 0;
+  // Renders one frame. The output image is zeros when it starts.
   virtual void render(MethodFrame& frame) = 0;
   // The scene moved (an animation's frame): `scene` holds the same lights and meshes as at
   // prepare, moved.
   virtual void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) = 0;
+  // The camera moved (from the next frame on).
+  virtual void setCamera(const Camera& camera) { (void)camera; }
   // Whether a frame depends on the frames before it (see Strategy::keepsStateBetweenFrames).
   virtual bool keepsStateBetweenFrames() const { return false; }
-  // Whether it reads the reflective shadow maps (the pipeline renders them only then: a method
-  // that makes its VPLs otherwise has no "rsm" stage).
-  virtual bool readsReflectiveShadowMaps() const = 0;
-  // Whether emissive surfaces light the scene through it (area lights): a scene lit only by them
-  // then runs (the pipeline otherwise needs a point, spot or directional light).
-  virtual bool lightsWithEmissiveSurfaces() const { return false; }
 
   // The last frame's work per stage (WorkCount, strategy.h), counted as it ran (a method's work
   // can depend on the scene: VPLs a random walk found, rays it traced).
   virtual std::map<std::string, std::vector<WorkCount>> work() const = 0;
+  // The work report's entries by stage (workCountJson each, or an entry naming what is not
+  // counted). `glKernels`: the work of the GL kernels whatever the backend (what a GPU would
+  // run); by default work() as it ran.
+  virtual nlohmann::json workReport(bool glKernels) const;
   // Bytes the method holds (host and GL).
   virtual std::size_t memoryBytes() const = 0;
-  // What the last frame did, for the run's manifest (e.g. VPL counts, the energy a clamp
-  // removed); an object.
+  // The memory report's entries, by group: {"indirect_method": memoryBytes()} by default.
+  virtual nlohmann::json memoryReport() const;
+  // Where its kernels run, for the manifest's "compute": {"indirect_method": {"name", "runs_on"}}
+  // by default.
+  virtual nlohmann::json computeReport() const;
+  // What the last frame did (e.g. VPL counts, the energy a clamp removed); an object.
   virtual nlohmann::json statistics() const { return nlohmann::json::object(); }
+  // The manifest's entries about the method, given each stage's median time (ms):
+  // {"indirect_method": {"name", "statistics"}} by default.
+  virtual nlohmann::json describe(const std::map<std::string, double>& medianStageMs) const;
+  // Diagnostics measured after the timed frames, which may re-run part of a frame (LPV's
+  // injection flux balance): manifest entries, none by default. A "warnings" array among them
+  // (sentences) joins the run's warnings instead.
+  virtual nlohmann::json audit() { return nlohmann::json::object(); }
+
+  // Derivatives through a frame (dual_frame.h): why d indirect / d `key` ("<table>.<name>")
+  // cannot be carried through this method's frames, or "" if it can. By default none can.
+  virtual std::string derivativeRefusal(const std::string& key) const;
+  struct FrameDerivatives {
+    Image indirect;                  // the dual pass's values, RGB, top row first
+    std::vector<Image> derivatives;  // per seed: d indirect / d parameter, RGB, top row first
+  };
+  // Renders a frame with `renderFrame` (the pipeline's), then the derivatives of its indirect
+  // image with respect to `seeds`, each one derivativeRefusal accepts.
+  virtual FrameDerivatives renderDerivatives(const std::vector<std::string>& seeds,
+                                             const std::function<void()>& renderFrame);
 
   // The registered name, set when the experiment creates the method.
   const std::string& name() const { return name_; }

@@ -1,12 +1,9 @@
 #pragma once
-// The LPV pipeline: per frame, (1) shadow maps and RSMs per light view, (2) the camera's
-// G-buffer and direct light, (3) clearing the grids, (4) occlusion (the GV's blocking
-// potential), (5) injection, (6) propagation, (7) rendering of indirect light. Stages 4-7 are the
-// experiment's strategies; the resources they pass each other (named_resources.h: the GV, the
-// normal grid, ...) exist only if one strategy produces them and another uses them.
-// With cascades (cascade.h) stages 3-6 run once per level, and injection ends by carrying each
-// level's light into its parent. Every stage is timed on the GPU (timestamp queries) and on the
-// wall clock (the stage ends with glFinish).
+// The frame: (1) shadow maps and RSMs per light view, (2) the camera's G-buffer and direct light,
+// then (3) the experiment's indirect method (indirect_method.h: LPV, the default, or another),
+// which writes the indirect image. The pipeline renders only the raster inputs a run needs
+// (raster_inputs.h) and never asks which method runs. Every stage is timed on the GPU (timestamp
+// queries) and on the wall clock (the stage ends with glFinish).
 
 #include <map>
 #include <memory>
@@ -25,6 +22,7 @@
 #include "framework/pipeline/cascade.h"
 #include "framework/pipeline/composition.h"
 #include "framework/pipeline/host_readback.h"
+#include "framework/pipeline/indirect_method.h"
 
 namespace lpvlab {
 
@@ -71,38 +69,22 @@ struct FrameTimes {
   std::vector<std::string> order;              // the stages in the order they ran
 };
 
-// Flux bookkeeping of injection (W, summed over RGB): what the RSMs reflect, and what the grid
-// holds after injection (the difference fell outside the grid).
-struct InjectionBalance {
-  double rsmFlux = 0.0;
-  double gridFlux = 0.0;
-  // Flux each injection strategy added (its experiment table, e.g. "injection.also[0]"), in order.
-  std::vector<std::pair<std::string, double>> byInjection;
-};
-
 class Pipeline {
 public:
-  // The stage names, in execution order.
+  // The pipeline's own stages, in the order a frame runs those it needs (the method's follow).
   static const std::vector<std::string>& stageNames();
 
   Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
-           Strategies strategies, ShaderCompiler& shaders);
+           std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders);
   ~Pipeline();
 
   FrameTimes renderFrame();
   // The last frame's outputs, top row first: direct, indirect, combined, albedo, normal, depth
   // (view depth in metres; 0 where no surface was hit).
   std::vector<NamedImage> readOutputs() const;
-  // Re-runs clearing and injection alone and measures the flux balance on the coarsest level
-  // (which holds the whole scene; a diagnostic: reads the RSM and the grid back to the CPU).
-  InjectionBalance measureInjection();
-  // A level's current / accumulated coefficients as floats (grid.glsl layout); level 0 is the
-  // finest (the only one without cascades).
-  std::vector<float> readGrid(bool accumulated, int level = 0) const;
 
-  // Moves the camera; finer cascade levels follow it from the next frame on (with "depth"
-  // placement each frame places them after its G-buffer; the "clear" stage includes that
-  // read-back), and so do directional light views that follow the camera.
+  // Moves the camera, from the next frame on (the method follows it: LPV's finer cascade levels,
+  // and directional light views that follow the camera).
   void setCamera(const Camera& camera);
   // The scene moved (a frame of an animation, framework/animation/animation.h): the lights and
   // the meshes' vertices are taken again from `scene`, which holds the same lights and meshes as
@@ -113,51 +95,39 @@ public:
   // light-field billboards), from the next frame on; the caller keeps it alive as long as it
   // renders frames.
   void addExtraGeometry(const ExtraGeometry* extra) { extras_.push_back(extra); }
-  // The light grids, finest first, where the last frame placed them.
-  const std::vector<LightGrid>& levels() const { return levels_; }
-  // Diagnostics (tests, audits): the last frame's light maps (the RSMs every injection reads),
-  // and a level's resources (named_resources.h), e.g. to read the injected normal grid back.
+
+  // The run's indirect method (LPV's levels and grid read-back are its own:
+  // variants/methods/lpv/light_propagation_volumes.h).
+  IndirectMethod& method() { return *method_; }
+  const IndirectMethod& method() const { return *method_; }
+  // Diagnostics (tests, audits): the last frame's light maps (shadow maps and RSMs).
   const LightMaps& lightMaps() const;
-  const ResourceTable& resources(int level = 0) const { return resources_.at(level); }
-  // Cells one propagation iteration updates, over every level (for cell-iterations/s).
-  std::size_t propagatedCells() const;
-  const Requirements& requirements() const { return requirements_; }
-  const Strategies& strategies() const { return strategies_; }
-  // The backend the run resolved ([compute] backend) and where each strategy's kernels run:
-  // {"backend": ..., "raster_passes": "gl", "strategies": {table: "cpu" | "gl"}}.
+  // Whether the frame renders a raster input (raster_inputs.h).
+  bool renders(std::string_view rasterInput) const;
+  // The backend the run resolved ([compute] backend) and where each stage's kernels run:
+  // {"backend": ..., "raster_passes": "gl", "direct": ..., and the method's computeReport()}.
   nlohmann::json computeReport() const;
   // What each stage does per frame (strategy.h's WorkCount), by stage name: a list of
   // {unit, units, multiply_adds_per_unit, bytes_per_unit, multiply_adds, bytes}; the raster
-  // passes count their texels and pixels only (their arithmetic is the rasteriser's), and a
-  // strategy that does not model its work yet is listed by table with "not_counted".
+  // passes count their texels and pixels only (their arithmetic is the rasteriser's).
   // `glKernels`: the work of the GL kernels whatever the backend (what a GPU would run: the
   // analysis's GPU estimate, analysis/lpvlab_analysis/gpu_estimate.py, is made from it).
   nlohmann::json workReport(bool glKernels = false) const;
-  // Bytes per resource group (GL buffers and textures; host buffers of strategies on the CPU).
+  // Bytes per resource group (GL buffers and textures; host buffers of kernels on the CPU).
   nlohmann::json memoryReport() const;
 
-  // Derivatives through a frame (dual_frame.h): renders a frame, then runs the stages from the
-  // first seeded one on dual numbers. `seeds`: at most kDualSlots parameter keys
-  // ("<table>.<name>"), each one derivativeRefusal accepts (an Error otherwise).
-  struct FrameDerivatives {
-    Image indirect;                  // the dual pass's values, RGB, top row first
-    std::vector<Image> derivatives;  // per seed: d indirect / d parameter, RGB, top row first
-  };
+  // Derivatives through a frame (dual_frame.h): renders a frame, then the method's dual pass.
+  // `seeds`: at most kDualSlots parameter keys ("<table>.<name>"), each one derivativeRefusal
+  // accepts (an Error otherwise).
+  using FrameDerivatives = IndirectMethod::FrameDerivatives;
   FrameDerivatives renderDerivatives(const std::vector<std::string>& seeds);
-  // Why the derivatives with respect to `key` cannot be carried through this composition's
-  // frames, or "" if they can.
+  // Why the derivatives with respect to `key` cannot be carried through this run's frames, or
+  // "" if they can.
   std::string derivativeRefusal(const std::string& key) const;
 
 private:
   template <class F>
   void stage(const std::string& name, FrameTimes& times, F&& work);
-  Frame frame(int level);
-  // Places the finer cascade levels around `focus` ("depth" placement), or by the eye rule.
-  void placeLevels(const std::optional<glm::vec3>& focus = std::nullopt);
-  void clearGrids();
-  // Stages clear to indirect: LPV's strategies (when the experiment has no other method).
-  void renderLpvStages(FrameTimes& times);
-  void injectAll(int level);
   // The light views for the current camera, lights and scene bounds.
   LightViews lightViews() const;
 
@@ -165,23 +135,18 @@ private:
   Camera camera_;
   std::vector<Light> lights_;  // as last placed (moveScene), with the scene's bounds then
   Bounds sceneBounds_;
-  Strategies strategies_;
+  std::unique_ptr<IndirectMethod> method_;
+  std::set<std::string> consumed_;  // the raster inputs the method reads
+  ComputeBackend backend_ = ComputeBackend::Gl;
   std::unique_ptr<SceneGpu> scene_;
   std::vector<const ExtraGeometry*> extras_;
   std::unique_ptr<GBufferPass> gbufferPass_;
   std::unique_ptr<LightMapsPass> lightMapsPass_;
   std::unique_ptr<DirectLighting> direct_;
-  Requirements requirements_;
-  std::vector<LightGrid> levels_;  // finest first
-  std::vector<ResourceTable> resources_;  // per level: the resources the composition uses
-  std::unique_ptr<CascadeCarry> carry_;                            // with carrying cascades only
   DualImage directImage_, indirectImage_;  // the frame's outputs, on the side that wrote them
   GpuTimer gpuTimer_;
-  std::set<std::string> cpuStages_;  // stages with a strategy on the CPU backend
+  std::set<std::string> cpuStages_;  // stages whose work runs on the CPU backend
   HostReadback hostReadback_;        // this frame's images read back for them
-  int geometryVersion_ = 0;  // moves of the scene's geometry so far (Frame::geometryVersion)
-  bool keepInjected_ = false;        // renderFrame keeps the injected grid (renderDerivatives)
-  std::vector<float> injected_;
 };
 
 }  // namespace lpvlab

@@ -70,7 +70,8 @@ std::vector<MethodCatalogueEntry> methodCatalogue() {
   std::vector<MethodCatalogueEntry> entries;
   for (const auto& [name, entry] : Registry<IndirectMethod>::instance().entries()) {
     const toml::table defaults;
-    Params params(defaults, "the method catalogue", "indirect");
+    Params experiment(defaults, "the method catalogue");
+    Params params = experiment.table("indirect");  // LPV reads its stages' tables beside it
     const auto method = entry.factory(params);
     entries.push_back({name, entry.description, parameterLine(params), params.resolved(),
                        method->stageNames()});

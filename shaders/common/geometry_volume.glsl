@@ -1,5 +1,5 @@
 // The geometry volume's side of propagation, shared by the GLSL kernels and C++
-// (framework/pipeline/geometry_volume.h describes the buffers).
+// (variants/resources/geometry_volume.h describes the buffers).
 //
 // Blocking potential (thesis eq. 4.4): a surfel of area A_s whose normal n faces the viewer that
 // saw it (the light of an RSM, or the camera) stops, of the light travelling in direction w,

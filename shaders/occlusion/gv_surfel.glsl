@@ -5,7 +5,7 @@
 // uniform, not a specialisation constant: at 0 the compiler would drop the kernel's uniforms).
 // With WITH_ALBEDO it also adds the surfel's albedo rho, weighted by its blocking weight A / s^2,
 // to the GV's albedo (rho A / s^2, A / s^2), so that a cell's mean albedo is the surfels' area-
-// weighted mean (framework/pipeline/geometry_volume.h).
+// weighted mean (variants/resources/geometry_volume.h).
 // It declares the target GV buffers and the uniforms of gv_surfel_interface.glsl, and the
 // specialisation constant 0 below; the including kernel enables GL_EXT_shader_atomic_float.
 #ifndef LPVLAB_GV_SURFEL_GLSL

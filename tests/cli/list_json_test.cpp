@@ -40,17 +40,24 @@ TEST(ListJson, IsTheTextListsCatalogueWithDefaultsStagesAndResources) {
     if (s.at("name") == "geometry_volume")
       EXPECT_NE(s.at("resources").at("produces").dump().find("geometry_volume"), std::string::npos);
   }
-  bool radiosity = false;
-  for (const nlohmann::json& m : list.at("methods"))
+  bool radiosity = false, lpv = false;
+  for (const nlohmann::json& m : list.at("methods")) {
+    if (m.at("name") == "lpv") {
+      lpv = true;
+      EXPECT_EQ(m.at("stages").front(), "clear");
+      EXPECT_EQ(m.at("stages").back(), "indirect");
+    }
     if (m.at("name") == "radiosity") {
       radiosity = true;
       EXPECT_EQ(m.at("stages").front(), "meshing");
       EXPECT_EQ(m.at("stages").back(), "indirect");
       EXPECT_EQ(m.at("parameters").at("form_factors"), "hemicube");
     }
+  }
   EXPECT_TRUE(radiosity);
-  EXPECT_EQ(list.at("lpv_stages").front(), "shadow_maps");
-  EXPECT_EQ(list.at("lpv_stages").back(), "indirect");
+  EXPECT_TRUE(lpv);  // LPV is one registered method among the others
+  EXPECT_EQ(list.at("pipeline_stages").front(), "shadow_maps");
+  EXPECT_EQ(list.at("pipeline_stages").back(), "direct");
 }
 
 }  // namespace

@@ -160,7 +160,7 @@ TEST(FitConstants, GvBlockingScaleActsOnTheIndirectLight) {
   const double three = total(evaluator.render(evaluator.views()[0], {3.0}).indirect);
   Experiment open = loadExperiment(files.write("open.toml", base));
   ShaderCompiler shaders;
-  Pipeline pipeline(open.scene, open.camera, open.settings, std::move(open.strategies), shaders);
+  Pipeline pipeline(open.scene, open.camera, open.settings, std::move(open.method), shaders);
   pipeline.renderFrame();
   const Image none = findAov(pipeline.readOutputs(), "indirect");
   double largest = 0.0;

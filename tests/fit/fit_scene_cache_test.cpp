@@ -27,7 +27,7 @@ const std::string kLeftCamera =
 Image plainRun(const std::string& path) {
   Experiment e = loadExperiment(path);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   return findAov(pipeline.readOutputs(), "indirect");
 }

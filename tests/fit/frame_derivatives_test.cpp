@@ -24,6 +24,7 @@
 
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
+#include "variants/resources/geometry_volume.h"
 #include "gl/gl_test_context.h"
 
 namespace lpvlab {
@@ -42,7 +43,7 @@ std::vector<std::string> overrides(const std::vector<std::string>& extra) {
 
 Image indirectAt(const std::vector<std::string>& extra, ShaderCompiler& shaders) {
   Experiment e = loadExperiment("", overrides(extra));
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   for (const NamedImage& aov : pipeline.readOutputs())
     if (aov.name == "indirect") return aov.image;
@@ -72,7 +73,7 @@ void expectDerivativesMatchDifferences(const std::vector<std::string>& compositi
     keys.push_back(s.key);
   }
   Experiment e = loadExperiment("", overrides(at));
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   const Pipeline::FrameDerivatives d = pipeline.renderDerivatives(keys);
   ASSERT_EQ(d.derivatives.size(), seeds.size());
 
@@ -167,7 +168,7 @@ TEST(FrameDerivatives, RefusesWhatNoKernelCarries) {
   test::glTestContext();
   ShaderCompiler shaders;
   Experiment e = loadExperiment("", overrides({}));
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   EXPECT_NE(pipeline.derivativeRefusal("injection.shift").find("carries no derivatives"),
             std::string::npos);
   EXPECT_NE(pipeline.derivativeRefusal("occlusion.blocking_scale"), "");

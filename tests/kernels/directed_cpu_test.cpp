@@ -24,6 +24,7 @@
 #include "directed_model.h"
 #include "error_support.h"
 #include "framework/math/solid_angle.h"
+#include "variants/resources/geometry_volume.h"
 #include "propagation_rig.h"
 
 namespace lpvlab {

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "pipeline_test_support.h"
@@ -45,7 +46,7 @@ Injected inject(std::vector<std::string> overrides, bool renderFrame = false) {
 #endif
   Experiment e = loadExperiment("", overrides);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   Injected out;
   out.injectionRanOn = pipeline.computeReport().at("strategies").at("injection").get<std::string>();
   if (renderFrame) {
@@ -53,8 +54,8 @@ Injected inject(std::vector<std::string> overrides, bool renderFrame = false) {
     out.images = pipeline.readOutputs();
   } else {
     pipeline.renderFrame();  // the RSMs
-    pipeline.measureInjection();
-    out.grid = pipeline.readGrid(false);
+    test::lpvOf(pipeline).measureInjection();
+    out.grid = test::lpvOf(pipeline).readGrid(false);
   }
   return out;
 }

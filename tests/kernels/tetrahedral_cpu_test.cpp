@@ -19,6 +19,7 @@
 
 #include "cpu_comparison.h"
 #include "framework/core/cpu_features.h"
+#include "variants/resources/geometry_volume.h"
 #include "propagation_rig.h"
 
 LPVLAB_SHARED_GLSL_BEGIN

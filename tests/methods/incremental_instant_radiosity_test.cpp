@@ -30,14 +30,14 @@ TEST(IncrementalInstantRadiosity, AStillLightKeepsItsVplsAndImageAndMatchesAFres
     const Scene scene = plates ? test::platesScene() : e.scene;
     const Camera camera = plates ? test::platesCamera() : e.camera;
     ShaderCompiler shaders;
-    Pipeline pipeline(scene, camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(scene, camera, e.settings, std::move(e.method), shaders);
     pipeline.renderFrame();
     const Image first = findAov(pipeline.readOutputs(), "indirect");
-    const nlohmann::json filled = pipeline.strategies().method->statistics();
+    const nlohmann::json filled = pipeline.method().statistics();
     EXPECT_EQ(filled["inserted"].get<int>(), filled["kept"].get<int>());
     for (int frame = 1; frame < 4; ++frame) {
       pipeline.renderFrame();
-      const nlohmann::json s = pipeline.strategies().method->statistics();
+      const nlohmann::json s = pipeline.method().statistics();
       EXPECT_EQ(s["inserted"].get<int>(), 0) << frame;
       EXPECT_EQ(s["removed_invalid"].get<int>() + s["removed_dense"].get<int>(), 0) << frame;
       EXPECT_EQ(findAov(pipeline.readOutputs(), "indirect").pixels, first.pixels) << frame;

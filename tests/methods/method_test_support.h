@@ -34,11 +34,10 @@ inline MethodRun runMethod(const std::vector<std::string>& overrides, const Scen
   if (scene) e.scene = *scene;
   if (camera) e.camera = *camera;
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   MethodRun run{pipeline.readOutputs(), nlohmann::json::object()};
-  if (const IndirectMethod* method = pipeline.strategies().method.get())
-    run.statistics = method->statistics();
+  run.statistics = pipeline.method().statistics();
   return run;
 }
 

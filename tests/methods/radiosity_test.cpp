@@ -49,15 +49,15 @@ Frames runObjCornell(const std::vector<std::string>& overrides, int frames = 1,
   test::glTestContext();
   Experiment e = loadExperiment(kObjCornell, sized(overrides));
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   Frames out;
   for (int f = 0; f < frames; ++f) {
     if (f > 0 && between) between(pipeline);
     out.times.push_back(pipeline.renderFrame());
-    out.work.push_back(pipeline.strategies().method->work());
+    out.work.push_back(pipeline.method().work());
   }
   out.aovs = pipeline.readOutputs();
-  out.statistics = pipeline.strategies().method->statistics();
+  out.statistics = pipeline.method().statistics();
   return out;
 }
 

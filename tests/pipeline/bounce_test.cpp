@@ -34,6 +34,7 @@
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
+#include "variants/resources/geometry_volume.h"
 #include "propagation_rig.h"
 
 namespace lpvlab {
@@ -343,7 +344,7 @@ glm::dvec3 meanIndirect(bool bounces) {
            "occlusion.type=\"geometry_volume\"",
            std::string("propagation.bounces=") + (bounces ? "true" : "false")});
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   for (const NamedImage& output : pipeline.readOutputs()) {
     if (output.name != "indirect") continue;
@@ -457,7 +458,7 @@ TEST(Bounces, TheGvAlbedoIsAllocatedOnlyWithBounces) {
              std::string("propagation.bounces=") + (bounces ? "true" : "false")});
     const std::size_t gvCells = std::size_t(test::cells(e.settings.grid.resolution + 1));
     ShaderCompiler shaders;
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
     const nlohmann::json memory = pipeline.memoryReport();
     EXPECT_EQ(memory.at("geometry_volume").get<std::size_t>(), gvCells * 4 * sizeof(float));
     EXPECT_EQ(memory.value("surface_albedo", std::size_t(0)), bounces ? gvCells * 4 * sizeof(float) : 0)
@@ -474,7 +475,7 @@ TEST(Bounces, WithoutAGeometryVolumeTheyAreRefusedNamingTheOcclusionStrategy) {
     Experiment e = loadExperiment("", {"output.width=16", "output.height=16",
                                        "occlusion.type=\"none\"", "propagation.bounces=true"});
     ShaderCompiler shaders;
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   });
   EXPECT_TRUE(test::contains(message, "bounces"));
   EXPECT_TRUE(test::contains(message, "[occlusion] type = \"geometry_volume\""));

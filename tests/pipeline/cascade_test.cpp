@@ -22,9 +22,11 @@
 
 #include <gtest/gtest.h>
 
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/math/cascade_placement.h"
 #include "framework/pipeline/pipeline.h"
+#include "variants/resources/geometry_volume.h"
 #include "pipeline_test_support.h"
 #include "rendering_rig.h"
 
@@ -137,9 +139,9 @@ struct LevelsSnapshot {
 
 LevelsSnapshot snapshot(const Pipeline& pipeline) {
   LevelsSnapshot run;
-  for (std::size_t level = 0; level < pipeline.levels().size(); ++level) {
-    run.accumulated.push_back(pipeline.readGrid(true, int(level)));
-    run.placement.push_back(pipeline.levels()[level].geometry);
+  for (std::size_t level = 0; level < test::lpvOf(pipeline).levels().size(); ++level) {
+    run.accumulated.push_back(test::lpvOf(pipeline).readGrid(true, int(level)));
+    run.placement.push_back(test::lpvOf(pipeline).levels()[level].geometry);
   }
   return run;
 }
@@ -152,7 +154,7 @@ TEST(CascadePipeline, ACameraMoveOfLessThanACellLeavesTheLightUnchanged) {
                           "camera.up=[0.0, 1.0, 0.0]", "camera.fov_deg=60.0"});
   ShaderCompiler shaders;
   const Camera start = e.camera;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   const LevelsSnapshot before = snapshot(pipeline);
   const float finestCell = before.placement[0].cellSize;
@@ -200,7 +202,7 @@ TEST(CascadePipeline, WithDepthPlacementASubCellCameraMoveLeavesTheLightUnchange
                           "camera.fov_deg=60.0"});
   ShaderCompiler shaders;
   const Camera start = e.camera;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   const LevelsSnapshot before = snapshot(pipeline);
   for (const std::vector<float>& level : before.accumulated)
@@ -265,12 +267,12 @@ PlacedRun runAblationView(const std::string& placement, int levels) {
                                      "cascades.carry=false", "propagation.iterations=8"});
   Experiment e = cornell(overrides);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   PlacedRun run;
   for (int level = 0; level < levels; ++level) {
-    const GridGeometry& g = pipeline.levels()[std::size_t(level)].geometry;
-    run.injectedFlux.push_back(gridFlux(pipeline.readGrid(false, level), g.cellCount(), 4));
+    const GridGeometry& g = test::lpvOf(pipeline).levels()[std::size_t(level)].geometry;
+    run.injectedFlux.push_back(gridFlux(test::lpvOf(pipeline).readGrid(false, level), g.cellCount(), 4));
     run.placement.push_back(g);
   }
   for (NamedImage& image : pipeline.readOutputs()) {
@@ -336,7 +338,7 @@ TEST(CascadePipeline, WithDepthPlacementAFrameThatSeesNothingFallsBackToTheEyeRu
                           "cascades.view_shift=0.4", "camera.position=[0.28, 0.27, -0.3]",
                           "camera.look_at=[0.28, 0.27, -1.0]", "camera.up=[0.0, 1.0, 0.0]"});
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   for (const NamedImage& image : pipeline.readOutputs()) {
     if (image.name == "depth") {
@@ -346,7 +348,7 @@ TEST(CascadePipeline, WithDepthPlacementAFrameThatSeesNothingFallsBackToTheEyeRu
   const std::vector<GridGeometry> eyeRule = placeCascadeLevels(
       e.settings.grid, 3, e.camera.position, e.camera.forward, e.settings.cascades.viewShift);
   for (std::size_t level = 0; level < 3; ++level)
-    EXPECT_EQ(pipeline.levels()[level].geometry.origin, eyeRule[level].origin) << "level " << level;
+    EXPECT_EQ(test::lpvOf(pipeline).levels()[level].geometry.origin, eyeRule[level].origin) << "level " << level;
 }
 
 LevelsSnapshot injectedLight(bool carry) {
@@ -354,7 +356,7 @@ LevelsSnapshot injectedLight(bool carry) {
   Experiment e = cornell({"cascades.levels=2", "propagation.iterations=0",
                           std::string("cascades.carry=") + (carry ? "true" : "false")});
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   return snapshot(pipeline);  // with no iterations, accumulated = injected (after carrying)
 }
@@ -414,7 +416,7 @@ TEST(CascadePipeline, EveryLevelHasItsOwnGridsAndTheStrategiesScratchExistsOnce)
     const std::size_t gridBytes = LightGrid::bytesPerGrid(e.settings.grid, 1);
     const std::size_t gvBytes = std::size_t(GeometryVolume::placementFor(e.settings.grid).cellCount()) *
                                 GeometryVolume::kCoefficients * sizeof(float);
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
     const nlohmann::json bytes = pipeline.memoryReport();
     EXPECT_EQ(bytes.at("light_grid").get<std::size_t>(), std::size_t(levels) * 2 * gridBytes);
     EXPECT_EQ(bytes.at("geometry_volume").get<std::size_t>(), std::size_t(levels) * gvBytes);
@@ -427,10 +429,10 @@ TEST(CascadePipeline, EightLevelsOfFourCellsGiveFiniteLight) {
   test::glTestContext();
   Experiment e = cornell({"cascades.levels=8", "grid.resolution=4", "propagation.iterations=20"});
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   for (int level = 0; level < 8; ++level)
-    for (const float v : pipeline.readGrid(true, level)) ASSERT_TRUE(std::isfinite(v)) << level;
+    for (const float v : test::lpvOf(pipeline).readGrid(true, level)) ASSERT_TRUE(std::isfinite(v)) << level;
   for (const NamedImage& image : pipeline.readOutputs())
     for (const float v : image.image.pixels) ASSERT_TRUE(std::isfinite(v)) << image.name;
 }

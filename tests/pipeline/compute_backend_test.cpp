@@ -19,6 +19,7 @@
 #include <tbb/global_control.h>
 
 #include "error_support.h"
+#include "lpv_support.h"
 #include "framework/core/parameters.h"
 #include "framework/core/registry.h"
 #include "framework/experiment/experiment.h"
@@ -54,13 +55,14 @@ Rendered render(std::vector<std::string> overrides) {
                    {"output.width=96", "output.height=96", "timing.warmup=0", "timing.repeats=1"});
   Experiment e = loadExperiment("", overrides);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   bool renderingOnCpu = true;
-  for (const auto& rendering : pipeline.strategies().rendering)
-    renderingOnCpu = renderingOnCpu && rendering->runsOnCpu(pipeline.requirements());
+  const LightPropagationVolumes& lpv = test::lpvOf(pipeline);
+  for (const auto& rendering : lpv.strategies().rendering)
+    renderingOnCpu = renderingOnCpu && rendering->runsOnCpu(lpv.requirements());
   return {pipeline.readOutputs(),
-          pipeline.strategies().propagation->runsOnCpu(pipeline.requirements()), renderingOnCpu};
+          lpv.strategies().propagation->runsOnCpu(lpv.requirements()), renderingOnCpu};
 }
 
 // Largest |a - b| over an AOV, relative to b's largest value.

@@ -45,7 +45,7 @@ const Render& cornellRender() {
     r.camera = e.camera;
     r.scene = e.scene;
     ShaderCompiler shaders;
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
     pipeline.renderFrame();
     for (NamedImage& aov : pipeline.readOutputs()) r.aovs[aov.name] = std::move(aov.image);
     return r;

@@ -42,7 +42,7 @@ Image directLight(const std::string& file, const std::string& backend,
   Experiment e = loadExperiment(file, overrides);
   for (Material& m : e.scene.materials) m.emission = emission;
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   EXPECT_EQ(pipeline.computeReport().at("direct"), backend);
   pipeline.renderFrame();
   const std::vector<NamedImage> outputs = pipeline.readOutputs();

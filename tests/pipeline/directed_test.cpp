@@ -23,6 +23,7 @@
 
 #include "directed_model.h"
 #include "framework/math/solid_angle.h"
+#include "variants/resources/geometry_volume.h"
 #include "order_grid_support.h"
 #include "propagation_rig.h"
 

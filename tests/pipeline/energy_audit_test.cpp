@@ -31,11 +31,12 @@
 #include <string>
 #include <vector>
 
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
-#include "framework/pipeline/geometry_volume.h"
 #include "framework/pipeline/light_views.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/path_tracer.h"
+#include "variants/resources/geometry_volume.h"
 #include "backend_comparison.h"
 #include "pipeline_test_support.h"
 
@@ -151,11 +152,11 @@ struct AuditRun {
 AuditRun run(const AuditScene& scene, const std::string& light, const AuditVariant& variant) {
   Experiment e = loadExperiment("", overridesFor(scene, light, variant.overrides));
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   AuditRun r;
   r.indirectMean = meanOf(findAov(pipeline.readOutputs(), "indirect"));
-  r.injection = pipeline.measureInjection();
+  r.injection = test::lpvOf(pipeline).measureInjection();
   return r;
 }
 
@@ -281,7 +282,7 @@ TEST(EnergyAuditInjection, RsmNormalsFaceTheirLightInEveryViewAndTheNormalGridHo
     SCOPED_TRACE(light + " light");
     Experiment e = loadExperiment("", overridesFor(scene, light, {"propagation.type=\"directed\""}));
     ShaderCompiler shaders;
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
     pipeline.renderFrame();
     const LightMaps& maps = pipeline.lightMaps();
     const std::size_t texels = std::size_t(maps.rsmResolution) * maps.rsmResolution;
@@ -312,8 +313,8 @@ TEST(EnergyAuditInjection, RsmNormalsFaceTheirLightInEveryViewAndTheNormalGridHo
       }
       viewsWithFlux += lit;
     }
-    std::vector<float> stored(std::size_t(4) * pipeline.levels().front().geometry.cellCount());
-    pipeline.resources().get(kNormalGrid).normals.download(stored.data(), stored.size() * sizeof(float));
+    std::vector<float> stored(std::size_t(4) * test::lpvOf(pipeline).levels().front().geometry.cellCount());
+    test::lpvOf(pipeline).resources().get(kNormalGrid).normals.download(stored.data(), stored.size() * sizeof(float));
     glm::dvec4 grid(0.0);
     for (std::size_t i = 0; i < stored.size(); i += 4)
       grid += glm::dvec4(stored[i], stored[i + 1], stored[i + 2], stored[i + 3]);
@@ -349,7 +350,7 @@ TEST(EnergyAuditBackends, DirectedTetrahedralAndCascadesAgreeOnBothBackendsUnder
         o.push_back("compute.backend=\"" + backend + "\"");  // after common()'s, so it wins
         Experiment e = loadExperiment("", o);
         ShaderCompiler shaders;
-        Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+        Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
         pipeline.renderFrame();
         indirect[backend] = findAov(pipeline.readOutputs(), "indirect");
       }

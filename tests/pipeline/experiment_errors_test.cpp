@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "error_support.h"
+#include "lpv_support.h"
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
 #include "io/temp_dir.h"
@@ -281,11 +282,11 @@ height = 80
   EXPECT_EQ(e.settings.height, 80);
   const glm::ivec3 cells = e.settings.grid.resolution;  // the override, along the longest axis
   EXPECT_EQ(std::max({cells.x, cells.y, cells.z}), 12);
-  ASSERT_TRUE(e.strategies.propagation);
-  EXPECT_EQ(e.strategies.propagation->iterations(), 7);
-  ASSERT_EQ(e.strategies.injection.size(), 1u);
-  ASSERT_TRUE(e.strategies.occlusion);
-  ASSERT_EQ(e.strategies.rendering.size(), 1u);
+  ASSERT_TRUE(test::lpvStrategies(e).propagation);
+  EXPECT_EQ(test::lpvStrategies(e).propagation->iterations(), 7);
+  ASSERT_EQ(test::lpvStrategies(e).injection.size(), 1u);
+  ASSERT_TRUE(test::lpvStrategies(e).occlusion);
+  ASSERT_EQ(test::lpvStrategies(e).rendering.size(), 1u);
   EXPECT_EQ(e.configuration["propagation"]["iterations"], 7);
   EXPECT_EQ(e.configuration["grid"]["resolution"], 12);
   EXPECT_EQ(e.configuration["lights"].size(), 3u);

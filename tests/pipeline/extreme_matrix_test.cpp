@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "pipeline_test_support.h"
@@ -32,11 +33,11 @@ Frame render(const std::vector<std::string>& overrides, float intensity = -1.0f)
   if (intensity >= 0.0f)
     for (Light& light : e.scene.lights) light.intensity = intensity;
   static ShaderCompiler shaders;  // compiled kernels are kept across the matrix
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   Frame frame;
   for (NamedImage& aov : pipeline.readOutputs()) frame.outputs[aov.name] = std::move(aov.image);
-  frame.balance = pipeline.measureInjection();
+  frame.balance = test::lpvOf(pipeline).measureInjection();
   return frame;
 }
 

@@ -21,7 +21,7 @@ const std::vector<std::string> kSmall = {"output.width=64", "output.height=64", 
 std::map<std::string, Image> render(Experiment& e) {
   test::glTestContext();
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   std::map<std::string, Image> out;
   for (NamedImage& aov : pipeline.readOutputs()) out[aov.name] = std::move(aov.image);

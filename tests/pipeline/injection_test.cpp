@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/scene/scene_loader.h"
@@ -30,9 +31,9 @@ InjectionBalance measure(const std::vector<std::string>& extraOverrides) {
   overrides.insert(overrides.end(), extraOverrides.begin(), extraOverrides.end());
   Experiment e = loadExperiment("", overrides);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();  // renders the RSMs that measureInjection reads
-  return pipeline.measureInjection();
+  return test::lpvOf(pipeline).measureInjection();
 }
 
 // The built-in box's one light: the spot under the ceiling.

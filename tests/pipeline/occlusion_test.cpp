@@ -32,6 +32,7 @@
 #include "framework/pipeline/light_views.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
+#include "variants/resources/geometry_volume.h"
 #include "error_support.h"
 #include "propagation_rig.h"
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "sweep_support.h"
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/run.h"
 #include "framework/experiment/sweep_summary.h"
@@ -74,12 +75,12 @@ Frame render(std::vector<std::string> overrides, bool withoutParticles = false) 
       for (int m = p.firstMesh(); m < p.firstMesh() + p.meshCount(); ++m)
         for (glm::vec3& v : e.scene.meshes[std::size_t(m)].positions) v = glm::vec3(0.28f, 0.01f, 0.28f);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   std::optional<ParticleBillboardSet> billboards;  // and no billboards without particles
   if (!withoutParticles) billboards.emplace(e.particles, e.animation.frameTime(0), shaders, pipeline);
   pipeline.renderFrame();
   f.outputs = pipeline.readOutputs();
-  f.injection = pipeline.measureInjection();
+  f.injection = test::lpvOf(pipeline).measureInjection();
   return f;
 }
 

@@ -16,6 +16,7 @@
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
+#include "variants/resources/geometry_volume.h"
 #include "grid_test_support.h"
 #include "pipeline_test_support.h"
 #include "stand_in_requirements.h"

@@ -47,7 +47,7 @@ TEST(ReferenceAgreement, RasterisedDirectLightMatchesThePathTracerAwayFromEdges)
   Experiment e = loadExperiment("", {"output.width=96", "output.height=96", "grid.resolution=8",
                                      "propagation.iterations=1", "timing.warmup=0"});
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   const std::vector<NamedImage> lpv = pipeline.readOutputs();
 

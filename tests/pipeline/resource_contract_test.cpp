@@ -18,12 +18,14 @@
 #include <toml++/toml.h>
 
 #include "error_support.h"
+#include "lpv_support.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/composition.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/scene_gpu.h"
-#include "framework/pipeline/sky_light.h"
+#include "variants/resources/geometry_volume.h"
+#include "variants/resources/sky_light.h"
 #include "pipeline_test_support.h"
 
 namespace lpvlab {
@@ -52,23 +54,29 @@ Strategies composition(const std::string& injection, const std::string& occlusio
 
 TEST(ResourceContract, DirectedPropagationWithoutTheRsmInjectionIsRefusedNamingBoth) {
   const std::string message = test::errorOf(
-      [] { resolveRequirements(composition("sky_columns", "none", "directed"), 1, glm::vec3(1.0f)); });
+      [] {
+        resolveRequirements(composition("sky_columns", "none", "directed"), 1,
+                            skyLightUses(glm::vec3(1.0f)));
+      });
   EXPECT_TRUE(test::contains(message, "[propagation] type = \"directed\" consumes 'normal_grid'"))
       << message;
   EXPECT_TRUE(test::contains(message, "add [injection] type = \"rsm_vpl\"")) << message;
   // The same composition with the RSM injection has the normal grid.
-  EXPECT_TRUE(resolveRequirements(composition("rsm_vpl", "none", "directed"), 1, glm::vec3(0.0f))
+  EXPECT_TRUE(resolveRequirements(composition("rsm_vpl", "none", "directed"), 1)
                   .has(kNormalGrid));
 }
 
 TEST(ResourceContract, ASkyNobodyInjectsIsRefusedNamingTheSkyAndItsInjection) {
   const std::string message = test::errorOf(
-      [] { resolveRequirements(composition("rsm_vpl", "none", "standard"), 1, glm::vec3(0.5f)); });
+      [] {
+        resolveRequirements(composition("rsm_vpl", "none", "standard"), 1,
+                            skyLightUses(glm::vec3(0.5f)));
+      });
   EXPECT_TRUE(test::contains(message, "[sky] radiance consumes 'sky_light'")) << message;
   EXPECT_TRUE(test::contains(message, "[injection] type = \"sky_columns\"")) << message;
   EXPECT_TRUE(test::contains(message, "[[injection.also]]")) << message;
   // No sky, nothing consumed.
-  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "none", "standard"), 1, glm::vec3(0.0f))
+  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "none", "standard"), 1)
                    .has(kSkyLight));
 }
 
@@ -107,13 +115,11 @@ TEST(ResourceContract, AResourceExistsOnlyWhenProducedAndUsed) {
   EXPECT_TRUE(both.count("surface_albedo"));
 
   // The shipped compositions: the GV occlusion's albedo only with bounces.
-  EXPECT_TRUE(resolveRequirements(composition("rsm_vpl", "geometry_volume", "standard"), 1,
-                                  glm::vec3(0.0f))
+  EXPECT_TRUE(resolveRequirements(composition("rsm_vpl", "geometry_volume", "standard"), 1)
                   .has(kGeometryVolume));
-  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "geometry_volume", "standard"), 1,
-                                   glm::vec3(0.0f))
+  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "geometry_volume", "standard"), 1)
                    .has(kSurfaceAlbedo));
-  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "none", "standard"), 1, glm::vec3(0.0f))
+  EXPECT_FALSE(resolveRequirements(composition("rsm_vpl", "none", "standard"), 1)
                    .has(kNormalGrid));  // the RSM injection produces it, nobody uses it
 }
 
@@ -168,15 +174,17 @@ TEST(ResourceContract, ThePipelineAllocatesATestsOwnResourcePerLevelAndHandsItTo
   test::glTestContext();
   Experiment e = loadExperiment("", {"output.width=24", "output.height=16", "grid.resolution=8",
                                      "cascades.levels=2"});
-  e.strategies.occlusion = std::make_unique<ProbeWriter>();
-  e.strategies.occlusion->setRegisteredName("probe_writer");
+  // The default experiment's composition, with a test's own producer and consumer.
+  Strategies strategies = composition("rsm_vpl", "none", "standard");
+  strategies.occlusion = std::make_unique<ProbeWriter>();
+  strategies.occlusion->setRegisteredName("probe_writer");
   auto reader = std::make_unique<ProbeReader>();
   reader->setRegisteredName("probe_reader");
   ProbeReader* probeReader = reader.get();
-  e.strategies.rendering.push_back(std::move(reader));
+  strategies.rendering.push_back(std::move(reader));
   const std::size_t materials = e.scene.materials.size();
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, test::lpvMethod(std::move(strategies)), shaders);
 
   // d. prepare() saw the scene, its light views and the image size.
   EXPECT_EQ(probeReader->sceneMaterials, int(materials));
@@ -193,7 +201,7 @@ TEST(ResourceContract, ThePipelineAllocatesATestsOwnResourcePerLevelAndHandsItTo
   EXPECT_EQ(level0.mark, 7.0f);          // the producer's argument reached the constructor
   EXPECT_EQ(level0.clears, 2);           // cleared before each frame
   EXPECT_EQ(level0.writes, 2);           // and written by its producer in each
-  EXPECT_EQ(level0.origin, pipeline.levels()[0].geometry.origin);  // placed with its level
+  EXPECT_EQ(level0.origin, test::lpvOf(pipeline).levels()[0].geometry.origin);  // placed with its level
 }
 
 // ---- e. the table's own checks -------------------------------------------------------------------

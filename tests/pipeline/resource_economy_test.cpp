@@ -14,6 +14,7 @@
 
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
+#include "variants/resources/geometry_volume.h"
 #include "pipeline_test_support.h"
 
 namespace lpvlab {
@@ -33,7 +34,7 @@ Report memoryOf(const std::vector<std::string>& extra) {
   Experiment e = loadExperiment("", overrides);
   ShaderCompiler shaders;
   const glm::ivec3 resolution = e.settings.grid.resolution;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   return {pipeline.memoryReport(), resolution};
 }
 
@@ -93,7 +94,7 @@ TEST(ResourceEconomy, WithoutDirectLightTheIndirectIsTheSameAndNoShadowMapsAreRe
                                        "light_maps.rsm_resolution=32", "grid.resolution=12",
                                        "compute.backend=\"cpu\""});
     e.settings.directLight = direct;
-    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+    Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
     const FrameTimes times = pipeline.renderFrame();
     EXPECT_EQ(times.wallMs.count("shadow_maps"), direct ? 1u : 0u);
     EXPECT_EQ(times.wallMs.count("direct"), direct ? 1u : 0u);

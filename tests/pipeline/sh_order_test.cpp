@@ -21,6 +21,7 @@
 #include "framework/io/image.h"
 #include "framework/math/solid_angle.h"
 #include "framework/pipeline/composition.h"
+#include "variants/resources/geometry_volume.h"
 #include "order_grid_support.h"
 #include "propagation_rig.h"
 
@@ -260,7 +261,7 @@ TEST(ShOrderComposition, EveryPropagationRunsAtOrdersOneToThree) {
   test::glTestContext();
   for (const std::string type : {"standard", "directed", "tetrahedral"})
     for (int order = 1; order <= 3; ++order)
-      EXPECT_EQ(resolveRequirements(composition(type), order, glm::vec3(0.0f)).shOrder, order) << type;
+      EXPECT_EQ(resolveRequirements(composition(type), order).shOrder, order) << type;
 }
 
 TEST(ShOrderComposition, OrderTwoOfAnOrderOneStrategyIsRefusedNamingTheGridKey) {
@@ -268,9 +269,9 @@ TEST(ShOrderComposition, OrderTwoOfAnOrderOneStrategyIsRefusedNamingTheGridKey) 
   Strategies strategies = composition("directed");
   strategies.rendering.push_back(std::make_unique<OrderOneRendering>());
   strategies.rendering.back()->setRegisteredName("order_one");
-  EXPECT_TRUE(resolveRequirements(strategies, 1, glm::vec3(0.0f)).has(kNormalGrid));
+  EXPECT_TRUE(resolveRequirements(strategies, 1).has(kNormalGrid));
   const std::string message =
-      test::errorOf([&] { resolveRequirements(strategies, 2, glm::vec3(0.0f)); });
+      test::errorOf([&] { resolveRequirements(strategies, 2); });
   EXPECT_TRUE(test::contains(message, "[grid] sh_order")) << message;
   EXPECT_TRUE(test::contains(message, "[rendering.also[0]] type = \"order_one\"")) << message;
 }

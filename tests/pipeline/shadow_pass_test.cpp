@@ -51,7 +51,7 @@ TEST(ShadowPass, OpaqueAndAlphaMaskedSurfacesBothCastShadows) {
   const Scene scene = shadowScene();
   const Camera& camera = scene.cameras.front();
   ShaderCompiler shaders;
-  Pipeline pipeline(scene, camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(scene, camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   const std::vector<NamedImage> aovs = pipeline.readOutputs();
   const Image& direct = findAov(aovs, "direct");

@@ -49,7 +49,7 @@ Rendered render(const std::string& file, const std::string& backend) {
   overrides.push_back("compute.backend=\"" + backend + "\"");
   Experiment e = loadExperiment(file, overrides, std::ref(scenes()));
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
   const std::vector<NamedImage> aovs = pipeline.readOutputs();
   return {findAov(aovs, "direct"), findAov(aovs, "indirect")};
@@ -86,7 +86,7 @@ TEST(ShippedOnCpu, EachShippedExperimentRunsOnTheCpuAsOnGlOrIsRefusedByName) {
       gl = render(first.string(), "gl");
     } catch (const Error& error) {  // a file for the path tracer alone: no LPV light
       const std::string why = error.what();
-      EXPECT_NE(why.find("no light the LPV pipeline can use"), std::string::npos) << why;
+      EXPECT_NE(why.find("no light the indirect method \"lpv\" can use"), std::string::npos) << why;
       refused.push_back(file.filename().string() + ": not an LPV experiment (no LPV light)");
       continue;
     }

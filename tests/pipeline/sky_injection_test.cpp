@@ -19,6 +19,7 @@
 #include <tbb/global_control.h>
 #include <toml++/toml.h>
 
+#include "lpv_support.h"
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
@@ -27,7 +28,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/scene_gpu.h"
-#include "framework/pipeline/sky_light.h"
+#include "variants/resources/sky_light.h"
 #include "framework/pipeline/strategy.h"
 #include "stand_in_requirements.h"
 #include "pipeline_test_support.h"
@@ -302,8 +303,8 @@ TEST(SkyInjection, ASkyWithoutSkyInjectionIsRefusedNamingTheSkyRadiance) {
   }
   overrides.push_back("injection.also=[{type = \"sky_columns\"}]");
   const Experiment e = loadExperiment("", overrides);
-  ASSERT_EQ(e.strategies.injection.size(), 2u);
-  EXPECT_EQ(e.strategies.injection[1]->name(), "sky_columns");
+  ASSERT_EQ(test::lpvStrategies(e).injection.size(), 2u);
+  EXPECT_EQ(test::lpvStrategies(e).injection[1]->name(), "sky_columns");
   // A zero sky needs no sky injection.
   EXPECT_NO_THROW(loadExperiment("", smallRun()));
 }
@@ -318,9 +319,9 @@ TEST(SkyInjection, SkyLitOpenCornellBoxRendersFiniteIndirectLight) {
   Scene& scene = e.scene;  // the box without its ceiling
   ASSERT_EQ(std::erase_if(scene.meshes, [](const Mesh& mesh) { return mesh.name == "ceiling"; }), 1u);
   ShaderCompiler shaders;
-  Pipeline pipeline(scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(scene, e.camera, e.settings, std::move(e.method), shaders);
   pipeline.renderFrame();
-  const InjectionBalance balance = pipeline.measureInjection();
+  const InjectionBalance balance = test::lpvOf(pipeline).measureInjection();
   // The grid holds the RSM's flux (the whole box is inside it) plus the sky's through the open
   // top (floor and block tops), each reported for its own injection table.
   ASSERT_EQ(balance.byInjection.size(), 2u);

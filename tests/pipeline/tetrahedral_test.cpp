@@ -30,6 +30,7 @@
 
 #include "framework/math/tetrahedral_face_integrals.h"
 #include "framework/math/tetrahedral_solid_angles.h"
+#include "variants/resources/geometry_volume.h"
 #include "order_grid_support.h"
 #include "propagation_rig.h"
 

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "sweep_support.h"
+#include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/sweep_summary.h"
 #include "framework/io/atomic_file.h"
@@ -43,13 +44,13 @@ Report workOf(std::vector<std::string> overrides) {
   overrides.insert(overrides.end(), {"output.width=64", "output.height=48"});
   Experiment e = loadExperiment("", overrides);
   ShaderCompiler shaders;
-  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.strategies), shaders);
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   Report r;
   r.work = pipeline.workReport();
   r.gpuWork = pipeline.workReport(true);
   r.cells = double(e.settings.grid.cellCount());
-  r.levels = int(pipeline.levels().size());
-  r.iterations = pipeline.strategies().propagation->iterations();
+  r.levels = int(test::lpvOf(pipeline).levels().size());
+  r.iterations = test::lpvOf(pipeline).strategies().propagation->iterations();
   r.width = e.settings.width;
   r.height = e.settings.height;
   r.rsmResolution = e.settings.rsmResolution;

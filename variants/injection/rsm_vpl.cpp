@@ -22,6 +22,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/injection/rsm_vpl_cpu.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {

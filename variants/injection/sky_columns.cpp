@@ -25,7 +25,7 @@
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/raster_passes.h"
-#include "framework/pipeline/sky_light.h"
+#include "variants/resources/sky_light.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/injection/sky_columns_cpu.h"
 

@@ -50,6 +50,7 @@
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
 #include "variants/occlusion/geometry_volume_cpu.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {

@@ -9,6 +9,7 @@
 #include "framework/core/buckets.h"
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
+#include "variants/resources/geometry_volume.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/occlusion/gv_surfel_sources.glsl"

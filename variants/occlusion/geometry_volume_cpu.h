@@ -15,7 +15,7 @@
 namespace lpvlab {
 
 // Where surfels are added: the GV's placement, blocking_scale, and its buffers (layout of
-// framework/pipeline/geometry_volume.h), added to.
+// variants/resources/geometry_volume.h), added to.
 struct GvTarget {
   GridGeometry gv;
   float blockingScale = 1.0f;

@@ -49,6 +49,7 @@
 #include "variants/propagation/directed_cpu.h"
 #include "variants/propagation/standard_cpu_frame.h"
 #include "variants/propagation/standard_work.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {

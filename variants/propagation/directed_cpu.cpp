@@ -9,6 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/math/dual.h"
 #include "framework/math/shared.h"
+#include "variants/resources/geometry_volume.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/directed_faces.glsl"

@@ -46,6 +46,7 @@
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/standard_cpu_frame.h"
 #include "variants/propagation/standard_work.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {

@@ -9,6 +9,7 @@
 
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 

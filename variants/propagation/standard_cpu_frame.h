@@ -11,6 +11,7 @@
 
 #include "framework/math/dual.h"
 #include "variants/propagation/standard_cpu.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 

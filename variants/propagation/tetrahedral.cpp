@@ -45,6 +45,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/tetrahedral_cpu.h"
+#include "variants/resources/geometry_volume.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/propagation/tetrahedral_lattice.glsl"

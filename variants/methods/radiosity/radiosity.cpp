@@ -35,6 +35,7 @@
 #include "framework/core/parameters.h"
 #include "framework/many_lights/host_gbuffer.h"
 #include "framework/pipeline/pipeline.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/radiosity/hemicube.h"
 #include "framework/radiosity/light_irradiance.h"
 #include "framework/radiosity/patch_display.h"
@@ -82,8 +83,8 @@ public:
     if (adaptiveLevels_ > 0) return {"meshing", "form_factors", "first_shot", "solve", "refine", "indirect"};
     return {"meshing", "form_factors", "first_shot", "solve", "indirect"};
   }
-  bool readsReflectiveShadowMaps() const override { return false; }
-  bool lightsWithEmissiveSurfaces() const override { return true; }
+  // Emissive surfaces are patches that shoot (area lights); no RSM.
+  std::set<std::string> consumes() const override { return {std::string(raster::kEmission)}; }
 
   void prepare(const MethodSetup& setup) override {
     if (glm::any(glm::greaterThan(setup.settings.skyRadiance, glm::vec3(0.0f))))

@@ -29,6 +29,7 @@
 #include "framework/many_lights/vpl_gather.h"
 #include "framework/pipeline/indirect_method.h"
 #include "framework/pipeline/pipeline.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/reference/random.h"
 
 namespace lpvlab {
@@ -50,7 +51,9 @@ public:
   }
 
   std::vector<std::string> stageNames() const override { return {"indirect"}; }
-  bool readsReflectiveShadowMaps() const override { return true; }
+  std::set<std::string> consumes() const override {
+    return {std::string(raster::kReflectiveShadowMaps)};
+  }
 
   void prepare(const MethodSetup& setup) override {
     if (pattern_ == "all") return;

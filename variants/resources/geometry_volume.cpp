@@ -1,4 +1,4 @@
-#include "framework/pipeline/geometry_volume.h"
+#include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 

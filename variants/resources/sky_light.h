@@ -6,6 +6,9 @@
 
 #include <cstddef>
 
+#include <glm/glm.hpp>
+
+#include "framework/pipeline/composition.h"
 #include "framework/pipeline/named_resources.h"
 
 namespace lpvlab {
@@ -18,5 +21,16 @@ struct SkyLight {
 
 inline constexpr ResourceKey<SkyLight> kSkyLight{
     "sky_light", "the constant sky's light ([sky] radiance) injected into the light grid"};
+
+// The experiment's own use: a sky brighter than 0 consumes the sky's light (resolveRequirements'
+// alsoDeclared), so that a composition with no strategy that injects it is refused by name.
+inline DeclaredUses skyLightUses(glm::vec3 skyRadiance) {
+  if (!glm::any(glm::greaterThan(skyRadiance, glm::vec3(0.0f)))) return {};
+  ResourceUses sky;
+  sky.consumes(kSkyLight);
+  DeclaredUses declared;
+  declared.emplace_back("[sky] radiance", std::move(sky));
+  return declared;
+}
 
 }  // namespace lpvlab

@@ -1,19 +1,12 @@
-// Pipeline::renderDerivatives and derivativeRefusal (pipeline.h, dual_frame.h).
+// LPV's derivatives through a frame (light_propagation_volumes.h, dual_frame.h): after a frame,
+// the stages from the first seeded one run again on dual numbers.
 #include <algorithm>
 
 #include "framework/core/error.h"
 #include "framework/pipeline/dual_frame.h"
-#include "framework/pipeline/pipeline.h"
+#include "variants/methods/lpv/light_propagation_volumes.h"
 
 namespace lpvlab {
-
-void PropagationStrategy::propagateDual(DualFrame&) {
-  throw Error("propagation \"" + name() + "\" has no kernel on dual numbers");
-}
-
-void RenderingStrategy::renderDual(DualFrame&) {
-  throw Error("rendering \"" + name() + "\" has no kernel on dual numbers");
-}
 
 namespace {
 
@@ -22,12 +15,10 @@ std::string stageOf(const std::string& table) { return table.substr(0, table.fin
 
 }  // namespace
 
-std::string Pipeline::derivativeRefusal(const std::string& key) const {
+std::string LightPropagationVolumes::derivativeRefusal(const std::string& key) const {
   const std::size_t dot = key.rfind('.');
   if (dot == std::string::npos) return "'" + key + "' is not <table>.<name>";
   const std::string table = key.substr(0, dot), name = key.substr(dot + 1);
-  if (strategies_.method)
-    return "indirect method \"" + strategies_.method->name() + "\" has no kernels on dual numbers";
   const Strategy* owner = nullptr;
   for (const auto& [t, strategy] : strategies_.all())
     if (t == table) owner = strategy;
@@ -45,13 +36,8 @@ std::string Pipeline::derivativeRefusal(const std::string& key) const {
   return {};
 }
 
-Pipeline::FrameDerivatives Pipeline::renderDerivatives(const std::vector<std::string>& seeds) {
-  if (seeds.size() > std::size_t(kDualSlots))
-    throw Error("derivatives: " + std::to_string(seeds.size()) + " parameters at once, at most " +
-                std::to_string(kDualSlots));
-  for (const std::string& seed : seeds)
-    if (const std::string why = derivativeRefusal(seed); !why.empty())
-      throw Error("derivatives of '" + seed + "': " + why);
+IndirectMethod::FrameDerivatives LightPropagationVolumes::renderDerivatives(
+    const std::vector<std::string>& seeds, const std::function<void()>& renderFrame) {
   keepInjected_ = true;
   try {
     renderFrame();
@@ -61,9 +47,9 @@ Pipeline::FrameDerivatives Pipeline::renderDerivatives(const std::vector<std::st
   }
   keepInjected_ = false;
   Frame frame = this->frame(0);
-  DualTexelImage indirect{settings_.width, settings_.height,
-                          std::vector<glm::vec<4, Dual>>(std::size_t(settings_.width) * settings_.height,
-                                                         glm::vec<4, Dual>(Dual(0.0)))};
+  const int w = settings_.width, h = settings_.height;
+  DualTexelImage indirect{w, h,
+                          std::vector<glm::vec<4, Dual>>(std::size_t(w) * h, glm::vec<4, Dual>(Dual(0.0)))};
   DualFrame dual{.frame = frame, .seeds = seeds, .table = "occlusion", .indirect = &indirect};
   bool upstream = false;  // a stage before rendering is seeded
   for (const std::string& seed : seeds) upstream |= stageOf(seed) != "rendering";
@@ -80,8 +66,7 @@ Pipeline::FrameDerivatives Pipeline::renderDerivatives(const std::vector<std::st
     dual.table = table;
     static_cast<RenderingStrategy*>(strategy)->renderDual(dual);
   }
-  // Top row first, as readOutputs gives the indirect image.
-  const int w = settings_.width, h = settings_.height;
+  // Top row first, as the pipeline's readOutputs gives the indirect image.
   FrameDerivatives out{Image(w, h, 3), std::vector<Image>(seeds.size(), Image(w, h, 3))};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

@@ -1,0 +1,163 @@
+// What LPV reports (light_propagation_volumes.h): its work, memory and kernels by strategy, its
+// grid's placement and throughput, and the injection flux balance, a diagnostic after the timed
+// frames.
+#include <iomanip>
+#include <sstream>
+
+#include "framework/core/error.h"
+#include "framework/math/shared.h"
+#include "variants/methods/lpv/light_propagation_volumes.h"
+
+namespace lpvlab {
+
+namespace {
+
+double gridFlux(const std::vector<float>& coefficients, int cells, int coefficientCount) {
+  double flux = 0.0;
+  for (int channel = 0; channel < LightGrid::kChannels; ++channel)
+    for (int cell = 0; cell < cells; ++cell)
+      flux += shared::shIntegral(glm::dvec4(
+          coefficients[shared::coefficientIndex(channel, 0, coefficientCount, cell, cells)], 0, 0, 0));
+  return flux;
+}
+
+// Where each light grid sat (finest first; one entry without cascades).
+nlohmann::json cascadeLevelsJson(const std::vector<LightGrid>& grids) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const LightGrid& grid : grids) {
+    const GridGeometry& g = grid.geometry;
+    levels.push_back({{"origin", {g.origin.x, g.origin.y, g.origin.z}},
+                      {"cell_size", g.cellSize},
+                      {"cells", {g.resolution.x, g.resolution.y, g.resolution.z}}});
+  }
+  return levels;
+}
+
+}  // namespace
+
+FrameShape LightPropagationVolumes::frameShape() const {
+  FrameShape shape;
+  shape.cells = double(settings_.grid.cellCount());
+  shape.levels = int(levels_.size());
+  shape.coefficients = levels_.front().coefficients;
+  shape.rsmTexels = double(lightMaps_->views) * lightMaps_->rsmResolution * lightMaps_->rsmResolution;
+  shape.pixels = double(settings_.width) * settings_.height;
+  return shape;
+}
+
+std::map<std::string, std::vector<WorkCount>> LightPropagationVolumes::work() const {
+  std::map<std::string, std::vector<WorkCount>> counts;
+  for (const auto& [table, strategy] : strategies_.all())
+    for (const WorkCount& w : strategy->work(frameShape(), requirements_))
+      counts[stageOfTable(table)].push_back(w);
+  return counts;
+}
+
+nlohmann::json LightPropagationVolumes::workReport(bool glKernels) const {
+  Requirements requirements = requirements_;
+  if (glKernels) requirements.backend = ComputeBackend::Gl;
+  nlohmann::json report = nlohmann::json::object();
+  for (const auto& [table, strategy] : strategies_.all()) {
+    const std::string stage = stageOfTable(table);
+    if (!report.contains(stage)) report[stage] = nlohmann::json::array();
+    const std::vector<WorkCount> counts = strategy->work(frameShape(), requirements);
+    // A strategy that does not model its work yet is listed by table.
+    if (counts.empty() && strategy->name() != "none")
+      report[stage].push_back({{"table", table}, {"not_counted", strategy->name()}});
+    for (const WorkCount& w : counts) report[stage].push_back(workCountJson(w));
+  }
+  return report;
+}
+
+nlohmann::json LightPropagationVolumes::memoryReport() const {
+  std::size_t grids = 0;
+  for (const LightGrid& grid : levels_) grids += grid.memoryBytes();
+  nlohmann::json bytes = {{"light_grid", grids}};
+  for (const ResourceTable& resources : resources_)
+    for (const auto& [name, size] : resources.memoryBytes())
+      bytes[name] = bytes.value(name, std::size_t(0)) + size;
+  for (const auto& [table, strategy] : strategies_.all())
+    bytes[table] = bytes.value(table, std::size_t(0)) + strategy->memoryBytes();
+  return bytes;
+}
+
+std::size_t LightPropagationVolumes::memoryBytes() const {
+  const nlohmann::json groups = memoryReport();  // kept: items() refers into it
+  std::size_t total = 0;
+  for (const auto& [group, bytes] : groups.items()) total += bytes.get<std::size_t>();
+  return total;
+}
+
+nlohmann::json LightPropagationVolumes::computeReport() const {
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [table, strategy] : strategies_.all())
+    stages[table] = strategy->runsOnCpu(requirements_) ? "cpu" : "gl";
+  return {{"strategies", stages}};
+}
+
+nlohmann::json LightPropagationVolumes::describe(
+    const std::map<std::string, double>& medianStageMs) const {
+  const auto propagation = medianStageMs.find("propagation");
+  const double ms = propagation == medianStageMs.end() ? 0.0 : propagation->second;
+  const double iterations = strategies_.propagation->iterations();
+  return {{"propagation_cell_iterations_per_second",
+           ms > 0.0 ? double(propagatedCells()) * iterations / (ms * 1e-3) : 0.0},
+          {"cascade_levels", cascadeLevelsJson(levels_)}};
+}
+
+// The flux bookkeeping of injection (W, RGB summed): what the RSMs reflect, what the grid holds,
+// and what each injection added. For an RSM injection, RSM flux minus what it added fell outside
+// the grid; other injections (sky light) add flux that is not in the RSMs.
+nlohmann::json LightPropagationVolumes::audit() {
+  const InjectionBalance balance = measureInjection();
+  nlohmann::json added = nlohmann::json::object();
+  for (const auto& [table, flux] : balance.byInjection) added[table] = flux;
+  nlohmann::json audit = {{"injection_flux_W",
+                           {{"rsm", balance.rsmFlux}, {"grid", balance.gridFlux}, {"added_by", added}}}};
+  // VPLs binned outside the light grid are dropped: a fixed grid that misses lit surfaces, or a
+  // lit surface facing out on the scene's bounds, whose VPLs one cell out lie on the boundary of
+  // a grid with one cell of margin (docs/variants.md#energy-audit).
+  const double rsmAdded = balance.byInjection.front().second;
+  if (strategies_.injection.front()->name() == "rsm_vpl" && balance.rsmFlux > 0.0 &&
+      rsmAdded < 0.999 * balance.rsmFlux) {
+    std::ostringstream percent;
+    percent << std::setprecision(3) << 100.0 * (1.0 - rsmAdded / balance.rsmFlux);
+    audit["warnings"] = {percent.str() +
+                         "% of the RSMs' reflected flux fell outside the light grid and was dropped "
+                         "(a fixed grid that misses lit surfaces, or lit surfaces facing out on "
+                         "the scene's bounds: grid.margin = 2 keeps their VPLs)"};
+  }
+  return audit;
+}
+
+std::vector<float> LightPropagationVolumes::readGrid(bool accumulated, int level) const {
+  const LightGrid& grid = levels_.at(std::size_t(level));
+  std::vector<float> data(grid.floatsPerGrid());
+  (accumulated ? grid.accumulated : grid.current).download(data.data(), data.size() * sizeof(float));
+  return data;
+}
+
+InjectionBalance LightPropagationVolumes::measureInjection() {
+  const int coarsest = int(levels_.size()) - 1;
+  Frame frame = this->frame(coarsest);
+  const LightGrid& grid = levels_.back();
+  clearGrids();
+  strategies_.occlusion->inject(frame);
+  InjectionBalance balance;
+  const auto all = strategies_.all();
+  for (std::size_t i = 0; i < strategies_.injection.size(); ++i) {
+    strategies_.injection[i]->inject(frame);
+    const double total =
+        gridFlux(readGrid(false, coarsest), grid.geometry.cellCount(), grid.coefficients);
+    balance.byInjection.emplace_back(all[i].first, total - balance.gridFlux);
+    balance.gridFlux = total;
+  }
+  const LightMaps& maps = *lightMaps_;
+  std::vector<float> flux(std::size_t(maps.rsmResolution) * maps.rsmResolution * maps.views * 4);
+  glGetTextureImage(maps.rsmFlux.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(flux.size() * sizeof(float)),
+                    flux.data());
+  for (std::size_t i = 0; i < flux.size(); i += 4) balance.rsmFlux += flux[i] + flux[i + 1] + flux[i + 2];
+  return balance;
+}
+
+}  // namespace lpvlab
