@@ -8,5 +8,7 @@ Modules, one job each:
   thesis_tables the thesis's timing tables 8.2-8.7 as data, and trend comparisons
   images        tone-mapping of run/reference EXRs for side-by-side views
   fsutil        atomic file writes
+  sections      the sections of kinds of run only some sweeps hold, registered by their modules
+                (methods, radiosity, particles)
   report        assemble everything into <out>/index.html
 """

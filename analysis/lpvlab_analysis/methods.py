@@ -14,6 +14,8 @@ import os
 import pandas as pd
 
 from . import equal_time as ET
+from . import plots
+from . import sections
 from . import summary as S
 
 METHOD_COL = S.METHOD_PARAM
@@ -132,3 +134,18 @@ def to_html(agg, metric):
             tds.append(f"<td>{'<b>' + s + '</b>' if (c == 'equal-time ratio' and wins) else s}</td>")
         body.append("<tr>" + "".join(tds) + "</tr>")
     return f"<table><tr>{head}</tr>" + "".join(body) + "</table>"
+
+
+def _plot(agg, path, metric):
+    return plots.speed_accuracy(by_method(agg), path, metric=metric)
+
+
+sections.register(sections.Section(
+    title="Methods", applies=has_methods, order=10, parts=[sections.Part(
+        note="Every indirect-light method of the sweep on one speed/accuracy plot (coloured by method; "
+             "LPV by its strategies), and each configuration's error against the LPV baseline series at "
+             "equal total time (ratio below 1, bold: the method beats spending that time on LPV). Each "
+             "method's images are under <i>Images per configuration</i>: the reference, the result and the "
+             "error map side by side.",
+        plot=_plot, html=to_html, markdown=to_markdown,
+        image="methods_speed_accuracy.png", markdown_file="methods.md")]))

@@ -20,6 +20,7 @@ import pandas as pd  # noqa: E402
 from . import equal_time as ET  # noqa: E402
 from . import summary as S  # noqa: E402
 from . import plots  # noqa: E402
+from . import sections  # noqa: E402
 from . import tables  # noqa: E402
 
 ALIVE_COL = "particles.alive"
@@ -179,3 +180,21 @@ def plot_resolution(agg, path, metric):
              for (views, blending), g in t.groupby(["views", "blending"], sort=True))
     return _time_and_error(path, metric, lines, "texels", "texels per view side", "light-field resolution",
                            {"base": 2}, False, S.timed_on(agg))
+
+
+sections.register(sections.Section(
+    title="Particles", applies=has_particles, order=30, parts=[
+        sections.Part(
+            note="Runs with particle systems (docs/particles.md): frame time and error against the number "
+                 "of particles alive at frame 0, one line per drawing and scene (seed 002, chapter 5.2, "
+                 "measured FPS only; here the error against the path-traced reference of the same particles "
+                 "too).",
+            plot=plot, html=to_html, markdown=to_markdown,
+            image="particles_count.png", markdown_file="particles.md"),
+        sections.Part(
+            note="Light-field particles against the light field's resolution: texels per view side, one "
+                 "line per view grid (colour) and view selection (solid: blended, dashed: nearest), seed "
+                 "002, chapter 5.2.2.",
+            plot=plot_resolution, html=resolution_html, markdown=resolution_markdown,
+            image="particles_resolution.png", markdown_file="particles_resolution.md",
+            applies=has_resolution_sweep)]))

@@ -18,6 +18,7 @@ import pandas as pd  # noqa: E402
 from . import equal_time as ET  # noqa: E402
 from . import methods  # noqa: E402
 from . import plots  # noqa: E402
+from . import sections  # noqa: E402
 from . import tables  # noqa: E402
 
 SOLUTION_COL = "method.solution_ms.total"
@@ -121,3 +122,13 @@ def plot(agg, path, metric):
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.14), frameon=False)
     return plots._save(fig, path)
+
+
+sections.register(sections.Section(
+    title="Radiosity", applies=has_radiosity, order=20, parts=[sections.Part(
+        note="Radiosity solves once and then only displays its solution while nothing moves: in the plots "
+             "above it stands at its frame time (the display). Here its error stands against its time to "
+             "solution (meshing, form factors, the lights' first shot, the solve and adaptive passes), beside "
+             "LPV's frame times (LPV solves anew every frame); labels are patch counts.",
+        plot=plot, html=to_html, markdown=to_markdown,
+        image="radiosity_time_to_solution.png", markdown_file="radiosity.md")]))

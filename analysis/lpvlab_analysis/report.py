@@ -29,10 +29,8 @@ from . import equal_time as ET
 from . import fsutil
 from . import gpu_estimate as G
 from . import images
-from . import methods
-from . import particles
 from . import plots
-from . import radiosity
+from . import sections as SC
 from . import sequences
 from . import summary as S
 from . import tables
@@ -250,6 +248,11 @@ def load_sweeps(sweep_dirs):
     return frames[0] if len(frames) == 1 else pd.concat(frames, ignore_index=True, sort=False)
 
 
+def _package():
+    """This package, whose modules register the report's sections (sections.py)."""
+    return sys.modules[__package__]
+
+
 def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
     """A section's plot (where it drew one) and table, with the table as Markdown beside the report."""
     if plot_path:
@@ -311,48 +314,16 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs {S.TIME_COL} "
                     "(no reference comparison in this sweep?).</p>")
 
-    if methods.has_methods(agg):
-        _log("plot: methods")
-        body.append("<h2>Methods</h2>")
-        body.append("<p class='note'>Every indirect-light method of the sweep on one speed/accuracy plot "
-                    "(coloured by method; LPV by its strategies), and each configuration's error against the "
-                    "LPV baseline series at equal total time (ratio below 1, bold: the method beats spending "
-                    "that time on LPV). Each method's images are under <i>Images per configuration</i>: the "
-                    "reference, the result and the error map side by side.</p>")
-        p = plots.speed_accuracy(methods.by_method(agg), os.path.join(img_dir, "methods_speed_accuracy.png"),
-                                 metric=metric)
-        _figure_and_table(body, out_dir, p, methods.to_html(agg, metric), "methods.md",
-                          methods.to_markdown(agg, metric))
-
-    if radiosity.has_radiosity(agg):
-        _log("plot: radiosity")
-        body.append("<h2>Radiosity</h2>")
-        body.append("<p class='note'>Radiosity solves once and then only displays its solution while nothing "
-                    "moves: in the plots above it stands at its frame time (the display). Here its error stands "
-                    "against its time to solution (meshing, form factors, the lights' first shot, the solve and "
-                    "adaptive passes), beside LPV's frame times (LPV solves anew every frame); labels are patch "
-                    "counts.</p>")
-        p = radiosity.plot(agg, os.path.join(img_dir, "radiosity_time_to_solution.png"), metric)
-        _figure_and_table(body, out_dir, p, radiosity.to_html(agg, metric), "radiosity.md",
-                          radiosity.to_markdown(agg, metric))
-
-    if particles.has_particles(agg):
-        _log("plot: particles")
-        body.append("<h2>Particles</h2>")
-        body.append("<p class='note'>Runs with particle systems (docs/particles.md): frame time and error "
-                    "against the number of particles alive at frame 0, one line per drawing and scene (seed 002, "
-                    "chapter 5.2, measured FPS only; here the error against the path-traced reference of the "
-                    "same particles too).</p>")
-        p = particles.plot(agg, os.path.join(img_dir, "particles_count.png"), metric)
-        _figure_and_table(body, out_dir, p, particles.to_html(agg, metric), "particles.md",
-                          particles.to_markdown(agg, metric))
-        if particles.has_resolution_sweep(agg):
-            body.append("<p class='note'>Light-field particles against the light field's resolution: texels per "
-                        "view side, one line per view grid (colour) and view selection (solid: blended, dashed: "
-                        "nearest), seed 002, chapter 5.2.2.</p>")
-            p = particles.plot_resolution(agg, os.path.join(img_dir, "particles_resolution.png"), metric)
-            _figure_and_table(body, out_dir, p, particles.resolution_html(agg, metric), "particles_resolution.md",
-                              particles.resolution_markdown(agg, metric))
+    # The sections of the kinds of run this sweep holds (sections.py: methods, radiosity,
+    # particles, ... each registered by its own module).
+    for section, parts in SC.applicable(SC.report_modules(_package()), agg):
+        _log(f"plot: {section.title.lower()}")
+        body.append(f"<h2>{html.escape(section.title)}</h2>")
+        for part in parts:
+            body.append(f"<p class='note'>{part.note}</p>")
+            p = part.plot(agg, os.path.join(img_dir, part.image), metric)
+            _figure_and_table(body, out_dir, p, part.html(agg, metric), part.markdown_file,
+                              part.markdown(agg, metric))
 
     body.append("<h2>Ablation table</h2>")
     body.append("<p class='note'>Sorted by median total frame time; best value of each metric in bold.</p>")
