@@ -3,6 +3,7 @@
 #include <map>
 
 #include "framework/core/error.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/strategy_catalogue.h"
 
 namespace lpvlab {
@@ -89,7 +90,12 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder,
     declared.emplace_back(strategyLabel(table, *strategy), std::move(uses));
   }
   declared.insert(declared.end(), alsoDeclared.begin(), alsoDeclared.end());
+  // The raster passes make the raster inputs (raster_inputs.h) for whoever consumes them.
+  declared.emplace_back("the raster passes", raster::producedByRasterPasses());
   requirements.resources = resolveResources(declared);
+  // They are the frame's, not resources allocated per light-grid level.
+  std::erase_if(requirements.resources,
+                [](const auto& resource) { return raster::isRasterInput(resource.first); });
   for (const auto& [table, strategy] : strategies.all()) {
     const std::string who = strategyLabel(table, *strategy);
     if (requirements.shOrder > strategy->maxShOrder())

@@ -39,8 +39,10 @@ std::map<std::string, ResourceAllocator> resolveResources(const DeclaredUses& de
 
 // Every strategy's declare() resolved (resolveResources), with `alsoDeclared`, the uses of others
 // than the strategies (a sky brighter than 0 consumes the sky's light, which some injection
-// strategy must produce: variants/resources/sky_light.h), starting from the grid's SH order and
-// cascade levels, after checking that each strategy handles that order and has no refusal.
+// strategy must produce: variants/resources/sky_light.h), and the raster passes as the producers
+// of the raster inputs (raster_inputs.h, which are left out of the resources allocated), starting
+// from the grid's SH order and cascade levels, after checking that each strategy handles that
+// order and has no refusal.
 // With ComputeBackend::Cpu, a strategy without a CPU kernel for the composition is an Error.
 Requirements resolveRequirements(const Strategies& strategies, int shOrder,
                                  const DeclaredUses& alsoDeclared = {}, int cascadeLevels = 1,

@@ -45,7 +45,7 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
       consumed_(method_->consumes()) {
   const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const Material& m) { return m.emits(); });
-  if (scene.lights.empty() && !(emissive && renders(raster::kEmission)))
+  if (scene.lights.empty() && !(emissive && renders(raster::kEmission.name)))
     throw Error(scene.source + ": the scene has no light the indirect method \"" + method_->name() +
                 "\" can use (point, spot or directional; emissive surfaces are shown but light "
                 "nothing in its runs); add one under [[lights]] in the experiment");
@@ -71,8 +71,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
 }
 
 bool Pipeline::renders(std::string_view rasterInput) const {
-  if (rasterInput == raster::kGBuffer) return true;  // the run's AOVs
-  if (rasterInput == raster::kShadowMaps && settings_.directLight) return true;
+  if (rasterInput == raster::kGBuffer.name) return true;  // the run's AOVs
+  if (rasterInput == raster::kShadowMaps.name && settings_.directLight) return true;
   return consumed_.count(std::string(rasterInput)) > 0;
 }
 
@@ -129,9 +129,9 @@ LightViews Pipeline::lightViews() const {
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
   hostReadback_.newFrame();
-  if (renders(raster::kShadowMaps))
+  if (renders(raster::kShadowMaps.name))
     stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_, extras_); });
-  if (renders(raster::kReflectiveShadowMaps))
+  if (renders(raster::kReflectiveShadowMaps.name))
     stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_, extras_); });
   stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_, extras_); });
   if (settings_.directLight)
@@ -193,7 +193,7 @@ nlohmann::json Pipeline::workReport(bool glKernels) const {
   nlohmann::json report = nlohmann::json::object();
   const double shadowTexels = double(maps.views) * maps.shadowResolution * maps.shadowResolution;
   report["shadow_maps"] = {workCountJson({"texel", shadowTexels})};
-  if (renders(raster::kReflectiveShadowMaps))
+  if (renders(raster::kReflectiveShadowMaps.name))
     report["rsm"] = {workCountJson({"texel", double(maps.views) * maps.rsmResolution * maps.rsmResolution})};
   report["gbuffer"] = {workCountJson({"pixel", pixels})};
   report["direct"] = {workCountJson(direct_->work(pixels, maps.lightCount, glKernels))};

@@ -128,7 +128,7 @@ TEST(MethodFrames, ReportsHaveLpvsShapeWithTheMethodsStages) {
     for (const char* stage : {"clear", "occlusion", "injection", "propagation"})
       EXPECT_FALSE(times.stageMs.count(stage)) << stage;
     // Only a method that reads the RSMs has them rendered.
-    const bool readsRsm = method.consumes().count(std::string(raster::kReflectiveShadowMaps)) > 0;
+    const bool readsRsm = method.consumes().count(std::string(raster::kReflectiveShadowMaps.name)) > 0;
     EXPECT_EQ(times.stageMs.count("rsm"), readsRsm ? 1u : 0u);
     EXPECT_EQ(readsRsm, method.name() == "rsm_gather");
     const nlohmann::json work = pipeline.workReport();

@@ -325,7 +325,9 @@ TEST(EnergyAuditInjection, RsmNormalsFaceTheirLightInEveryViewAndTheNormalGridHo
     EXPECT_EQ(notUnit, 0);
     EXPECT_EQ(facingAway, 0) << "RSM normals facing away from their light: not world space";
     EXPECT_EQ(viewsWithFlux, maps.views) << "every view of the light sees lit surfaces";
-    if (light == "point") EXPECT_EQ(maps.views, 6);
+    if (light == "point") {
+      EXPECT_EQ(maps.views, 6);
+    }
     EXPECT_GT(rsm.w, 0.0);
     for (int k = 0; k < 4; ++k) EXPECT_NEAR(grid[k], rsm[k], 1e-4 * rsm.w) << "component " << k;
   }

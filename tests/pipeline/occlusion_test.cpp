@@ -30,6 +30,7 @@
 #include "framework/experiment/experiment.h"
 #include "framework/pipeline/composition.h"
 #include "framework/pipeline/light_views.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/scene_gpu.h"
 #include "variants/resources/geometry_volume.h"
@@ -124,7 +125,8 @@ private:
       strategy_ = Registry<OcclusionStrategy>::instance().create(params, "geometry_volume");
       params.finish();
       const std::map<std::string, ResourceAllocator> resources = resolveResources(
-          {{"occlusion test", declared(*strategy_)}, {"a propagation", gvReader(withAlbedo)}});
+          {{"occlusion test", declared(*strategy_)}, {"a propagation", gvReader(withAlbedo)},
+           {"the raster passes", raster::producedByRasterPasses()}});
       EXPECT_EQ(resources.count(std::string(kGeometryVolume.name)), 1u);
       // Nobody uses the albedo unless the propagation bounces.
       EXPECT_EQ(resources.count(std::string(kSurfaceAlbedo.name)), withAlbedo ? 1u : 0u);

@@ -3,10 +3,14 @@
 //   - occlusion "none": no geometry volume at all (0 bytes);
 //   - occlusion "geometry_volume": exactly (res + 1)^3 cells of 4 floats (order-1 blocking), and
 //     with both sources one more such GV for merging, counted under "occlusion";
+//   - the RSMs are rendered only when a strategy consumes them (raster_inputs.h): sky injection
+//     alone, or a GV of the camera's surfels alone, has no "rsm" stage;
 //   - the light grid (current + accumulated) and standard propagation's scratch hold exactly
 //     3 * (order + 1)^2 floats per cell at SH orders 1, 2 and 3 (a GL scratch grid, or three host
 //     grids when gathering runs on the CPU).
 
+#include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +44,48 @@ Report memoryOf(const std::vector<std::string>& extra) {
 
 std::size_t cells(const glm::ivec3& r) { return std::size_t(r.x) * r.y * r.z; }
 const std::size_t kFloat = sizeof(float);
+
+// The stages one frame of the built-in Cornell box runs with `extra`, and what LPV consumes.
+struct Rendered {
+  std::vector<std::string> stages;
+  std::set<std::string> consumed;
+  nlohmann::json work;
+};
+
+Rendered stagesOf(const std::vector<std::string>& extra) {
+  test::glTestContext();
+  std::vector<std::string> overrides = {"output.width=32", "output.height=32",
+                                        "light_maps.shadow_resolution=64",
+                                        "light_maps.rsm_resolution=16", "grid.resolution=8"};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  Experiment e = loadExperiment("", overrides);
+  ShaderCompiler shaders;
+  Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
+  const FrameTimes times = pipeline.renderFrame();
+  return {times.order, pipeline.method().consumes(), pipeline.workReport()};
+}
+
+bool has(const std::vector<std::string>& stages, const std::string& stage) {
+  return std::find(stages.begin(), stages.end(), stage) != stages.end();
+}
+
+TEST(ResourceEconomy, TheRsmsAreRenderedOnlyWhenAStrategyConsumesThem) {
+  const Rendered standard = stagesOf({});
+  EXPECT_TRUE(has(standard.stages, "rsm"));  // rsm_vpl's VPLs
+  EXPECT_EQ(standard.consumed, std::set<std::string>{"rsm"});
+  EXPECT_TRUE(standard.work.contains("rsm"));
+
+  const Rendered sky = stagesOf({"injection.type=\"sky_columns\"", "sky.radiance=[0.2, 0.3, 0.4]"});
+  EXPECT_FALSE(has(sky.stages, "rsm"));
+  EXPECT_TRUE(has(sky.stages, "injection"));
+  EXPECT_TRUE(sky.consumed.empty());
+  EXPECT_FALSE(sky.work.contains("rsm"));
+
+  const std::string gv = "occlusion.type=\"geometry_volume\"";
+  const std::string sky1 = "injection.type=\"sky_columns\"", sky2 = "sky.radiance=[0.2, 0.3, 0.4]";
+  EXPECT_FALSE(has(stagesOf({sky1, sky2, gv, "occlusion.sources=[\"camera\"]"}).stages, "rsm"));
+  EXPECT_TRUE(has(stagesOf({sky1, sky2, gv, "occlusion.sources=[\"light\"]"}).stages, "rsm"));
+}
 
 TEST(ResourceEconomy, NoOcclusionAllocatesNoGeometryVolume) {
   const Report r = memoryOf({"occlusion.type=\"none\""});

@@ -20,6 +20,7 @@
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/injection/rsm_vpl_cpu.h"
 #include "variants/resources/geometry_volume.h"
@@ -37,7 +38,10 @@ public:
       : shiftCells_(params.get<float>("shift", 1.0f, {.min = -4.0f, .max = 4.0f})) {}
 
   int maxShOrder() const override { return 3; }
-  void declare(ResourceUses& uses) const override { uses.produces(kNormalGrid); }
+  void declare(ResourceUses& uses) const override {
+    uses.consumes(raster::kReflectiveShadowMaps, "its VPLs");
+    uses.produces(kNormalGrid);
+  }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
 
   // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,

@@ -47,6 +47,7 @@
 #include "framework/math/grid_geometry.h"
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
 #include "variants/occlusion/geometry_volume_cpu.h"
@@ -90,6 +91,7 @@ public:
   }
 
   void declare(ResourceUses& uses) const override {
+    if (fromLight_) uses.consumes(raster::kReflectiveShadowMaps, "sources = [\"light\"]");
     uses.produces(kGeometryVolume, skipFirstIteration_ ? 1 : 0);
     uses.produces(kSurfaceAlbedo);
   }

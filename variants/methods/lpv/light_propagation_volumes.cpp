@@ -37,6 +37,19 @@ Strategies readStrategies(Params& indirect) {
   return strategies;
 }
 
+// The raster inputs the strategies consume or read (Strategy::declare).
+std::set<std::string> rasterInputsOf(const Strategies& strategies) {
+  std::set<std::string> inputs;
+  for (const auto& [table, strategy] : strategies.all()) {
+    ResourceUses uses;
+    strategy->declare(uses);
+    for (const ResourceUses::Use& use : uses.uses())
+      if (use.kind != ResourceUses::Kind::Produces && raster::isRasterInput(use.name))
+        inputs.insert(use.name);
+  }
+  return inputs;
+}
+
 // The world positions of the surfaces the G-buffer's pixels see (where cascades follow them).
 std::vector<glm::vec3> visiblePositions(const GBuffer& gbuffer) {
   std::vector<glm::vec4> texels(std::size_t(gbuffer.width) * gbuffer.height);
@@ -54,7 +67,7 @@ LightPropagationVolumes::LightPropagationVolumes(Params& indirect)
     : LightPropagationVolumes(readStrategies(indirect)) {}
 
 LightPropagationVolumes::LightPropagationVolumes(Strategies strategies)
-    : strategies_(std::move(strategies)) {
+    : strategies_(std::move(strategies)), consumed_(rasterInputsOf(strategies_)) {
   setRegisteredName("lpv");
 }
 
@@ -64,9 +77,7 @@ std::vector<std::string> LightPropagationVolumes::stageNames() const {
   return {"clear", "occlusion", "injection", "propagation", "indirect"};
 }
 
-std::set<std::string> LightPropagationVolumes::consumes() const {
-  return {std::string(raster::kReflectiveShadowMaps)};
-}
+std::set<std::string> LightPropagationVolumes::consumes() const { return consumed_; }
 
 void LightPropagationVolumes::check(const PipelineSettings& settings) const {
   // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.

@@ -97,6 +97,7 @@ private:
   std::vector<LightGrid> levels_;         // finest first
   std::vector<ResourceTable> resources_;  // per level: the resources the composition uses
   std::unique_ptr<CascadeCarry> carry_;   // with carrying cascades only
+  std::set<std::string> consumed_;        // the raster inputs the strategies read
   std::set<std::string> cpuStages_;       // stages with a strategy on the CPU backend
   int geometryVersion_ = 0;  // moves of the scene's geometry so far (Frame::geometryVersion)
   // The last frame's inputs (they live as long as the pipeline): measureInjection's frame.

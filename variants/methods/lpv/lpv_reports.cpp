@@ -6,6 +6,7 @@
 
 #include "framework/core/error.h"
 #include "framework/math/shared.h"
+#include "framework/pipeline/raster_inputs.h"
 #include "variants/methods/lpv/light_propagation_volumes.h"
 
 namespace lpvlab {
@@ -152,6 +153,8 @@ InjectionBalance LightPropagationVolumes::measureInjection() {
     balance.byInjection.emplace_back(all[i].first, total - balance.gridFlux);
     balance.gridFlux = total;
   }
+  if (!consumed_.count(std::string(raster::kReflectiveShadowMaps.name)))
+    return balance;  // no RSM was rendered: no strategy reads one
   const LightMaps& maps = *lightMaps_;
   std::vector<float> flux(std::size_t(maps.rsmResolution) * maps.rsmResolution * maps.views * 4);
   glGetTextureImage(maps.rsmFlux.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(flux.size() * sizeof(float)),

@@ -84,7 +84,7 @@ public:
     return {"meshing", "form_factors", "first_shot", "solve", "indirect"};
   }
   // Emissive surfaces are patches that shoot (area lights); no RSM.
-  std::set<std::string> consumes() const override { return {std::string(raster::kEmission)}; }
+  std::set<std::string> consumes() const override { return {std::string(raster::kEmission.name)}; }
 
   void prepare(const MethodSetup& setup) override {
     if (glm::any(glm::greaterThan(setup.settings.skyRadiance, glm::vec3(0.0f))))

@@ -52,7 +52,7 @@ public:
 
   std::vector<std::string> stageNames() const override { return {"indirect"}; }
   std::set<std::string> consumes() const override {
-    return {std::string(raster::kReflectiveShadowMaps)};
+    return {std::string(raster::kReflectiveShadowMaps.name)};
   }
 
   void prepare(const MethodSetup& setup) override {
