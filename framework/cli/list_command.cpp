@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "framework/cli/commands.h"
+#include "framework/experiment/experiment.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/strategy_catalogue.h"
 
@@ -79,12 +80,13 @@ int listCommand(bool json) {
     std::cout << "      (CPU backend: "
               << (entry.cpuRefusal.empty() ? "yes" : "no, " + entry.cpuRefusal) << ")\n";
   }
-  // The other indirect-light methods, which replace the stages above (docs/methods.md).
-  std::cout << "[indirect] method =\n"
-            << "  lpv: the stages above (the default)\n";
-  for (const MethodCatalogueEntry& method : methodCatalogue())
-    std::cout << "  " << method.name << ": " << method.description << "\n"
-              << "      (" << method.parameters << ")\n";
+  // The indirect-light methods (docs/methods.md); LPV's stages are the strategies above.
+  std::cout << "[indirect] method =\n";
+  for (const MethodCatalogueEntry& method : methodCatalogue()) {
+    std::cout << "  " << method.name << (method.name == kDefaultIndirectMethod ? " (the default)" : "")
+              << ": " << method.description << "\n";
+    if (!method.parameters.empty()) std::cout << "      (" << method.parameters << ")\n";
+  }
   return 0;
 }
 

@@ -172,6 +172,8 @@ namespace {
 
 }  // namespace
 
+const char* const kDefaultIndirectMethod = "lpv";
+
 std::vector<std::size_t> setSceneTime(Experiment& experiment, double seconds) {
   applyAnimation(experiment.animation, seconds, experiment.scene, experiment.camera);
   std::vector<std::size_t> alive;
@@ -400,7 +402,7 @@ void readMetrics(Params& params, Experiment& e) {
 std::set<std::string> readIndirect(Params& params, Experiment& e) {
   Params indirect = params.table("indirect");
   const auto& methods = Registry<IndirectMethod>::instance();
-  const std::string chosen = indirect.getChoice("method", "lpv", methods.names());
+  const std::string chosen = indirect.getChoice("method", kDefaultIndirectMethod, methods.names());
   e.method = methods.entries().at(chosen).factory(indirect);
   e.method->setRegisteredName(chosen);
   const std::vector<std::string>& own = methods.entries().at(chosen).tables;

@@ -78,6 +78,9 @@ struct Experiment {
 using SceneLoader = std::function<Scene(const std::string& resolvedPath)>;
 // Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
 // the file and key for anything wrong.
+// [indirect] method where the file names none.
+extern const char* const kDefaultIndirectMethod;
+
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {},
                           const SceneLoader& loadScene = {});
 // The same from a table already read (`extends` and `include` merged, overrides applied, no
