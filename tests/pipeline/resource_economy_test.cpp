@@ -24,18 +24,23 @@
 namespace lpvlab {
 namespace {
 
+// The built-in Cornell box, small, with `extra` overrides.
+Experiment smallDefault(const std::vector<std::string>& extra) {
+  test::glTestContext();
+  std::vector<std::string> overrides = {"output.width=64", "output.height=64",
+                                        "light_maps.shadow_resolution=64",
+                                        "light_maps.rsm_resolution=32", "grid.resolution=12"};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  return loadExperiment("", overrides);
+}
+
 struct Report {
   nlohmann::json bytes;
   glm::ivec3 resolution;
 };
 
 Report memoryOf(const std::vector<std::string>& extra) {
-  test::glTestContext();
-  std::vector<std::string> overrides = {"output.width=64", "output.height=64",
-                                        "light_maps.shadow_resolution=64",
-                                        "light_maps.rsm_resolution=32", "grid.resolution=12"};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  Experiment e = loadExperiment("", overrides);
+  Experiment e = smallDefault(extra);
   ShaderCompiler shaders;
   const glm::ivec3 resolution = e.settings.grid.resolution;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
@@ -45,7 +50,7 @@ Report memoryOf(const std::vector<std::string>& extra) {
 std::size_t cells(const glm::ivec3& r) { return std::size_t(r.x) * r.y * r.z; }
 const std::size_t kFloat = sizeof(float);
 
-// The stages one frame of the built-in Cornell box runs with `extra`, and what LPV consumes.
+// The stages one frame runs with `extra`, and what LPV consumes.
 struct Rendered {
   std::vector<std::string> stages;
   std::set<std::string> consumed;
@@ -53,12 +58,7 @@ struct Rendered {
 };
 
 Rendered stagesOf(const std::vector<std::string>& extra) {
-  test::glTestContext();
-  std::vector<std::string> overrides = {"output.width=32", "output.height=32",
-                                        "light_maps.shadow_resolution=64",
-                                        "light_maps.rsm_resolution=16", "grid.resolution=8"};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  Experiment e = loadExperiment("", overrides);
+  Experiment e = smallDefault(extra);
   ShaderCompiler shaders;
   Pipeline pipeline(e.scene, e.camera, e.settings, std::move(e.method), shaders);
   const FrameTimes times = pipeline.renderFrame();
