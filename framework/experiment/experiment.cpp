@@ -168,10 +168,6 @@ std::string resolveScenePath(const std::string& reference, const std::string& ex
   return (fs::path(experimentFile).parent_path() / path).string();
 }
 
-namespace {
-
-}  // namespace
-
 const char* const kDefaultIndirectMethod = "lpv";
 
 std::vector<std::size_t> setSceneTime(Experiment& experiment, double seconds) {

@@ -46,9 +46,10 @@ std::string IndirectMethod::derivativeRefusal(const std::string& key) const {
 }
 
 IndirectMethod::FrameDerivatives IndirectMethod::renderDerivatives(
-    const std::vector<std::string>& seeds, const std::function<void()>&) {
-  throw Error("derivatives of '" + (seeds.empty() ? std::string() : seeds.front()) +
-              "': " + derivativeRefusal(seeds.empty() ? std::string(".") : seeds.front()));
+    const std::vector<std::string>&, const std::function<void()>&) {
+  // Pipeline::renderDerivatives asks derivativeRefusal first: only a method that overrides it
+  // to accept a key gets here, and it must override this too.
+  throw Error("indirect method \"" + name() + "\" has no kernels on dual numbers");
 }
 
 }  // namespace lpvlab

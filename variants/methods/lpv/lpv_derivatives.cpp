@@ -8,13 +8,6 @@
 
 namespace lpvlab {
 
-namespace {
-
-// The stage of an experiment table: "rendering.also[0]" -> "rendering".
-std::string stageOf(const std::string& table) { return table.substr(0, table.find('.')); }
-
-}  // namespace
-
 std::string LightPropagationVolumes::derivativeRefusal(const std::string& key) const {
   const std::size_t dot = key.rfind('.');
   if (dot == std::string::npos) return "'" + key + "' is not <table>.<name>";
@@ -27,8 +20,7 @@ std::string LightPropagationVolumes::derivativeRefusal(const std::string& key) c
   if (std::find(names.begin(), names.end(), name) == names.end())
     return table + " \"" + owner->name() + "\" carries no derivatives of '" + name + "'";
   if (levels_.size() != 1) return "derivatives are carried through one cascade level only";
-  const std::string stage = stageOf(table);
-  if (stage != "rendering" && !strategies_.propagation->differentiates())
+  if (stageOfTable(table) != "indirect" && !strategies_.propagation->differentiates())
     return "propagation \"" + strategies_.propagation->name() + "\" has no kernel on dual numbers";
   for (const auto& rendering : strategies_.rendering)
     if (!rendering->differentiates())
@@ -52,7 +44,7 @@ IndirectMethod::FrameDerivatives LightPropagationVolumes::renderDerivatives(
                           std::vector<glm::vec<4, Dual>>(std::size_t(w) * h, glm::vec<4, Dual>(Dual(0.0)))};
   DualFrame dual{.frame = frame, .seeds = seeds, .table = "occlusion", .indirect = &indirect};
   bool upstream = false;  // a stage before rendering is seeded
-  for (const std::string& seed : seeds) upstream |= stageOf(seed) != "rendering";
+  for (const std::string& seed : seeds) upstream |= stageOfTable(seed) != "indirect";
   if (upstream) {
     strategies_.occlusion->injectDual(dual);
     dual.injected = constantDuals(injected_);
@@ -62,7 +54,7 @@ IndirectMethod::FrameDerivatives LightPropagationVolumes::renderDerivatives(
     dual.accumulated = constantDuals(levels_.front().accumulated.hostRead());
   }
   for (const auto& [table, strategy] : strategies_.all()) {
-    if (stageOf(table) != "rendering") continue;
+    if (stageOfTable(table) != "indirect") continue;
     dual.table = table;
     static_cast<RenderingStrategy*>(strategy)->renderDual(dual);
   }

@@ -48,8 +48,9 @@ FrameShape LightPropagationVolumes::frameShape() const {
 
 std::map<std::string, std::vector<WorkCount>> LightPropagationVolumes::work() const {
   std::map<std::string, std::vector<WorkCount>> counts;
+  const FrameShape shape = frameShape();
   for (const auto& [table, strategy] : strategies_.all())
-    for (const WorkCount& w : strategy->work(frameShape(), requirements_))
+    for (const WorkCount& w : strategy->work(shape, requirements_))
       counts[stageOfTable(table)].push_back(w);
   return counts;
 }
@@ -57,11 +58,12 @@ std::map<std::string, std::vector<WorkCount>> LightPropagationVolumes::work() co
 nlohmann::json LightPropagationVolumes::workReport(bool glKernels) const {
   Requirements requirements = requirements_;
   if (glKernels) requirements.backend = ComputeBackend::Gl;
+  const FrameShape shape = frameShape();
   nlohmann::json report = nlohmann::json::object();
   for (const auto& [table, strategy] : strategies_.all()) {
     const std::string stage = stageOfTable(table);
     if (!report.contains(stage)) report[stage] = nlohmann::json::array();
-    const std::vector<WorkCount> counts = strategy->work(frameShape(), requirements);
+    const std::vector<WorkCount> counts = strategy->work(shape, requirements);
     // A strategy that does not model its work yet is listed by table.
     if (counts.empty() && strategy->name() != "none")
       report[stage].push_back({{"table", table}, {"not_counted", strategy->name()}});
