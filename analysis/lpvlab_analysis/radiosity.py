@@ -1,4 +1,4 @@
-"""Radiosity's runs of a sweep (issue 18, docs/radiosity.md): what each cost and how close it came.
+"""Radiosity's runs of a sweep (issue 18, docs/variants/radiosity.md): what each cost and how close it came.
 
 Radiosity reaches its solution once and then only displays it while nothing moves, so a run has
 two times: its frame time (the display, what the Methods plot shows beside LPV, which redoes

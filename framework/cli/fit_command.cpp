@@ -41,28 +41,22 @@ void printErrors(const char* when, const nlohmann::json& errors) {
   }
 }
 
-}  // namespace
-
-int fitCommand(const Options& options) {
-  const FitSpec spec = readFitSpec(options.experiment, options.overrides);
-  const std::string dir = options.out.empty()
-                              ? "runs/" + std::filesystem::path(options.experiment).stem().string() + "-fit"
-                              : options.out;
-  requireOutputDirectory(dir, options.out.empty() ? "fit directory" : "--out");
-  // Read before any rendering, so a damaged progress file stops the fit at once.
-  const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
-  // A finished fit (its outputs, and no progress: that is removed last) is not replaced unless
-  // --force, which removes its outputs first; an interrupted one resumes.
+// A finished fit in `dir` (its outputs, and no progress: that is removed last) is not replaced
+// unless --force, which removes its outputs first; an interrupted one resumes.
+void refuseAFinishedFit(const std::string& dir, const std::string& progressPath, const Options& options) {
   const std::filesystem::path finished = std::filesystem::path(dir) / "fit.json";
-  if (std::filesystem::exists(finished) && !std::filesystem::exists(progressPath)) {
-    if (!options.force)
-      throw Error((options.out.empty() ? "fit directory " : "--out ") + dir +
-                  ": holds a finished fit (fit.json); --force replaces it (removing its outputs "
-                  "first), or choose another directory");
-    for (const char* name : {"fit.json", "fitted.toml", "fit.md"})
-      std::filesystem::remove(std::filesystem::path(dir) / name);
-  }
-  const std::string key = fitKey(spec);
+  if (!std::filesystem::exists(finished) || std::filesystem::exists(progressPath)) return;
+  if (!options.force)
+    throw Error((options.out.empty() ? "fit directory " : "--out ") + dir +
+                ": holds a finished fit (fit.json); --force replaces it (removing its outputs "
+                "first), or choose another directory");
+  for (const char* name : {"fit.json", "fitted.toml", "fit.md"})
+    std::filesystem::remove(std::filesystem::path(dir) / name);
+}
+
+// The progress of an interrupted fit of this spec (`key`), from its last accepted step, said
+// where it resumes; none for a new fit (another fit's progress is named and started over).
+std::optional<FitProgress> resumedProgress(const std::string& progressPath, const std::string& key) {
   bool otherFit = false;
   std::optional<FitProgress> resume = readFitProgress(progressPath, key, &otherFit);
   if (resume && !resume->log.empty()) {
@@ -73,10 +67,45 @@ int fitCommand(const Options& options) {
                       ? " (the last accepted step; the rejected ones after it are done again)"
                       : "")
               << " from " << progressPath << " (delete it to start over)\n";
-  }
-  else if (otherFit)
+  } else if (otherFit) {
     std::cerr << "lpvlab: fit: " << progressPath << " is another fit's progress (the file or its "
               << "overrides changed): starting over\n";
+  }
+  return resume;
+}
+
+// The fitted values with their uncertainties, and the errors before and after.
+void printResult(const FitSpec& spec, const FitResult& result, const nlohmann::json& before,
+                 const nlohmann::json& after) {
+  std::printf("%s after %zu iterations, %d renderings, %s: %s\n",
+              result.converged ? "converged" : "NOT converged", result.log.empty() ? 0 : result.log.size() - 1,
+              result.renders, ProgressBar::formatSeconds(result.seconds).c_str(), result.termination.c_str());
+  for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
+    if (result.undetermined[j])
+      std::printf("  %-36s undetermined by the images (not fitted; initial %.6g)\n",
+                  spec.parameters[j].key.c_str(), spec.parameters[j].initial);
+    else
+      std::printf("  %-36s %.6g +- %.2g (sandwich %.2g)  (initial %.6g)%s\n", spec.parameters[j].key.c_str(),
+                  result.values[j], result.stdDev[j], result.sandwichStdDev[j], spec.parameters[j].initial,
+                  result.atBound[j] ? "  at a bound: the uncertainty assumes it inactive" : "");
+  }
+  printErrors("before", before);
+  printErrors("after", after);
+}
+
+}  // namespace
+
+int fitCommand(const Options& options) {
+  const FitSpec spec = readFitSpec(options.experiment, options.overrides);
+  const std::string dir = options.out.empty()
+                              ? "runs/" + std::filesystem::path(options.experiment).stem().string() + "-fit"
+                              : options.out;
+  requireOutputDirectory(dir, options.out.empty() ? "fit directory" : "--out");
+  // Read before any rendering, so a damaged progress file stops the fit at once.
+  const std::string progressPath = (std::filesystem::path(dir) / "fit.progress.json").string();
+  refuseAFinishedFit(dir, progressPath, options);
+  const std::string key = fitKey(spec);
+  const std::optional<FitProgress> resume = resumedProgress(progressPath, key);
   std::filesystem::create_directories(dir);
   FitProgress progress = resume.value_or(FitProgress{});
   const int resumedIterations = resume ? resume->log.back().iteration : 0;
@@ -113,20 +142,7 @@ int fitCommand(const Options& options) {
   writeFitOutputs(dir, spec, result, before, after);
   std::filesystem::remove(progressPath);  // the outputs record the finished fit
 
-  std::printf("%s after %zu iterations, %d renderings, %s: %s\n",
-              result.converged ? "converged" : "NOT converged", result.log.empty() ? 0 : result.log.size() - 1,
-              result.renders, ProgressBar::formatSeconds(result.seconds).c_str(), result.termination.c_str());
-  for (std::size_t j = 0; j < spec.parameters.size(); ++j) {
-    if (result.undetermined[j])
-      std::printf("  %-36s undetermined by the images (not fitted; initial %.6g)\n",
-                  spec.parameters[j].key.c_str(), spec.parameters[j].initial);
-    else
-      std::printf("  %-36s %.6g +- %.2g (sandwich %.2g)  (initial %.6g)%s\n", spec.parameters[j].key.c_str(),
-                  result.values[j], result.stdDev[j], result.sandwichStdDev[j], spec.parameters[j].initial,
-                  result.atBound[j] ? "  at a bound: the uncertainty assumes it inactive" : "");
-  }
-  printErrors("before", before);
-  printErrors("after", after);
+  printResult(spec, result, before, after);
   std::printf("wrote %s/{fit.json, fitted.toml, fit.md}\n", dir.c_str());
   return 0;
 }

@@ -39,7 +39,8 @@ nlohmann::json resourcesJson(const ResourceUses& uses) {
 
 // `lpvlab list --json`: the same, for programs (the analysis, scripts): the pipeline's own stages
 // in the order a frame runs them (the method's follow), every strategy and method with its
-// parameters' defaults, resources and CPU kernel, each method's own stages.
+// parameters' defaults, resources and CPU kernel; each method's own stages, the raster inputs it
+// consumes (with its defaults) and its summary keys.
 int listJson() {
   nlohmann::json out = {{"pipeline_stages", Pipeline::stageNames()},
                         {"strategies", nlohmann::json::array()},
@@ -56,6 +57,8 @@ int listJson() {
     out["methods"].push_back({{"name", method.name},
                               {"description", method.description},
                               {"stages", method.stages},
+                              {"consumes", method.consumes},
+                              {"summary_keys", method.summaryKeys},
                               {"parameters", method.defaults}});
   std::cout << out.dump(2) << "\n";
   return 0;

@@ -6,12 +6,187 @@
 // command or option, a missing argument) is one such line too, with exit code 2.
 
 #include <CLI/CLI.hpp>
-
+#include <functional>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/io/provenance.h"
+
+namespace lpvlab {
+namespace {
+
+using cli::Options;
+
+// A command: its CLI11 subcommand (options bound to an Options) and what runs when it is parsed.
+struct Command {
+  CLI::App* app;
+  std::function<int()> action;
+};
+
+Command addRun(CLI::App& app, Options& o) {
+  CLI::App* run = app.add_subcommand(
+      "run", "Run one experiment (default: the built-in Cornell box) into its own directory");
+  run->add_option("experiment", o.experiment, "Experiment file (TOML); omit for the default");
+  run->add_option("-o,--out", o.out, "Output directory (default: runs/<name>-<UTC time>)");
+  run->add_flag("--force", o.force,
+                "Replace a finished run in the output directory (its files are removed first)");
+  run->add_option("-s,--set", o.overrides,
+                  "Override one parameter, e.g. -s propagation.iterations=16 (repeatable)");
+  return {run, [&o] { return cli::runCommand(o); }};
+}
+
+Command addBench(CLI::App& app, Options& o) {
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Per-stage times and propagation throughput over grid sizes and iteration counts");
+  bench->add_option("experiment", o.experiment, "Experiment file (default: the Cornell box)");
+  bench->add_option("-s,--set", o.overrides, "Override one parameter (repeatable)");
+  bench->add_option("--grids", o.gridSizes, "Grid resolutions to measure")->delimiter(',');
+  bench->add_option("--iterations", o.iterationCounts, "Iteration counts")->delimiter(',');
+  bench->add_option("--csv", o.csv, "Also write the table as CSV to this file");
+  bench->add_flag("--tracer", o.tracer,
+                  "Measure the reference path tracer instead: paths/s and rays/s");
+  bench->add_option("--spp", o.tracerSamples, "With --tracer: samples per pixel per pass")
+      ->check(CLI::Range(1, 1 << 20));
+  bench
+      ->add_option("--isa", o.tracerIsas,
+                   "With --tracer: Embree instruction sets to measure (sse4.2, avx, avx2, avx512, "
+                   "auto; all = every one this CPU has)")
+      ->delimiter(',');
+  bench
+      ->add_option("--packet-width", o.tracerWidths,
+                   "With --tracer: rays per Embree query to measure (0 = native, 1, 4, 8, 16)")
+      ->delimiter(',');
+  return {bench, [&o] { return o.tracer ? cli::benchTracerCommand(o) : cli::benchCommand(o); }};
+}
+
+Command addReference(CLI::App& app, Options& o) {
+  CLI::App* reference = app.add_subcommand(
+      "reference", "Render (or reuse from the cache) the path-traced reference of an experiment");
+  reference->add_option("experiment", o.experiment, "Experiment file (default: the Cornell box)");
+  reference->add_option("-s,--set", o.overrides, "Override one parameter (repeatable)");
+  reference->add_option("--cache", o.cacheDir,
+                        "Reference cache folder (default: $LPVLAB_CACHE_DIR or .cache/references)");
+  return {reference, [&o] { return cli::referenceCommand(o); }};
+}
+
+Command addSweep(CLI::App& app, Options& o) {
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "Run every configuration of an experiment's [sweep] table, each into DIR/<id>/ "
+      "(resumable: complete configurations are skipped), then write DIR/summary.csv");
+  sweep->add_option("experiment", o.experiment, "Experiment file (TOML) with a [sweep] table")
+      ->required();
+  sweep->add_option("-o,--out", o.out, "Sweep directory (default: runs/<file stem>-sweep)");
+  sweep->add_option("-j,--jobs", o.jobs, "Configurations run in parallel (child processes)")
+      ->check(CLI::Range(1, 1024));
+  sweep->add_flag("--force", o.force,
+                  "Replace another sweep in the sweep directory (its runs are removed first)");
+  sweep->add_option("-s,--set", o.overrides,
+                    "Override one parameter of every configuration (repeatable)");
+  sweep
+      ->add_option("--emit", o.emit,
+                   "slurm: write DIR/sweep.slurm (a job array), DIR/submit.sh and the "
+                   "configurations; run nothing")
+      ->check(CLI::IsMember({"slurm"}));
+  sweep->add_option("--cpus-per-task", o.slurm.cpusPerTask,
+                    "With --emit slurm: CPUs of each job (default 2)");
+  sweep->add_option("--mem", o.slurm.memory, "With --emit slurm: memory of each job (default 4G)");
+  sweep->add_option("--time", o.slurm.time,
+                    "With --emit slurm: time limit of each job (default 01:00:00)");
+  return {sweep, [&o] { return cli::sweepCommand(o); }};
+}
+
+Command addSummary(CLI::App& app, Options& o) {
+  CLI::App* summary = app.add_subcommand(
+      "summary", "Rebuild DIR/summary.csv from the manifests of a sweep directory");
+  summary->add_option("dir", o.out, "Sweep directory")->required();
+  return {summary, [&o] { return cli::summaryCommand(o); }};
+}
+
+Command addReport(CLI::App& app, Options& o) {
+  CLI::App* report = app.add_subcommand(
+      "report",
+      "Build DIR/report/index.html: speed/accuracy plots, ablation table, images "
+      "(several sweep directories: one report of them all, written to --out)");
+  report->add_option("dir", o.out, "Sweep directory (with summary.csv)")->required();
+  report->add_option("more", o.moreSweeps,
+                     "Further sweep directories in the same report (e.g. one per scene)");
+  report->add_option("--out", o.reportOut,
+                     "Report directory (default DIR/report; required with several sweeps)");
+  report->add_option(
+      "--metric", o.metric,
+      "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
+  return {report, [&o] { return cli::reportCommand(o); }};
+}
+
+Command addFit(CLI::App& app, Options& o) {
+  CLI::App* fit = app.add_subcommand(
+      "fit",
+      "Fit the strategy constants named by an experiment's [fit] table to the path-traced "
+      "references of its views; write DIR/fit.json, DIR/fitted.toml and the report DIR/fit.md "
+      "(resumable: an interrupted fit run again goes on from DIR/fit.progress.json)");
+  fit->add_option("experiment", o.experiment, "Experiment file (TOML) with a [fit] table")
+      ->required();
+  fit->add_option("-o,--out", o.out, "Fit directory (default: runs/<file stem>-fit)");
+  fit->add_flag("--force", o.force,
+                "Replace a finished fit in the fit directory (its outputs are removed first)");
+  fit->add_option("-s,--set", o.overrides, "Override one parameter (repeatable)");
+  return {fit, [&o] { return cli::fitCommand(o); }};
+}
+
+Command addCompare(CLI::App& app, Options& o) {
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "How far one run's images are from another's: per AOV the mean, 99th percentile "
+      "and maximum relative difference over the covered pixels");
+  compare->add_option("images", o.images, "TEST and REFERENCE: run directories or EXR files")
+      ->required()
+      ->expected(2);
+  compare->add_option("--aov", o.aovs, "An AOV to compare (repeatable; default direct, indirect)");
+  compare->add_flag("--json", o.json, "Print JSON instead of the table");
+  return {compare, [&o] { return cli::compareCommand(o); }};
+}
+
+Command addList(CLI::App& app, Options& o) {
+  CLI::App* list = app.add_subcommand(
+      "list", "List the strategies of every stage and the indirect methods beside LPV");
+  list->add_flag("--json", o.json,
+                 "Print JSON (stages, strategies, methods, resources, parameters' defaults)");
+  return {list, [&o] { return cli::listCommand(o.json); }};
+}
+
+Command addInfo(CLI::App& app, Options& o) {
+  CLI::App* info =
+      app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
+  info->add_option("scene", o.experiment, "A scene file, shared:<path> or builtin:cornell_box")
+      ->required();
+  return {info, [&o] { return cli::infoCommand(o); }};
+}
+
+// A usage error as one line with the prefix every error has: --help and --version (CLI11's exit
+// code 0) print as CLI11 prints them; the exit code of the rest is 2 (CLI11's own are 105-115).
+int usageError(CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+  if (e.get_exit_code() == 0) return app.exit(e);
+  // A first word that is no command: name it (CLI11 says only that a command is required).
+  std::string commands;
+  bool known = false;
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    known = known || (argc > 1 && sub->get_name() == argv[1]);
+  }
+  if (argc > 1 && argv[1][0] != '-' && !known)
+    std::cerr << "lpvlab: error: unknown command '" << echoed(argv[1])
+              << "' (commands: " << commands << ")\n";
+  else
+    std::cerr << "lpvlab: error: " << e.what() << " (lpvlab --help lists the commands)\n";
+  return 2;
+}
+
+}  // namespace
+}  // namespace lpvlab
 
 int main(int argc, char** argv) {
   CLI::App app{"lpvlab: a research framework for Light Propagation Volumes variants"};
@@ -21,142 +196,22 @@ int main(int argc, char** argv) {
     return std::string("lpvlab ") + LPVLAB_VERSION + " (git " + lpvlab::lpvlabRevision() + ")";
   });
   lpvlab::cli::Options options;
-
-  CLI::App* run = app.add_subcommand(
-      "run", "Run one experiment (default: the built-in Cornell box) into its own directory");
-  run->add_option("experiment", options.experiment, "Experiment file (TOML); omit for the default");
-  run->add_option("-o,--out", options.out, "Output directory (default: runs/<name>-<UTC time>)");
-  run->add_flag("--force", options.force,
-                "Replace a finished run in the output directory (its files are removed first)");
-  run->add_option("-s,--set", options.overrides,
-                  "Override one parameter, e.g. -s propagation.iterations=16 (repeatable)");
-
-  CLI::App* bench = app.add_subcommand(
-      "bench", "Per-stage times and propagation throughput over grid sizes and iteration counts");
-  bench->add_option("experiment", options.experiment, "Experiment file (default: the Cornell box)");
-  bench->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
-  bench->add_option("--grids", options.gridSizes, "Grid resolutions to measure")->delimiter(',');
-  bench->add_option("--iterations", options.iterationCounts, "Iteration counts")->delimiter(',');
-  bench->add_option("--csv", options.csv, "Also write the table as CSV to this file");
-  bench->add_flag("--tracer", options.tracer,
-                  "Measure the reference path tracer instead: paths/s and rays/s");
-  bench->add_option("--spp", options.tracerSamples, "With --tracer: samples per pixel per pass")
-      ->check(CLI::Range(1, 1 << 20));
-  bench->add_option("--isa", options.tracerIsas,
-                    "With --tracer: Embree instruction sets to measure (sse4.2, avx, avx2, avx512, "
-                    "auto; all = every one this CPU has)")
-      ->delimiter(',');
-  bench->add_option("--packet-width", options.tracerWidths,
-                    "With --tracer: rays per Embree query to measure (0 = native, 1, 4, 8, 16)")
-      ->delimiter(',');
-
-  CLI::App* reference = app.add_subcommand(
-      "reference", "Render (or reuse from the cache) the path-traced reference of an experiment");
-  reference->add_option("experiment", options.experiment, "Experiment file (default: the Cornell box)");
-  reference->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
-  reference->add_option("--cache", options.cacheDir,
-                        "Reference cache folder (default: $LPVLAB_CACHE_DIR or .cache/references)");
-
-  CLI::App* sweep = app.add_subcommand(
-      "sweep", "Run every configuration of an experiment's [sweep] table, each into DIR/<id>/ "
-               "(resumable: complete configurations are skipped), then write DIR/summary.csv");
-  sweep->add_option("experiment", options.experiment, "Experiment file (TOML) with a [sweep] table")
-      ->required();
-  sweep->add_option("-o,--out", options.out, "Sweep directory (default: runs/<file stem>-sweep)");
-  sweep->add_option("-j,--jobs", options.jobs, "Configurations run in parallel (child processes)")
-      ->check(CLI::Range(1, 1024));
-  sweep->add_flag("--force", options.force,
-                  "Replace another sweep in the sweep directory (its runs are removed first)");
-  sweep->add_option("-s,--set", options.overrides,
-                    "Override one parameter of every configuration (repeatable)");
-  sweep
-      ->add_option("--emit", options.emit,
-                   "slurm: write DIR/sweep.slurm (a job array), DIR/submit.sh and the "
-                   "configurations; run nothing")
-      ->check(CLI::IsMember({"slurm"}));
-  sweep->add_option("--cpus-per-task", options.slurm.cpusPerTask,
-                    "With --emit slurm: CPUs of each job (default 2)");
-  sweep->add_option("--mem", options.slurm.memory,
-                    "With --emit slurm: memory of each job (default 4G)");
-  sweep->add_option("--time", options.slurm.time,
-                    "With --emit slurm: time limit of each job (default 01:00:00)");
-
-  CLI::App* summary = app.add_subcommand(
-      "summary", "Rebuild DIR/summary.csv from the manifests of a sweep directory");
-  summary->add_option("dir", options.out, "Sweep directory")->required();
-
-  CLI::App* report = app.add_subcommand(
-      "report", "Build DIR/report/index.html: speed/accuracy plots, ablation table, images "
-                "(several sweep directories: one report of them all, written to --out)");
-  report->add_option("dir", options.out, "Sweep directory (with summary.csv)")->required();
-  report->add_option("more", options.moreSweeps,
-                     "Further sweep directories in the same report (e.g. one per scene)");
-  report->add_option("--out", options.reportOut,
-                     "Report directory (default DIR/report; required with several sweeps)");
-  report->add_option("--metric", options.metric,
-                     "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
-
-  CLI::App* fit = app.add_subcommand(
-      "fit", "Fit the strategy constants named by an experiment's [fit] table to the path-traced "
-             "references of its views; write DIR/fit.json, DIR/fitted.toml and the report DIR/fit.md "
-             "(resumable: an interrupted fit run again goes on from DIR/fit.progress.json)");
-  fit->add_option("experiment", options.experiment, "Experiment file (TOML) with a [fit] table")
-      ->required();
-  fit->add_option("-o,--out", options.out, "Fit directory (default: runs/<file stem>-fit)");
-  fit->add_flag("--force", options.force,
-                "Replace a finished fit in the fit directory (its outputs are removed first)");
-  fit->add_option("-s,--set", options.overrides, "Override one parameter (repeatable)");
-
-  CLI::App* compare = app.add_subcommand(
-      "compare", "How far one run's images are from another's: per AOV the mean, 99th percentile "
-                 "and maximum relative difference over the covered pixels");
-  compare->add_option("images", options.images, "TEST and REFERENCE: run directories or EXR files")
-      ->required()
-      ->expected(2);
-  compare->add_option("--aov", options.aovs, "An AOV to compare (repeatable; default direct, indirect)");
-  compare->add_flag("--json", options.json, "Print JSON instead of the table");
-
-  CLI::App* list =
-      app.add_subcommand("list", "List the strategies of every stage and the indirect methods beside LPV");
-  list->add_flag("--json", options.json,
-                 "Print JSON (stages, strategies, methods, resources, parameters' defaults)");
-  CLI::App* info = app.add_subcommand("info", "Load a scene and print its size, bounds, lights and cameras");
-  info->add_option("scene", options.experiment, "A scene file, shared:<path> or builtin:cornell_box")
-      ->required();
-
+  // In the order --help lists them.
+  const std::vector<lpvlab::Command> commands = {
+      lpvlab::addRun(app, options),       lpvlab::addBench(app, options),
+      lpvlab::addReference(app, options), lpvlab::addSweep(app, options),
+      lpvlab::addSummary(app, options),   lpvlab::addReport(app, options),
+      lpvlab::addFit(app, options),       lpvlab::addCompare(app, options),
+      lpvlab::addList(app, options),      lpvlab::addInfo(app, options)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version (CLI11's exit code 0) print as CLI11 prints them; a usage error is one
-    // line with the one prefix every error has, and exit code 2 (CLI11's own are 105-115).
-    if (e.get_exit_code() == 0) return app.exit(e);
-    // A first word that is no command: name it (CLI11 says only that a command is required).
-    std::string commands;
-    bool known = false;
-    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-      commands += (commands.empty() ? "" : ", ") + sub->get_name();
-      known = known || (argc > 1 && sub->get_name() == argv[1]);
-    }
-    if (argc > 1 && argv[1][0] != '-' && !known)
-      std::cerr << "lpvlab: error: unknown command '" << lpvlab::echoed(argv[1])
-                << "' (commands: " << commands << ")\n";
-    else
-      std::cerr << "lpvlab: error: " << e.what() << " (lpvlab --help lists the commands)\n";
-    return 2;
+    return lpvlab::usageError(app, e, argc, argv);
   }
   try {
-    if (run->parsed()) return lpvlab::cli::runCommand(options);
-    if (bench->parsed())
-      return options.tracer ? lpvlab::cli::benchTracerCommand(options)
-                            : lpvlab::cli::benchCommand(options);
-    if (info->parsed()) return lpvlab::cli::infoCommand(options);
-    if (reference->parsed()) return lpvlab::cli::referenceCommand(options);
-    if (sweep->parsed()) return lpvlab::cli::sweepCommand(options);
-    if (summary->parsed()) return lpvlab::cli::summaryCommand(options);
-    if (report->parsed()) return lpvlab::cli::reportCommand(options);
-    if (compare->parsed()) return lpvlab::cli::compareCommand(options);
-    if (fit->parsed()) return lpvlab::cli::fitCommand(options);
-    return lpvlab::cli::listCommand(options.json);
+    for (const lpvlab::Command& command : commands)
+      if (command.app->parsed()) return command.action();
+    return 2;  // unreachable: require_subcommand(1)
   } catch (const std::exception& e) {
     std::cerr << "lpvlab: error: " << e.what() << "\n";
     return 1;

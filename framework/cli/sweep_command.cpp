@@ -133,35 +133,16 @@ void reportSkipped(const std::string& dir, const SummaryResult& summary) {
               << "(sweep.json), skipped\n";
 }
 
-}  // namespace
-
-int sweepCommand(const Options& options) {
-  const std::string file = options.experiment;
-  const std::string stem = fs::path(file).stem().string();
-  const fs::path dir = options.out.empty() ? fs::path("runs") / (stem + "-sweep") : fs::path(options.out);
-  const std::string exe = executablePath().string();  // the bundle's: its wrapper script
-
-  toml::table root = readExperimentTable(file);
-  for (const std::string& o : options.overrides) applyOverride(root, o);
-  const std::vector<SweepConfiguration> configs = expandSweep(root, file, options.overrides);
-  const std::vector<std::string> keys = sweptKeys(root, file);
-  // Nothing is written before every configuration loads: an unknown swept key or a bad swept
-  // value is reported against the user's file and its [sweep] table.
-  requireOutputDirectory(dir.string(), options.out.empty() ? "sweep directory" : "--out");
-  // A run's directory would get the sweep's runs and summary beside the run's own files.
-  if (fs::exists(dir / "manifest.json") && !fs::exists(dir / "sweep.json"))
-    throw Error((options.out.empty() ? "sweep directory " : "--out ") + dir.string() +
-                ": holds a single run (manifest.json), not a sweep; choose another directory");
-  if (options.emit == "slurm") checkSlurmResources(options.slurm);
-  const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
-  const std::string hash = sweepHash(root, file);
-  resumeOnlyTheSameSweep(dir, hash, file, options);
-
+// DIR/configs/<id>.toml for every configuration and DIR/sweep.json indexing them: what the
+// sweep is (file, hash, overrides, swept keys), and each configuration's id, name and values.
+void writeConfigurations(const fs::path& dir, const toml::table& root, const std::string& file,
+                         const std::vector<SweepConfiguration>& configs, const std::string& hash,
+                         const Options& options) {
   fs::create_directories(dir / "configs");
   nlohmann::json index = {{"experiment_file", fs::absolute(file).lexically_normal().string()},
                           {"sweep_hash", hash},
                           {"overrides", options.overrides},
-                          {"swept_keys", keys},
+                          {"swept_keys", sweptKeys(root, file)},
                           {"configurations", nlohmann::json::array()}};
   for (const SweepConfiguration& c : configs) {
     writeTextAtomically((dir / "configs" / (c.id + ".toml")).string(), configurationToml(root, file, c));
@@ -171,28 +152,42 @@ int sweepCommand(const Options& options) {
         {{"id", c.id}, {"name", c.name}, {"overrides", c.overrides}, {"values", values}});
   }
   writeTextAtomically((dir / "sweep.json").string(), index.dump(2) + "\n");
+}
 
-  if (options.emit == "slurm") {
-    writeSlurmScripts(dir, exe, stem, configs, referenceKeys, options.slurm);
-    const bool references = fs::exists(dir / "references.slurm");
-    std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size() << " tasks), "
-              << (references
-                      ? (dir / "references.slurm").string() + " (renders the references first), "
-                      : "")
-              << (dir / "submit.sh").string() << " and " << (dir / "configs").string()
-              << "/<id>.toml\n"
-              << "submit: " << (dir / "submit.sh").string() << " [sbatch options]\n"
-              << "then:   lpvlab summary " << dir.string() << "\n";
-    return 0;
+// --emit slurm: the job scripts beside the configurations, and how to submit them.
+void emitSlurm(const fs::path& dir, const std::string& exe, const std::string& stem,
+               const std::vector<SweepConfiguration>& configs,
+               const std::vector<std::string>& referenceKeys, const Options& options) {
+  writeSlurmScripts(dir, exe, stem, configs, referenceKeys, options.slurm);
+  const bool references = fs::exists(dir / "references.slurm");
+  std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size() << " tasks), "
+            << (references ? (dir / "references.slurm").string() + " (renders the references first), "
+                           : "")
+            << (dir / "submit.sh").string() << " and " << (dir / "configs").string()
+            << "/<id>.toml\n"
+            << "submit: " << (dir / "submit.sh").string() << " [sbatch options]\n"
+            << "then:   lpvlab summary " << dir.string() << "\n";
+}
+
+// Whether the child that ran configuration `c` into DIR/<id>/ succeeded; if not, says why (its
+// error.log's last line). A success's empty error.log is removed.
+bool finished(const fs::path& dir, const SweepConfiguration& c, int status) {
+  const fs::path runDir = dir / c.id;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(runDir / "manifest.json")) {
+    fs::remove(runDir / "error.log");
+    return true;
   }
+  std::cerr << "\nlpvlab: configuration " << c.id << " (" << c.name << ") failed: "
+            << lastLine(runDir / "error.log") << "\n  (see " << (runDir / "error.log").string()
+            << ")\n";
+  return false;
+}
 
-  std::vector<const SweepConfiguration*> pending;
-  for (const SweepConfiguration& c : configs)
-    if (!fs::exists(dir / c.id / "manifest.json")) pending.push_back(&c);
-  std::cerr << "lpvlab: sweep " << stem << ": " << configs.size() << " configurations, "
-            << configs.size() - pending.size() << " complete, " << pending.size() << " to run, "
-            << options.jobs << " at a time, into " << dir.string() << "\n";
-
+// Runs the pending configurations, `jobs` child processes at a time, each into a fresh
+// DIR/<id>/ (an interrupted run is redone from scratch), with progress; returns the failed ones.
+std::vector<const SweepConfiguration*> runPending(
+    const fs::path& dir, const std::string& exe,
+    const std::vector<const SweepConfiguration*>& pending, int jobs) {
   ProgressBar progress("sweep");
   std::map<pid_t, const SweepConfiguration*> running;
   std::vector<const SweepConfiguration*> failed;
@@ -202,10 +197,10 @@ int sweepCommand(const Options& options) {
            (failed.empty() ? "" : ", " + std::to_string(failed.size()) + " failed");
   };
   while (next < pending.size() || !running.empty()) {
-    while (next < pending.size() && int(running.size()) < options.jobs) {
+    while (next < pending.size() && int(running.size()) < jobs) {
       const SweepConfiguration& c = *pending[next++];
       const fs::path runDir = dir / c.id;
-      fs::remove_all(runDir);  // an interrupted run is redone from scratch
+      fs::remove_all(runDir);
       fs::create_directories(runDir);
       running[startRun(exe, (dir / "configs" / (c.id + ".toml")).string(), runDir.string())] = &c;
     }
@@ -220,19 +215,53 @@ int sweepCommand(const Options& options) {
     const SweepConfiguration& c = *it->second;
     running.erase(it);
     ++done;
-    const fs::path runDir = dir / c.id;
-    const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(runDir / "manifest.json");
-    if (ok) {
-      fs::remove(runDir / "error.log");
-    } else {
-      failed.push_back(&c);
-      std::cerr << "\nlpvlab: configuration " << c.id << " (" << c.name << ") failed: "
-                << lastLine(runDir / "error.log") << "\n  (see " << (runDir / "error.log").string()
-                << ")\n";
-    }
+    if (!finished(dir, c, status)) failed.push_back(&c);
     progress.update(double(done) / double(pending.size()), detail());
   }
   progress.finish(detail());
+  return failed;
+}
+
+// The sweep directory can be written and holds no single run.
+void checkDirectory(const fs::path& dir, const Options& options) {
+  requireOutputDirectory(dir.string(), options.out.empty() ? "sweep directory" : "--out");
+  // A run's directory would get the sweep's runs and summary beside the run's own files.
+  if (fs::exists(dir / "manifest.json") && !fs::exists(dir / "sweep.json"))
+    throw Error((options.out.empty() ? "sweep directory " : "--out ") + dir.string() +
+                ": holds a single run (manifest.json), not a sweep; choose another directory");
+}
+
+}  // namespace
+
+int sweepCommand(const Options& options) {
+  const std::string file = options.experiment;
+  const std::string stem = fs::path(file).stem().string();
+  const fs::path dir = options.out.empty() ? fs::path("runs") / (stem + "-sweep") : fs::path(options.out);
+  const std::string exe = executablePath().string();  // the bundle's: its wrapper script
+
+  toml::table root = readExperimentTable(file);
+  for (const std::string& o : options.overrides) applyOverride(root, o);
+  const std::vector<SweepConfiguration> configs = expandSweep(root, file, options.overrides);
+  // Nothing is written before every configuration loads: an unknown swept key or a bad swept
+  // value is reported against the user's file and its [sweep] table.
+  checkDirectory(dir, options);
+  if (options.emit == "slurm") checkSlurmResources(options.slurm);
+  const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
+  const std::string hash = sweepHash(root, file);
+  resumeOnlyTheSameSweep(dir, hash, file, options);
+  writeConfigurations(dir, root, file, configs, hash, options);
+  if (options.emit == "slurm") {
+    emitSlurm(dir, exe, stem, configs, referenceKeys, options);
+    return 0;
+  }
+
+  std::vector<const SweepConfiguration*> pending;
+  for (const SweepConfiguration& c : configs)
+    if (!fs::exists(dir / c.id / "manifest.json")) pending.push_back(&c);
+  std::cerr << "lpvlab: sweep " << stem << ": " << configs.size() << " configurations, "
+            << configs.size() - pending.size() << " complete, " << pending.size() << " to run, "
+            << options.jobs << " at a time, into " << dir.string() << "\n";
+  const std::vector<const SweepConfiguration*> failed = runPending(dir, exe, pending, options.jobs);
 
   const SummaryResult summary = writeSweepSummary(dir.string());
   reportSkipped(dir.string(), summary);

@@ -76,11 +76,11 @@ struct Experiment {
 // Reads the scene file at a resolved path (loadSceneByName): a fit passes one that loads each
 // scene once and hands out copies (the experiment adds its lights and materials to its copy).
 using SceneLoader = std::function<Scene(const std::string& resolvedPath)>;
-// Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
-// the file and key for anything wrong.
 // [indirect] method where the file names none.
 extern const char* const kDefaultIndirectMethod;
 
+// Reads `path` ("" for the built-in default) with the overrides applied. Throws an Error naming
+// the file and key for anything wrong.
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides = {},
                           const SceneLoader& loadScene = {});
 // The same from a table already read (`extends` and `include` merged, overrides applied, no

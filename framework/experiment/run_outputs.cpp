@@ -149,6 +149,17 @@ nlohmann::json particlesJson(const Experiment& experiment) {
   return systems;
 }
 
+// The configuration keys a sweep's summary gives a column each (sweep_summary.h) beside its swept
+// keys: the method and the scene, the method's own (IndirectMethod::summaryKeys), and the first
+// particle system's drawing, by which the report tells geometry from light fields.
+nlohmann::json summaryKeys(const Experiment& experiment, const IndirectMethod& method) {
+  nlohmann::json keys = {"indirect.method"};
+  for (const std::string& key : method.summaryKeys()) keys.push_back(key);
+  keys.push_back("scene.file");
+  if (!experiment.particles.empty()) keys.push_back("particles[0].draw");
+  return keys;
+}
+
 }  // namespace
 
 nlohmann::json describeRun(const Experiment& experiment, const GlContext& context,
@@ -179,6 +190,7 @@ nlohmann::json describeRun(const Experiment& experiment, const GlContext& contex
           {"work", pipeline.workReport()},
           {"gpu_work", pipeline.workReport(true)}};
   if (!experiment.particles.empty()) description["particles"] = particlesJson(experiment);
+  description["summary_keys"] = summaryKeys(experiment, pipeline.method());
   description.update(pipeline.method().describe(medianStageMs));
   return description;
 }

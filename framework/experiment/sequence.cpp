@@ -238,6 +238,121 @@ nlohmann::json sequenceManifest(Experiment& experiment, const GlContext& context
   return manifest;
 }
 
+// Each frame's reference has a seed of its own, so consecutive references have independent
+// noise, which the temporal error's noise correction assumes (sequence_temporal.h). Frame 0 keeps
+// the experiment's seed: a one-frame sequence is the static run.
+Reference frameReference(const Experiment& experiment, int frame) {
+  ReferenceRequest request = experiment.reference;
+  request.tracer.seed += std::uint64_t(frame);
+  return ensureReference(experiment.scene, experiment.camera, request);
+}
+
+// The written frame before `first` (the first to render), which its temporal figures compare
+// with; none when the sequence starts at frame 0. Moves the scene to that frame.
+std::optional<FrameState> frameBefore(Experiment& experiment, const fs::path& dir, int first) {
+  if (first == 0) return std::nullopt;
+  const Animation& animation = experiment.animation;
+  const int frame = first - 1;
+  setSceneTime(experiment, animation.frameTime(frame));
+  const std::string stem = (dir / frameStem(frame, animation.frames)).string();
+  FrameState state{experiment.camera,
+                   readFrameRecord(stem + ".json").at("scene_hash").get<std::string>(),
+                   readExr(stem + ".exr"),
+                   {}};
+  if (experiment.compareWithReference) state.reference = frameReference(experiment, frame);
+  state.keepOnlyCompared(experiment.comparison);
+  return state;
+}
+
+// Places the camera, lights, meshes and particles of a frame in the pipeline.
+class SceneMover {
+public:
+  SceneMover(Experiment& experiment, ExperimentRenderer& renderer)
+      : experiment_(experiment), renderer_(renderer), geometryMoves_(movesGeometry(experiment)) {}
+
+  void moveTo(int frame) {
+    const Animation& animation = experiment_.animation;
+    try {
+      alive_ = setSceneTime(experiment_, animation.frameTime(frame));
+      renderer_.billboards().place(animation.frameTime(frame));
+    } catch (const Error& error) {
+      throw Error(experiment_.file + ": frame " + std::to_string(frame) + ": " + error.what());
+    }
+    if (animation.movesCamera()) renderer_.pipeline().setCamera(experiment_.camera);
+    if (animation.movesLights() || geometryMoves_)
+      renderer_.pipeline().moveScene(experiment_.scene, animation.movesLights(), geometryMoves_);
+  }
+  // Per particle system, the particles alive in the frame moved to last.
+  const std::vector<std::size_t>& aliveParticles() const { return alive_; }
+
+private:
+  Experiment& experiment_;
+  ExperimentRenderer& renderer_;
+  bool geometryMoves_;
+  std::vector<std::size_t> alive_;
+};
+
+// What writing a frame needs besides the frame: where, the configuration's hash, and the one
+// exposure of every PNG of the sequence (frame 0's; set by the first frame written).
+struct FrameWriter {
+  fs::path dir;
+  std::string configuration;
+  std::optional<float> exposure;
+};
+
+// Renders `frame` (the scene moved to it), compares it with its reference and with the frame
+// before, and writes its EXR, PNG and record; returns its state for the next frame.
+FrameState renderAndWriteFrame(Experiment& experiment, Pipeline& pipeline, const SceneMover& mover,
+                               int frame, FrameWriter& writer, const std::optional<FrameState>& previous) {
+  const FrameTimes times = pipeline.renderFrame();
+  const std::vector<NamedImage> aovs = pipeline.readOutputs();
+  try {
+    requireFiniteImages(aovs);
+  } catch (const Error& error) {
+    throw Error("frame " + std::to_string(frame) + ": " + error.what());
+  }
+  if (!writer.exposure)
+    writer.exposure = experiment.exposureStops +
+                      (experiment.autoExposure ? middleGreyExposure(findAov(aovs, "combined")) : 0.0f);
+  const std::string hash = sceneHash(experiment.scene);
+  nlohmann::json record = frameRecord(experiment, pipeline, frame, hash, writer.configuration, times,
+                                      mover.aliveParticles(), aovs, *writer.exposure);
+  FrameState state{experiment.camera, hash, aovs, {}};
+  if (experiment.compareWithReference) {
+    state.reference = frameReference(experiment, frame);
+    try {
+      record["reference"] = compareWithReference(
+          aovs, *state.reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
+    } catch (const Error& error) {  // e.g. a camera inside a mesh, whose reference is black
+      throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
+    }
+  }
+  state.keepOnlyCompared(experiment.comparison);
+  if (previous) record["temporal"] = temporalRecord(state, *previous, experiment.comparison);
+  const std::string stem = (writer.dir / frameStem(frame, experiment.animation.frames)).string();
+  writeExr(stem + ".exr", aovs,
+           {{"lpvlab:experiment", experiment.name},
+            {"lpvlab:scene_hash", hash},
+            {"lpvlab:frame", std::to_string(frame)}});
+  writePng(stem + ".png", findAov(aovs, "combined"), *writer.exposure);
+  writeTextAtomically(stem + ".json", record.dump(2) + "\n");
+  return state;
+}
+
+// The first frame to render in `dir`: frames already there must be this configuration's (a
+// changed file with the same --out would otherwise mix two sequences). A run killed while
+// writing a frame's files (or the video) left temporaries: that frame has no record, so it is
+// rendered again.
+int resumeAt(const Experiment& experiment, const fs::path& dir, const std::string& configuration) {
+  const int first = firstMissingFrame(experiment, dir, configuration);
+  removeLeftoverTemporaries((dir / "frames").string());
+  removeLeftoverTemporaries(dir.string());
+  if (first > 0)
+    std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
+              << " are done; continuing at frame " << first << "\n";
+  return first;
+}
+
 }  // namespace
 
 std::string frameStem(int frame, int frames) {
@@ -257,42 +372,9 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
         "(Debian package ffmpeg; scripts/install-deps.sh installs it), or set video = false");
   const fs::path dir(outDir);
   fs::create_directories(dir / "frames");
-  const auto recordPath = [&](int frame) {
-    return dir / (frameStem(frame, animation.frames) + ".json");
-  };
-  // Frames already there must be this configuration's (a changed file with the same --out would
-  // otherwise mix two sequences).
-  const std::string configuration = Hasher().text(experiment.configuration.dump()).hex();
-  const int first = firstMissingFrame(experiment, dir, configuration);
-  // A run killed while writing a frame's files (or the video) left temporaries: that frame has no
-  // record, so it is rendered again below.
-  removeLeftoverTemporaries((dir / "frames").string());
-  removeLeftoverTemporaries(dir.string());
-  if (first > 0)
-    std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
-              << " are done; continuing at frame " << first << "\n";
-
-  // Each frame's reference has a seed of its own, so consecutive references have independent
-  // noise, which the temporal error's noise correction assumes (sequence_temporal.h). Frame 0
-  // keeps the experiment's seed: a one-frame sequence is the static run.
-  const auto frameReference = [&](int frame) {
-    ReferenceRequest request = experiment.reference;
-    request.tracer.seed += std::uint64_t(frame);
-    return ensureReference(experiment.scene, experiment.camera, request);
-  };
-  // The frame before the first to render, which its temporal figures compare with.
-  std::optional<FrameState> previous;
-  if (first > 0) {
-    const int frame = first - 1;
-    setSceneTime(experiment, animation.frameTime(frame));
-    const std::string stem = (dir / frameStem(frame, animation.frames)).string();
-    previous = FrameState{experiment.camera,
-                          readFrameRecord(stem + ".json").at("scene_hash").get<std::string>(),
-                          readExr(stem + ".exr"),
-                          {}};
-    if (experiment.compareWithReference) previous->reference = frameReference(frame);
-    previous->keepOnlyCompared(experiment.comparison);
-  }
+  FrameWriter writer{dir, Hasher().text(experiment.configuration.dump()).hex(), std::nullopt};
+  const int first = resumeAt(experiment, dir, writer.configuration);
+  std::optional<FrameState> previous = frameBefore(experiment, dir, first);
 
   // A composition whose frames depend on the frames before (a GV history) renders the frames
   // before `first` again, unwritten, so a resumed sequence matches an uninterrupted one.
@@ -301,72 +383,26 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   if (replay)
     std::cerr << "lpvlab: " << experiment.name << ": rendering frames 0-" << first - 1
               << " again (not written): the composition keeps state between frames\n";
-
   ShaderCompiler shaders;
   setSceneTime(experiment, animation.frameTime(start));
   ExperimentRenderer renderer(experiment, animation.frameTime(start), shaders);
   Pipeline& pipeline = renderer.pipeline();
-  ParticleBillboardSet& billboards = renderer.billboards();
   for (int i = 0; i < experiment.warmupFrames; ++i) pipeline.renderFrame();
-  const bool geometryMoves = movesGeometry(experiment);
-  std::vector<std::size_t> aliveParticles;  // per particle system, in the frame moved to last
-  // Places the camera, lights, meshes and particles of `frame` in the pipeline.
-  const auto moveTo = [&](int frame) {
-    try {
-      aliveParticles = setSceneTime(experiment, animation.frameTime(frame));
-      billboards.place(animation.frameTime(frame));
-    } catch (const Error& error) {
-      throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
-    }
-    if (animation.movesCamera()) pipeline.setCamera(experiment.camera);
-    if (animation.movesLights() || geometryMoves)
-      pipeline.moveScene(experiment.scene, animation.movesLights(), geometryMoves);
-  };
+  SceneMover mover(experiment, renderer);
   for (int frame = start; frame < first; ++frame) {
-    moveTo(frame);
+    mover.moveTo(frame);
     pipeline.renderFrame();
   }
 
-  // One exposure for every PNG of the sequence: frame 0's.
-  std::optional<float> exposure;
-  if (first > 0) exposure = readFrameRecord(recordPath(0)).at("png_exposure_stops").get<float>();
+  if (first > 0)
+    writer.exposure = readFrameRecord(dir / (frameStem(0, animation.frames) + ".json"))
+                          .at("png_exposure_stops")
+                          .get<float>();
   ProgressBar progress(experiment.name + " frames");
   const auto started = std::chrono::steady_clock::now();
   for (int frame = first; frame < animation.frames; ++frame) {
-    moveTo(frame);
-    const FrameTimes times = pipeline.renderFrame();
-    const std::vector<NamedImage> aovs = pipeline.readOutputs();
-    try {
-      requireFiniteImages(aovs);
-    } catch (const Error& error) {
-      throw Error("frame " + std::to_string(frame) + ": " + error.what());
-    }
-    if (!exposure)
-      exposure = experiment.exposureStops +
-                 (experiment.autoExposure ? middleGreyExposure(findAov(aovs, "combined")) : 0.0f);
-    const std::string hash = sceneHash(experiment.scene);
-    nlohmann::json record = frameRecord(experiment, pipeline, frame, hash, configuration, times,
-                                        aliveParticles, aovs, *exposure);
-    FrameState state{experiment.camera, hash, aovs, {}};
-    if (experiment.compareWithReference) {
-      state.reference = frameReference(frame);
-      try {
-        record["reference"] = compareWithReference(
-            aovs, *state.reference, coverageMask(findAov(aovs, "depth")), experiment.comparison);
-      } catch (const Error& error) {  // e.g. a camera inside a mesh, whose reference is black
-        throw Error(experiment.file + ": frame " + std::to_string(frame) + ": " + error.what());
-      }
-    }
-    state.keepOnlyCompared(experiment.comparison);
-    if (previous) record["temporal"] = temporalRecord(state, *previous, experiment.comparison);
-    const std::string stem = (dir / frameStem(frame, animation.frames)).string();
-    writeExr(stem + ".exr", aovs,
-             {{"lpvlab:experiment", experiment.name},
-              {"lpvlab:scene_hash", hash},
-              {"lpvlab:frame", std::to_string(frame)}});
-    writePng(stem + ".png", findAov(aovs, "combined"), *exposure);
-    writeTextAtomically(stem + ".json", record.dump(2) + "\n");
-    previous = std::move(state);
+    mover.moveTo(frame);
+    previous = renderAndWriteFrame(experiment, pipeline, mover, frame, writer, previous);
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const int done = frame - first + 1, left = animation.frames - frame - 1;
@@ -380,7 +416,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
 
   // The manifest, from every frame's record (also those of an earlier, interrupted run).
   std::vector<nlohmann::json> records;
-  for (int frame = 0; frame < animation.frames; ++frame) records.push_back(readFrameRecord(recordPath(frame)));
+  for (int frame = 0; frame < animation.frames; ++frame)
+    records.push_back(readFrameRecord(dir / (frameStem(frame, animation.frames) + ".json")));
   const nlohmann::json manifest = sequenceManifest(experiment, context, pipeline, records, first, video);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;

@@ -142,7 +142,7 @@ Manifests readManifests(const fs::path& root, const SweepIndex& index, SummaryRe
 
 // The columns beyond the fixed ones: what any of the manifests has, each set sorted.
 struct Columns {
-  std::vector<std::string> params;  // the swept keys, then the ones every summary has
+  std::vector<std::string> params;  // the swept keys, then those the manifests name (summary_keys)
   // The stages in the order the runs ran them (timing.stage_order: a merge of every manifest's,
   // first seen first), then any a manifest has without an order (older manifests), sorted.
   std::vector<std::string> stages;
@@ -210,25 +210,35 @@ void Columns::add(const std::string& id, const nlohmann::json& m) {
   if (const auto* w = findPath(m, "warnings"); w && w->is_array() && !w->empty()) warnings = true;
 }
 
+// Merges a run's summary_keys (run_outputs.h: the keys that tell its configuration apart, in its
+// order) into `params`, whose first `swept` are the swept keys: a new key goes right after the
+// key before it in the run's list (swept keys skipped), so the order of every run is kept, e.g.
+// another method's [method, scene] and LPV's [method, its strategies..., scene] give LPV's.
+void mergeSummaryKeys(const nlohmann::json& keys, std::size_t swept, std::vector<std::string>& params) {
+  std::string previous;  // the run's last key that is not swept
+  for (const auto& entry : keys) {
+    const std::string key = entry.get<std::string>();
+    const auto at = std::find(params.begin(), params.end(), key);
+    if (at != params.end()) {
+      if (std::size_t(at - params.begin()) >= swept) previous = key;
+      continue;
+    }
+    const auto after = previous.empty() ? params.end() : std::find(params.begin(), params.end(), previous);
+    params.insert(after == params.end() ? params.end() : after + 1, key);
+    previous = key;
+  }
+}
+
 Columns columnsOf(const SweepIndex& index, const Manifests& manifests, const fs::path& root,
                   std::string& reading) {
   Columns columns;
   columns.params = index.swept;
-  const auto addParam = [&](const std::string& key) {
-    if (std::find(columns.params.begin(), columns.params.end(), key) == columns.params.end())
-      columns.params.push_back(key);
-  };
-  for (const char* key : {"indirect.method", "injection.type", "occlusion.type", "propagation.type",
-                          "rendering.type", "grid.resolution", "grid.sh_order", "cascades.levels",
-                          "propagation.iterations", "scene.file"})
-    addParam(key);
   for (const auto& [id, m] : manifests) {
     reading = (root / id / "manifest.json").string();
     columns.add(id, m);
+    if (const auto* keys = findPath(m, "summary_keys"); keys && keys->is_array())
+      mergeSummaryKeys(*keys, index.swept.size(), columns.params);
   }
-  // Particle systems' drawing, where a sweep does not set it: the report tells geometry from light
-  // fields by it.
-  if (columns.figures.count("particles.alive")) addParam("particles[0].draw");
   // The frame's total after every stage of every run.
   std::stable_partition(columns.stages.begin(), columns.stages.end(),
                         [](const std::string& stage) { return stage != "total"; });

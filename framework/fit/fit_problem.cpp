@@ -243,6 +243,66 @@ std::string withWholeFitIterations(const std::string& message, int done) {
          " after resuming at iteration " + std::to_string(done) + ")" + message.substr(end);
 }
 
+// The solver's options for the iterations left (`done` were; a resumed fit starts from its
+// trust region).
+ceres::Solver::Options solverOptions(const FitSpec& spec, int done, const FitProgress* resume) {
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = std::max(0, spec.maxIterations - done);
+  options.num_threads = 1;  // one GL context, used from this thread only
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  options.update_state_every_iteration = true;  // the log records x after each iteration
+  // With bounds, Ceres 2.1 follows every trust-region step with a projected Armijo line search
+  // (up to 20 trial points, one rendering per view each with bisection). On the LPV's cost, which
+  // the injection shift makes step-like, it found no decrease where the step failed (the Sponza
+  // fits spent 42 renderings per rejected iteration), and the trust region already shortens a
+  // rejected step (and turns it towards the gradient) at one rendering per view. So it is off:
+  // steps are projected onto the bounds (Ceres's Plus) and judged by the trust region alone.
+  options.max_num_line_search_step_size_iterations = 0;
+  const double radius = resume ? resume->log.back().trustRegionRadius : 0.0;
+  if (radius > 0.0 && radius <= options.max_trust_region_radius)
+    options.initial_trust_region_radius = radius;
+  return options;
+}
+
+// The determined parameters' standard deviations from Ceres's covariance, scaled by the residual
+// variance (NaN for the undetermined, which are held constant from here on).
+std::vector<double> standardDeviations(const FitSpec& spec, ceres::Problem& problem,
+                                       const std::vector<double*>& blocks, ImageCost& cost,
+                                       const FitResult& result) {
+  const std::size_t p = blocks.size();
+  std::vector<double> stdDev(p, std::numeric_limits<double>::quiet_NaN());
+  std::vector<const double*> determined;
+  for (std::size_t j = 0; j < p; ++j) {
+    if (result.undetermined[j]) problem.SetParameterBlockConstant(blocks[j]);
+    else determined.push_back(blocks[j]);
+  }
+  const long long dof = result.coveredResiduals - (long long)determined.size();
+  if (!determined.empty() && dof > 0) {
+    ceres::Covariance::Options covarianceOptions;
+    covarianceOptions.algorithm_type = ceres::DENSE_SVD;
+    covarianceOptions.num_threads = 1;
+    ceres::Covariance covariance(covarianceOptions);
+    std::vector<std::pair<const double*, const double*>> pairs;
+    for (const double* b : determined) pairs.push_back({b, b});
+    const bool computed = covariance.Compute(pairs, &problem);
+    cost.rethrow();
+    if (!computed)
+      throw Error(spec.file + ": the covariance of the fitted parameters could not be computed "
+                  "(rank-deficient beyond rank_tolerance = " + std::to_string(spec.rankTolerance) +
+                  "; raise it)");
+    const double variance = 2.0 * result.finalCost / double(dof);
+    for (std::size_t j = 0; j < p; ++j) {
+      if (result.undetermined[j]) continue;
+      double c = 0.0;
+      covariance.GetCovarianceBlock(blocks[j], blocks[j], &c);
+      stdDev[j] = std::sqrt(std::max(0.0, c * variance));
+    }
+  }
+  return stdDev;
+}
+
 }  // namespace
 
 FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIteration&)>& onIteration,
@@ -281,23 +341,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
     if (spec.parameters[j].upper < 1e300) problem.SetParameterUpperBound(blocks[j], 0, spec.parameters[j].upper);
   }
 
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = std::max(0, spec.maxIterations - done);
-  options.num_threads = 1;  // one GL context, used from this thread only
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  options.update_state_every_iteration = true;  // the log records x after each iteration
-  // With bounds, Ceres 2.1 follows every trust-region step with a projected Armijo line search
-  // (up to 20 trial points, one rendering per view each with bisection). On the LPV's cost, which
-  // the injection shift makes step-like, it found no decrease where the step failed (the Sponza
-  // fits spent 42 renderings per rejected iteration), and the trust region already shortens a
-  // rejected step (and turns it towards the gradient) at one rendering per view. So it is off:
-  // steps are projected onto the bounds (Ceres's Plus) and judged by the trust region alone.
-  options.max_num_line_search_step_size_iterations = 0;
-  const double radius = resumed ? resume->log.back().trustRegionRadius : 0.0;
-  if (radius > 0.0 && radius <= options.max_trust_region_radius)
-    options.initial_trust_region_radius = radius;
+  ceres::Solver::Options options = solverOptions(spec, done, resumed ? resume : nullptr);
   LogCallback callback(x, result, evaluator, onIteration, resumed ? resume : nullptr);
   options.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
@@ -317,34 +361,7 @@ FitResult runFit(FitEvaluator& evaluator, const std::function<void(const FitIter
   result.singularValues = findUndetermined(spec, jacobian, x, result.undetermined);
   result.sandwichStdDev = sandwichDeviations(evaluator, jacobian, residuals, result.undetermined);
   result.coveredResiduals = evaluator.coveredResiduals();
-  result.stdDev.assign(p, std::numeric_limits<double>::quiet_NaN());
-  std::vector<const double*> determined;
-  for (std::size_t j = 0; j < p; ++j) {
-    if (result.undetermined[j]) problem.SetParameterBlockConstant(blocks[j]);
-    else determined.push_back(blocks[j]);
-  }
-  const long long dof = result.coveredResiduals - (long long)determined.size();
-  if (!determined.empty() && dof > 0) {
-    ceres::Covariance::Options covarianceOptions;
-    covarianceOptions.algorithm_type = ceres::DENSE_SVD;
-    covarianceOptions.num_threads = 1;
-    ceres::Covariance covariance(covarianceOptions);
-    std::vector<std::pair<const double*, const double*>> pairs;
-    for (const double* b : determined) pairs.push_back({b, b});
-    const bool computed = covariance.Compute(pairs, &problem);
-    cost.rethrow();
-    if (!computed)
-      throw Error(spec.file + ": the covariance of the fitted parameters could not be computed "
-                  "(rank-deficient beyond rank_tolerance = " + std::to_string(spec.rankTolerance) +
-                  "; raise it)");
-    const double variance = 2.0 * result.finalCost / double(dof);
-    for (std::size_t j = 0; j < p; ++j) {
-      if (result.undetermined[j]) continue;
-      double c = 0.0;
-      covariance.GetCovarianceBlock(blocks[j], blocks[j], &c);
-      result.stdDev[j] = std::sqrt(std::max(0.0, c * variance));
-    }
-  }
+  result.stdDev = standardDeviations(spec, problem, blocks, cost, result);
   result.renders = callback.renders() + (resumed ? resume->renders : 0);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
                    (resumed ? resume->seconds : 0.0);

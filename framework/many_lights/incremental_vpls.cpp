@@ -83,6 +83,101 @@ IncrementalVpls::Kept IncrementalVpls::place(const RayScene& scene, const LightC
   return k;
 }
 
+namespace {
+
+// Each chart's share of the target count, by its light's power (a point light's two charts halve
+// it); at least one VPL each.
+std::vector<int> chartShares(const RayScene& scene, const std::vector<LightChart>& charts, int target) {
+  const float radius = charts.empty() ? 1.0f : 0.5f * glm::length(scene.bounds().extent()) * 1.01f + 1e-6f;
+  std::vector<double> power;
+  double total = 0.0;
+  for (const LightChart& chart : charts) {
+    const PunctualLight& light = scene.lights()[std::size_t(chart.light)];
+    const double halves = light.type == LightType::Point ? 2.0 : 1.0;
+    power.push_back(luminance(lightPower(light, radius)) / halves);
+    total += power.back();
+  }
+  std::vector<int> shares;
+  for (std::size_t c = 0; c < charts.size(); ++c)
+    shares.push_back(std::max(1, int(std::lround(target * (total > 0.0 ? power[c] / total : 1.0 / charts.size())))));
+  return shares;
+}
+
+// Step 4: the disk's power over each kept point's Voronoi cell (by `triangulation`, which holds
+// exactly the kept points), integrated on a grid of `g` x `g` cells over the disk.
+template <typename KeptList>
+std::vector<glm::dvec3> voronoiFlux(const DiskTriangulation& triangulation, const KeptList& kept,
+                                    const LightChart& chart, int g) {
+  std::map<int, std::size_t> index;
+  for (std::size_t i = 0; i < kept.size(); ++i) index[kept[i].id] = i;
+  std::vector<glm::dvec3> flux(kept.size(), glm::dvec3(0.0));
+  const double cell = 2.0 / g, area = cell * cell;
+  for (int y = 0; y < g && !kept.empty(); ++y)
+    for (int x = 0; x < g; ++x) {
+      const glm::dvec2 uv(-1.0 + (x + 0.5) * cell, -1.0 + (y + 0.5) * cell);
+      if (glm::dot(uv, uv) > 1.0) continue;
+      flux[index[triangulation.nearest(uv)]] += glm::dvec3(chart.powerDensity(glm::vec2(uv))) * area;
+    }
+  return flux;
+}
+
+}  // namespace
+
+void IncrementalVpls::updateChart(const RayScene& scene, ChartState& state, bool moved, int share,
+                                  IncrementalCounts& counts) {
+  const LightChart& chart = state.chart;
+  // 1. Validity.
+  const std::size_t before = state.kept.size();
+  std::erase_if(state.kept, [&](Kept& k) { return !stillValid(scene, chart, k, moved); });
+  counts.removedInvalid += int(before - state.kept.size());
+
+  // 2. Removal where the set is densest.
+  DiskTriangulation triangulation;
+  std::vector<Kept> unique;
+  for (const Kept& k : state.kept) {
+    try {
+      triangulation.insert(glm::dvec2(k.uv), k.id);
+      unique.push_back(k);
+    } catch (const Error&) {
+      ++counts.removedInvalid;  // two VPLs moved onto one point of the disk: one goes
+    }
+  }
+  state.kept = std::move(unique);
+  for (int removed = 0; removed < settings_.maxRemovals && triangulation.size() > 1; ++removed) {
+    const auto [id, edge] = triangulation.densest();
+    if (int(triangulation.size()) <= share && !(edge < 0.5 * triangulation.largestEmptyCircle().second)) break;
+    triangulation.remove(id);
+    std::erase_if(state.kept, [&](const Kept& k) { return k.id == id; });
+    ++counts.removedDense;
+  }
+
+  // 3. Insertion where coverage is poorest.
+  const int limit = first_ ? INT_MAX : settings_.maxInsertions;
+  for (int inserted = 0; int(triangulation.size()) < share && inserted < limit; ++inserted) {
+    // Kept in float, as every later frame's triangulation has it.
+    const glm::vec2 centre(triangulation.largestEmptyCircle().first);
+    const Kept k = place(scene, chart, centre);
+    triangulation.insert(glm::dvec2(centre), k.id);
+    state.kept.push_back(k);
+    ++counts.inserted;
+  }
+  const double empty = triangulation.largestEmptyCircle().second;
+  if (triangulation.size() > 0)
+    counts.coverage = std::max(counts.coverage, empty / std::sqrt(1.0 / double(triangulation.size())));
+
+  // 4. Flux: the disk's power over each VPL's Voronoi cell.
+  const std::vector<glm::dvec3> flux = voronoiFlux(triangulation, state.kept, chart, settings_.fluxGrid);
+  for (std::size_t i = 0; i < state.kept.size(); ++i) {
+    const Kept& k = state.kept[i];
+    counts.kept += 1;
+    if (!k.onSurface) {
+      ++counts.placeholders;
+      continue;
+    }
+    vpls_.push_back(Vpl{k.position, k.normal, glm::vec3(flux[i]) * k.albedo, 1});
+  }
+}
+
 const std::vector<Vpl>& IncrementalVpls::update(const RayScene& scene, IncrementalCounts& counts) {
   counts = {};
   const std::vector<LightChart> charts = lightCharts(scene.lights(), scene.bounds());
@@ -98,89 +193,10 @@ const std::vector<Vpl>& IncrementalVpls::update(const RayScene& scene, Increment
     moved[c] = first_ || !sameChart(charts_[c].chart, charts[c]);
     charts_[c].chart = charts[c];
   }
-
-  // Each chart's share of the target, by its light's power (a point light's two charts halve it).
-  const float radius = charts.empty() ? 1.0f : 0.5f * glm::length(scene.bounds().extent()) * 1.01f + 1e-6f;
-  std::vector<double> power;
-  double total = 0.0;
-  for (const LightChart& chart : charts) {
-    const PunctualLight& light = scene.lights()[std::size_t(chart.light)];
-    const double charts = light.type == LightType::Point ? 2.0 : 1.0;
-    power.push_back(luminance(lightPower(light, radius)) / charts);
-    total += power.back();
-  }
-
+  const std::vector<int> shares = chartShares(scene, charts, settings_.vpls);
   vpls_.clear();
   counts.coverage = 0.0;
-  for (std::size_t c = 0; c < charts_.size(); ++c) {
-    ChartState& state = charts_[c];
-    const LightChart& chart = state.chart;
-    const int share = std::max(1, int(std::lround(settings_.vpls * (total > 0.0 ? power[c] / total : 1.0 / charts.size()))));
-
-    // 1. Validity.
-    const std::size_t before = state.kept.size();
-    std::erase_if(state.kept, [&](Kept& k) { return !stillValid(scene, chart, k, moved[c]); });
-    counts.removedInvalid += int(before - state.kept.size());
-
-    // 2. Removal where the set is densest.
-    DiskTriangulation triangulation;
-    std::vector<Kept> unique;
-    for (const Kept& k : state.kept) {
-      try {
-        triangulation.insert(glm::dvec2(k.uv), k.id);
-        unique.push_back(k);
-      } catch (const Error&) {
-        ++counts.removedInvalid;  // two VPLs moved onto one point of the disk: one goes
-      }
-    }
-    state.kept = std::move(unique);
-    const auto erase = [&](int id) {
-      triangulation.remove(id);
-      std::erase_if(state.kept, [&](const Kept& k) { return k.id == id; });
-    };
-    for (int removed = 0; removed < settings_.maxRemovals && triangulation.size() > 1; ++removed) {
-      const auto [id, edge] = triangulation.densest();
-      if (int(triangulation.size()) <= share && !(edge < 0.5 * triangulation.largestEmptyCircle().second)) break;
-      erase(id);
-      ++counts.removedDense;
-    }
-
-    // 3. Insertion where coverage is poorest.
-    const int limit = first_ ? INT_MAX : settings_.maxInsertions;
-    for (int inserted = 0; int(triangulation.size()) < share && inserted < limit; ++inserted) {
-      // Kept in float, as every later frame's triangulation has it.
-      const glm::vec2 centre(triangulation.largestEmptyCircle().first);
-      const Kept k = place(scene, chart, centre);
-      triangulation.insert(glm::dvec2(centre), k.id);
-      state.kept.push_back(k);
-      ++counts.inserted;
-    }
-    const double empty = triangulation.largestEmptyCircle().second;
-    if (triangulation.size() > 0)
-      counts.coverage = std::max(counts.coverage, empty / std::sqrt(1.0 / double(triangulation.size())));
-
-    // 4. Flux: the disk's power over each VPL's Voronoi cell.
-    std::map<int, std::size_t> index;
-    for (std::size_t i = 0; i < state.kept.size(); ++i) index[state.kept[i].id] = i;
-    std::vector<glm::dvec3> flux(state.kept.size(), glm::dvec3(0.0));
-    const int g = settings_.fluxGrid;
-    const double cell = 2.0 / g, area = cell * cell;
-    for (int y = 0; y < g && !state.kept.empty(); ++y)
-      for (int x = 0; x < g; ++x) {
-        const glm::dvec2 uv(-1.0 + (x + 0.5) * cell, -1.0 + (y + 0.5) * cell);
-        if (glm::dot(uv, uv) > 1.0) continue;
-        flux[index[triangulation.nearest(uv)]] += glm::dvec3(chart.powerDensity(glm::vec2(uv))) * area;
-      }
-    for (std::size_t i = 0; i < state.kept.size(); ++i) {
-      const Kept& k = state.kept[i];
-      counts.kept += 1;
-      if (!k.onSurface) {
-        ++counts.placeholders;
-        continue;
-      }
-      vpls_.push_back(Vpl{k.position, k.normal, glm::vec3(flux[i]) * k.albedo, 1});
-    }
-  }
+  for (std::size_t c = 0; c < charts_.size(); ++c) updateChart(scene, charts_[c], moved[c], shares[c], counts);
   first_ = false;
   return vpls_;
 }

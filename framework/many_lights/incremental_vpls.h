@@ -77,6 +77,10 @@ private:
   // Step 1 for one VPL; `reproject`: its disk point follows its surface point (the light moved).
   bool stillValid(const RayScene& scene, const LightChart& chart, Kept& vpl, bool reproject) const;
   Kept place(const RayScene& scene, const LightChart& chart, const glm::vec2& uv);
+  // Steps 1-4 for one chart towards `share` VPLs (`moved`: its light moved since the last
+  // update); appends its VPLs on surfaces to vpls_.
+  void updateChart(const RayScene& scene, ChartState& state, bool moved, int share,
+                   IncrementalCounts& counts);
 
   IncrementalSettings settings_;
   std::vector<ChartState> charts_;

@@ -1,5 +1,5 @@
 #pragma once
-// Exact face fluxes of tetrahedral propagation (docs/variants.md#tetrahedral, "Face flux"):
+// Exact face fluxes of tetrahedral propagation (docs/variants/tetrahedral.md#tetrahedral, "Face flux"):
 // the integral of every real SH basis function Y_i (orders up to 3, i < 16) over each far face of
 // a lattice cell, seen from the centroid of the neighbour it receives from:
 //     M[code][j][k][i] = integral over the spherical triangle of face k of cell `code`, seen from

@@ -1,6 +1,6 @@
 #pragma once
 // Face solid angles of tetrahedral propagation (shaders/propagation/tetrahedral_lattice.glsl,
-// docs/variants.md#tetrahedral), from the geometry. A lattice cell (BCC Delaunay disphenoid,
+// docs/variants/tetrahedral.md#tetrahedral), from the geometry. A lattice cell (BCC Delaunay disphenoid,
 // cube edge 1) in its local frame (A, T, W) = (x, y, z) has its centroid at the origin and
 // vertices P = (-1/2, -1/4, 0), Q = (1/2, -1/4, 0), R+ = (0, 1/4, 1/2), R- = (0, 1/4, -1/2). Its
 // neighbour across face (P, Q, R+) has its centroid at (0, -1/4, 1/4); seen from there, the

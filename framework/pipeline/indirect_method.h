@@ -109,6 +109,10 @@ public:
   // Where its kernels run, for the manifest's "compute": {"indirect_method": {"name", "runs_on"}}
   // by default.
   virtual nlohmann::json computeReport() const;
+  // The configuration keys ("<table>.<name>") that tell this method's configurations apart in a
+  // sweep's summary.csv (columns param.<key>) beside the swept ones, e.g. LPV's strategy types and
+  // grid. None by default: a sweep's swept keys already name what varies.
+  virtual std::vector<std::string> summaryKeys() const { return {}; }
   // What the last frame did (e.g. VPL counts, the energy a clamp removed); an object.
   virtual nlohmann::json statistics() const { return nlohmann::json::object(); }
   // The manifest's entries about the method, given each stage's median time (ms):

@@ -74,7 +74,7 @@ std::vector<MethodCatalogueEntry> methodCatalogue() {
     Params params = experiment.table("indirect");  // LPV reads its stages' tables beside it
     const auto method = entry.factory(params);
     entries.push_back({name, entry.description, parameterLine(params), params.resolved(),
-                       method->stageNames()});
+                       method->stageNames(), method->consumes(), method->summaryKeys()});
   }
   return entries;
 }

@@ -3,6 +3,7 @@
 // default parameters: what `lpvlab list` prints, and where the composition check looks for the
 // strategies that would produce a resource nobody in a composition produces.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,14 +26,16 @@ struct CatalogueEntry {
 // In pipeline order, each stage's strategies by name.
 std::vector<CatalogueEntry> strategyCatalogue();
 
-// Every registered indirect method other than LPV ([indirect] method, indirect_method.h) with its
-// parameters' defaults (a JSON object of key -> value).
+// Every registered indirect method, LPV among them ([indirect] method, indirect_method.h), with
+// what it declares with its parameters' defaults (LPV: the default composition).
 struct MethodCatalogueEntry {
   std::string name;
   std::string description;
   std::string parameters;  // "key = value, ..." as the method reads them by default
   nlohmann::json defaults;  // the same as an object: key -> default value
   std::vector<std::string> stages;  // its timed stages, in the order it runs them
+  std::set<std::string> consumes;   // the raster inputs it reads (raster_inputs.h)
+  std::vector<std::string> summaryKeys;  // its configuration keys a sweep's summary shows
 };
 std::vector<MethodCatalogueEntry> methodCatalogue();
 

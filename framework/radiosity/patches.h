@@ -12,7 +12,7 @@
 //   albedo     rho, the material's albedo (base colour times texture) averaged over the patch
 //   exitance   E = pi L_e, W/m^2, the emitted radiance of a Lambertian emitter times pi; both
 //              sides emit (the path tracer's convention, material_sampling.h)
-// Alpha masks are ignored: radiosity treats cut-out surfaces as opaque (docs/radiosity.md).
+// Alpha masks are ignored: radiosity treats cut-out surfaces as opaque (docs/variants/radiosity.md).
 
 #include <array>
 #include <cstddef>

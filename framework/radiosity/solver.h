@@ -25,7 +25,7 @@
 //
 // Gathering solves with the rows F_ij as estimated from each side; shooting with their
 // reciprocals. With exact form factors both are the same system; with estimated ones they differ
-// by the estimators' reciprocity error (docs/radiosity.md measures it).
+// by the estimators' reciprocity error (docs/variants/radiosity.md measures it).
 
 #include <cstddef>
 #include <functional>

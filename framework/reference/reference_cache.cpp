@@ -197,92 +197,86 @@ Accumulator loadAccumulator(const std::string& path, double* seconds) {
   return acc;
 }
 
-Reference ensureReference(const Scene& scene, const Camera& camera, const ReferenceRequest& request) {
-  if (!request.target.any())
-    throw Error("reference: no sample budget: set samples, seconds or relative_error above 0");
-  Reference ref;
-  const std::string contentHash = sceneHash(scene);
-  ref.key = keyFromSceneHash(contentHash, camera, request);
-  const fs::path dir = fs::path(request.cacheDir.empty() ? defaultCacheDir() : request.cacheDir) / ref.key;
-  ref.directory = dir.string();
+namespace {
+
+// The cache entry's directory, created (with an error naming the cache when it cannot be).
+fs::path entryDirectory(const ReferenceRequest& request, const std::string& key) {
+  const fs::path dir = fs::path(request.cacheDir.empty() ? defaultCacheDir() : request.cacheDir) / key;
   std::error_code created;
   fs::create_directories(dir, created);
   if (created)
     throw Error("reference cache " + dir.parent_path().string() + ": cannot create " +
                 dir.string() + ": " + created.message() +
                 " (the cache is $LPVLAB_CACHE_DIR, --cache or .cache/references)");
-  // One process at a time renders a reference: another (a parallel sweep's child, a Slurm task)
-  // waits here and then finds it complete. The lock dies with its process, also on SIGKILL.
-  const EntryLock lock((dir / "lock").string(), ref.key);
-  // A process killed while writing leaves its temporary (atomic_file.h) behind; under the lock no
-  // one else is writing, so every temporary here is such a leftover.
-  removeLeftoverTemporaries(dir.string());
-  const std::string statePath = (dir / "state.bin").string();
+  return dir;
+}
 
+// The saved accumulator of an entry (its samples so far and their seconds), or an empty one.
+Accumulator savedAccumulator(const std::string& statePath, const ReferenceRequest& request,
+                             double& spent) {
   Accumulator acc(request.width, request.height);
-  double spent = 0.0;
-  if (fs::exists(statePath)) {
-    acc = loadAccumulator(statePath, &spent);
-    if (acc.width != request.width || acc.height != request.height)
-      throw Error(statePath + ": corrupt reference state (" + std::to_string(acc.width) + "x" +
-                  std::to_string(acc.height) + " where the key says " +
-                  std::to_string(request.width) + "x" + std::to_string(request.height) + ")");
-  }
-  const bool complete = fs::exists(dir / "images.exr") && fs::exists(dir / "manifest.json");
-  ref.reused = complete && targetMet(request.target, acc.samples, spent, acc.meanRelativeError());
-  if (!ref.reused && acc.samples > 0 && request.showProgress)
-    std::cerr << "lpvlab: reference " << ref.key << ": continuing from " << acc.samples
-              << " saved samples per pixel\n";
+  if (!fs::exists(statePath)) return acc;
+  acc = loadAccumulator(statePath, &spent);
+  if (acc.width != request.width || acc.height != request.height)
+    throw Error(statePath + ": corrupt reference state (" + std::to_string(acc.width) + "x" +
+                std::to_string(acc.height) + " where the key says " +
+                std::to_string(request.width) + "x" + std::to_string(request.height) + ")");
+  return acc;
+}
 
+// What one session of tracing did: its paths, rays and seconds, and the tracer's engine.
+struct TracingSession {
   std::int64_t paths = 0, rays = 0;
-  double renderSeconds = 0.0;
-  nlohmann::json engine;  // what this session's samples were traced with
-  if (!ref.reused) {
-    const PathTracer tracer(scene, camera, request.width, request.height, request.tracer);
-    engine = {{"isa", tracer.isa()}, {"packet_width", tracer.packetWidth()}};
-    ProgressBar progress("reference " + ref.key);
-    auto lastCheckpoint = std::chrono::steady_clock::now();
-    double secondsPerSample = 0.0;
-    while (!targetMet(request.target, acc.samples, spent, acc.meanRelativeError())) {
-      // Passes of about a second keep the progress bar and checkpoints current.
-      int count = secondsPerSample > 0.0 ? int(std::clamp(1.0 / secondsPerSample, 1.0, 1024.0)) : 1;
-      if (request.target.samples > 0)
-        count = int(std::min<std::int64_t>(count, std::max<std::int64_t>(1, request.target.samples - acc.samples)));
-      const auto start = std::chrono::steady_clock::now();
-      std::int64_t passRays = 0;
-      paths += tracer.render(acc, count, request.threads, &passRays);
-      rays += passRays;
-      const double passSeconds = secondsSince(start);
-      secondsPerSample = passSeconds / count;
-      spent += passSeconds;
-      renderSeconds += passSeconds;
-      const double error = acc.meanRelativeError();
-      if (request.showProgress) {
-        std::ostringstream detail;
-        detail << acc.samples << " spp, rel. error " << error;
-        progress.update(progressFraction(request.target, acc.samples, spent, error), detail.str());
-      }
-      if (secondsSince(lastCheckpoint) >= request.checkpointSeconds) {
-        saveAccumulator(statePath, acc, spent);
-        lastCheckpoint = std::chrono::steady_clock::now();
-      }
-    }
-    saveAccumulator(statePath, acc, spent);
-    if (request.showProgress)
-      progress.finish(std::to_string(acc.samples) + " spp");
-  }
+  double seconds = 0.0;
+  nlohmann::json engine;
+};
 
-  ref.aovs = acc.images();
-  ref.samples = acc.samples;
-  ref.seconds = spent;
-  ref.relativeError = acc.meanRelativeError();
-  if (ref.reused) {
-    std::ifstream in(dir / "manifest.json");
-    ref.manifest = nlohmann::json::parse(in, nullptr, false);
-    if (ref.manifest.is_discarded()) throw Error((dir / "manifest.json").string() + ": not valid JSON");
-    return ref;
+// Traces passes of about a second into `acc` until the request's target is met, checkpointing
+// to `statePath` and showing progress; `spent` counts every session's seconds.
+TracingSession traceUntilTarget(const Scene& scene, const Camera& camera, const ReferenceRequest& request,
+                                const std::string& key, const std::string& statePath, Accumulator& acc,
+                                double& spent) {
+  TracingSession session;
+  const PathTracer tracer(scene, camera, request.width, request.height, request.tracer);
+  session.engine = {{"isa", tracer.isa()}, {"packet_width", tracer.packetWidth()}};
+  ProgressBar progress("reference " + key);
+  auto lastCheckpoint = std::chrono::steady_clock::now();
+  double secondsPerSample = 0.0;
+  while (!targetMet(request.target, acc.samples, spent, acc.meanRelativeError())) {
+    // Passes of about a second keep the progress bar and checkpoints current.
+    int count = secondsPerSample > 0.0 ? int(std::clamp(1.0 / secondsPerSample, 1.0, 1024.0)) : 1;
+    if (request.target.samples > 0)
+      count = int(std::min<std::int64_t>(count, std::max<std::int64_t>(1, request.target.samples - acc.samples)));
+    const auto start = std::chrono::steady_clock::now();
+    std::int64_t passRays = 0;
+    session.paths += tracer.render(acc, count, request.threads, &passRays);
+    session.rays += passRays;
+    const double passSeconds = secondsSince(start);
+    secondsPerSample = passSeconds / count;
+    spent += passSeconds;
+    session.seconds += passSeconds;
+    const double error = acc.meanRelativeError();
+    if (request.showProgress) {
+      std::ostringstream detail;
+      detail << acc.samples << " spp, rel. error " << error;
+      progress.update(progressFraction(request.target, acc.samples, spent, error), detail.str());
+    }
+    if (secondsSince(lastCheckpoint) >= request.checkpointSeconds) {
+      saveAccumulator(statePath, acc, spent);
+      lastCheckpoint = std::chrono::steady_clock::now();
+    }
   }
-  ref.manifest = {
+  saveAccumulator(statePath, acc, spent);
+  if (request.showProgress) progress.finish(std::to_string(acc.samples) + " spp");
+  return session;
+}
+
+// A finished reference's manifest: what it shows (scene, camera, size), how it was traced, and
+// what this session took.
+nlohmann::json referenceManifest(const Reference& ref, const Scene& scene, const std::string& contentHash,
+                                 const Camera& camera, const ReferenceRequest& request,
+                                 const TracingSession& session) {
+  return {
       {"key", ref.key},
       {"scene",
        {{"source", scene.source}, {"hash", contentHash}, {"triangles", scene.triangleCount()}}},
@@ -301,20 +295,61 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
         {"sky_radiance",
          {request.tracer.skyRadiance.x, request.tracer.skyRadiance.y,
           request.tracer.skyRadiance.z}}}},
-      {"samples_per_pixel", acc.samples},
-      {"seconds_total", spent},
+      {"samples_per_pixel", ref.samples},
+      {"seconds_total", ref.seconds},
       {"relative_error", ref.relativeError},
       {"last_session",
-       {{"seconds", renderSeconds},
-        {"paths", paths},
-        {"rays", rays},
-        {"paths_per_second", renderSeconds > 0 ? paths / renderSeconds : 0.0},
-        {"rays_per_second", renderSeconds > 0 ? rays / renderSeconds : 0.0},
+       {{"seconds", session.seconds},
+        {"paths", session.paths},
+        {"rays", session.rays},
+        {"paths_per_second", session.seconds > 0 ? session.paths / session.seconds : 0.0},
+        {"rays_per_second", session.seconds > 0 ? session.rays / session.seconds : 0.0},
         {"threads", request.threads > 0 ? request.threads : availableCores()},
-        {"engine", engine}}},
+        {"engine", session.engine}}},
       {"created_utc", utcTimestamp()},
       {"git_revision", lpvlabRevision()},
       {"host", hostInfo()}};
+}
+
+}  // namespace
+
+Reference ensureReference(const Scene& scene, const Camera& camera, const ReferenceRequest& request) {
+  if (!request.target.any())
+    throw Error("reference: no sample budget: set samples, seconds or relative_error above 0");
+  Reference ref;
+  const std::string contentHash = sceneHash(scene);
+  ref.key = keyFromSceneHash(contentHash, camera, request);
+  const fs::path dir = entryDirectory(request, ref.key);
+  ref.directory = dir.string();
+  // One process at a time renders a reference: another (a parallel sweep's child, a Slurm task)
+  // waits here and then finds it complete. The lock dies with its process, also on SIGKILL.
+  const EntryLock lock((dir / "lock").string(), ref.key);
+  // A process killed while writing leaves its temporary (atomic_file.h) behind; under the lock no
+  // one else is writing, so every temporary here is such a leftover.
+  removeLeftoverTemporaries(dir.string());
+  const std::string statePath = (dir / "state.bin").string();
+
+  double spent = 0.0;
+  Accumulator acc = savedAccumulator(statePath, request, spent);
+  const bool complete = fs::exists(dir / "images.exr") && fs::exists(dir / "manifest.json");
+  ref.reused = complete && targetMet(request.target, acc.samples, spent, acc.meanRelativeError());
+  if (!ref.reused && acc.samples > 0 && request.showProgress)
+    std::cerr << "lpvlab: reference " << ref.key << ": continuing from " << acc.samples
+              << " saved samples per pixel\n";
+  TracingSession session;  // what this session's samples were traced with
+  if (!ref.reused) session = traceUntilTarget(scene, camera, request, ref.key, statePath, acc, spent);
+
+  ref.aovs = acc.images();
+  ref.samples = acc.samples;
+  ref.seconds = spent;
+  ref.relativeError = acc.meanRelativeError();
+  if (ref.reused) {
+    std::ifstream in(dir / "manifest.json");
+    ref.manifest = nlohmann::json::parse(in, nullptr, false);
+    if (ref.manifest.is_discarded()) throw Error((dir / "manifest.json").string() + ": not valid JSON");
+    return ref;
+  }
+  ref.manifest = referenceManifest(ref, scene, contentHash, camera, request, session);
   writeExr((dir / "images.exr").string(), ref.aovs, {{"lpvlab:reference_key", ref.key}});
   writeTextAtomically((dir / "manifest.json").string(), ref.manifest.dump(2) + "\n");
   return ref;

@@ -92,6 +92,58 @@ SamplerInterpolations samplerInterpolations(const nlohmann::json& gltf) {
 glm::dvec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 glm::dquat toGlm(const aiQuaternion& q) { return glm::normalize(glm::dquat(q.w, q.x, q.y, q.z)); }
 
+// A channel's sampler interpolation as lpvlab plays it ("step", "linear"); a CUBICSPLINE is
+// refused. `where` names the animation and node.
+std::string playedInterpolation(const SamplerInterpolations& interpolations,
+                                const std::tuple<int, std::string, std::string>& channel,
+                                const std::string& where) {
+  const auto found = interpolations.find(channel);
+  const std::string name = found == interpolations.end() ? "LINEAR" : found->second;
+  if (name == "STEP") return "step";
+  if (name == "LINEAR") return "linear";
+  throw Error(where + ": " + std::get<2>(channel) + " sampler is " + name +
+              " (Assimp 5.2 reads only a CUBICSPLINE's values, not its tangents; lpvlab "
+              "plays LINEAR and STEP samplers)");
+}
+
+// An animated node's parent transform: uniform scale s times rotation Q, or refused (the
+// node's motion would not be rigid in world space).
+struct RigidParent {
+  glm::dmat4 transform;   // node to world of the parent
+  glm::dmat3 linear;      // its linear part, s Q
+  glm::dquat rotation;    // Q
+};
+
+RigidParent rigidParent(const aiNode& node, const std::string& where) {
+  RigidParent parent;
+  parent.transform = node.mParent ? glm::dmat4(nodeToWorld(*node.mParent)) : glm::dmat4(1.0);
+  parent.linear = glm::dmat3(parent.transform);
+  const double s = std::cbrt(glm::determinant(parent.linear));
+  const glm::dmat3 q = parent.linear / s;
+  const glm::dmat3 gram = glm::transpose(q) * q;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!(std::abs(gram[i][j] - (i == j ? 1.0 : 0.0)) < 1e-4))
+        throw Error(where +
+                    ": its parent's transform is not a rotation and uniform scale "
+                    "(the node's motion would not be rigid in world space)");
+  parent.rotation = glm::quat_cast(q);
+  return parent;
+}
+
+// lpvlab moves meshes rigidly: a scaling key away from the rest scale `s0` is refused.
+void refuseAnimatedScaling(const aiNodeAnim& channel, const glm::dvec3& s0, double ticksPerSecond,
+                           const std::string& where) {
+  for (unsigned k = 0; k < channel.mNumScalingKeys; ++k) {
+    const glm::dvec3 scaling = toGlm(channel.mScalingKeys[k].mValue);
+    const double tolerance = 1e-5 * std::max({std::abs(s0.x), std::abs(s0.y), std::abs(s0.z), 1e-3});
+    if (glm::any(glm::greaterThan(glm::abs(scaling - s0), glm::dvec3(tolerance))))
+      throw Error(where + ": its scaling is animated (at " +
+                  std::to_string(channel.mScalingKeys[k].mTime / ticksPerSecond) +
+                  " s); lpvlab moves meshes rigidly");
+  }
+}
+
 }  // namespace
 
 std::vector<NodeAnimation> convertNodeAnimations(const aiScene& scene, const NodeMeshes& meshes,
@@ -121,45 +173,17 @@ std::vector<NodeAnimation> convertNodeAnimations(const aiScene& scene, const Nod
         if (animated.count(up))
           throw Error(where + ": its ancestor '" + up->mName.C_Str() +
                       "' is animated too (nested node animations are not supported)");
-      const auto interpolationOf = [&](const char* gltfPath) -> std::string {
-        const auto found = interpolations.find({int(a), nodeName, gltfPath});
-        const std::string name = found == interpolations.end() ? "LINEAR" : found->second;
-        if (name == "STEP") return "step";
-        if (name == "LINEAR") return "linear";
-        throw Error(where + ": " + gltfPath + " sampler is " + name +
-                    " (Assimp 5.2 reads only a CUBICSPLINE's values, not its tangents; lpvlab "
-                    "plays LINEAR and STEP samplers)");
+      const auto interpolationOf = [&](const char* gltfPath) {
+        return playedInterpolation(interpolations, {int(a), nodeName, gltfPath}, where);
       };
 
-      // The parent's transform: uniform scale s times rotation Q, or refused.
-      const glm::dmat4 parent =
-          node->mParent ? glm::dmat4(nodeToWorld(*node->mParent)) : glm::dmat4(1.0);
-      const glm::dmat3 linear(parent);
-      const double s = std::cbrt(glm::determinant(linear));
-      const glm::dmat3 q = linear / s;
-      const glm::dmat3 gram = glm::transpose(q) * q;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (!(std::abs(gram[i][j] - (i == j ? 1.0 : 0.0)) < 1e-4))
-            throw Error(where +
-                        ": its parent's transform is not a rotation and uniform scale "
-                        "(the node's motion would not be rigid in world space)");
-      const glm::dquat parentRotation = glm::quat_cast(q);
-
+      const RigidParent parent = rigidParent(*node, where);
       aiVector3D restScaling, restPosition;
       aiQuaternion restRotation;
       node->mTransformation.Decompose(restScaling, restRotation, restPosition);
-      const glm::dvec3 t0 = toGlm(restPosition), s0 = toGlm(restScaling);
+      const glm::dvec3 t0 = toGlm(restPosition);
       const glm::dquat r0 = toGlm(restRotation);
-      for (unsigned k = 0; k < channel.mNumScalingKeys; ++k) {
-        const glm::dvec3 scaling = toGlm(channel.mScalingKeys[k].mValue);
-        const double tolerance =
-            1e-5 * std::max({std::abs(s0.x), std::abs(s0.y), std::abs(s0.z), 1e-3});
-        if (glm::any(glm::greaterThan(glm::abs(scaling - s0), glm::dvec3(tolerance))))
-          throw Error(where + ": its scaling is animated (at " +
-                      std::to_string(channel.mScalingKeys[k].mTime / ticksPerSecond) +
-                      " s); lpvlab moves meshes rigidly");
-      }
+      refuseAnimatedScaling(channel, toGlm(restScaling), ticksPerSecond, where);
 
       NodeAnimation motion;
       motion.animation = animationName;
@@ -168,16 +192,16 @@ std::vector<NodeAnimation> convertNodeAnimations(const aiScene& scene, const Nod
       if (placed != meshes.end())
         for (int m = placed->second.first; m < placed->second.second; ++m)
           motion.meshes.push_back(m);
-      motion.pivot = glm::dvec3(parent * glm::dvec4(t0, 1.0));
+      motion.pivot = glm::dvec3(parent.transform * glm::dvec4(t0, 1.0));
       for (unsigned k = 0; k < channel.mNumPositionKeys; ++k) {
         motion.translationTimes.push_back(channel.mPositionKeys[k].mTime / ticksPerSecond);
-        motion.translations.push_back(linear * (toGlm(channel.mPositionKeys[k].mValue) - t0));
+        motion.translations.push_back(parent.linear * (toGlm(channel.mPositionKeys[k].mValue) - t0));
       }
       for (unsigned k = 0; k < channel.mNumRotationKeys; ++k) {
         motion.rotationTimes.push_back(channel.mRotationKeys[k].mTime / ticksPerSecond);
         motion.rotations.push_back(
-            glm::normalize(parentRotation * toGlm(channel.mRotationKeys[k].mValue) *
-                           glm::inverse(r0) * glm::inverse(parentRotation)));
+            glm::normalize(parent.rotation * toGlm(channel.mRotationKeys[k].mValue) *
+                           glm::inverse(r0) * glm::inverse(parent.rotation)));
       }
       if (channel.mNumPositionKeys > 0)
         motion.translationInterpolation = interpolationOf("translation");

@@ -32,7 +32,7 @@
 // standard propagation, and what the reprojection removes from faces against the normal goes to
 // faces along it. The back-propagation is removed; the light is redirected, not lost. (Where
 // neighbouring normals differ, or a cell holds light that is not a lobe about its normal, the
-// step is not exactly conserving; see docs/variants.md#directed.)
+// step is not exactly conserving; see docs/variants/directed.md#directed.)
 // A cell without a normal (none reached it, or a normal-less injection such as sky light) gets
 // the standard transfer unchanged.
 #ifndef LPVLAB_DIRECTED_FACES_GLSL
@@ -73,7 +73,7 @@ vec4 directedDilated(vec4 own, vec3 neighbourUnitNormalSum) {
 // the space between the surfaces with the normal of the nearest one, so every cell next to a lit
 // surface re-emits only light leaving that surface: light arriving from other surfaces is turned
 // back before it reaches it, and a scene whose every surface sends VPLs (a closed room under a
-// point light) is left almost black (issue 42; docs/variants.md#directed). With release, the
+// point light) is left almost black (issue 42; docs/variants/directed.md#directed). With release, the
 // light is kept in two grids: "attached" light, still in the region of cells whose normals agree
 // with the surface it left, is reprojected as alg. 6.3 says; where the normal field changes (a
 // neighbour's normal differs by more than the region angle, or the cell has no normal) a cell

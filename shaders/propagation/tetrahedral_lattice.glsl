@@ -1,5 +1,5 @@
 // The tetrahedral lattice of "tetrahedral" propagation, shared by its kernels and the
-// double-precision C++ tests (docs/variants.md#tetrahedral derives everything stated here).
+// double-precision C++ tests (docs/variants/tetrahedral.md#tetrahedral derives everything stated here).
 //
 // Lattice: the Delaunay cells of the body-centred cubic (BCC) lattice whose points are the light
 // grid's cube corners and cube centres (grid units: cube edge 1). Every cell is a congruent
@@ -185,7 +185,7 @@ vec3 tetFarFaceDirection(int code, int sharedFace, int face) {
 //              intensity towards the face's centroid). It conserves flux only for an isotropic
 //              source; the clamp of a lobe's negative side sampled at single directions adds up
 //              to 1.21x (order 1) / 1.26x (orders 2-3) per step, which compounds over a lattice's
-//              many steps (docs/variants.md#tetrahedral).
+//              many steps (docs/variants/tetrahedral.md#tetrahedral).
 // Only the number of coefficients changes with the order: the lobe integrates to Phi_k at every
 // order (only Y00 has an integral).
 const int TET_FACE_INTEGRAL_COUNT = TET_PER_CUBE * TET_FACES * TET_FACES * SH_MAX_COEFFICIENTS;

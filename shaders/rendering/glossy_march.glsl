@@ -1,4 +1,4 @@
-// "glossy" rendering's reflection (docs/variants.md#glossy), in the shared GLSL/C++ subset
+// "glossy" rendering's reflection (docs/variants/glossy.md#glossy), in the shared GLSL/C++ subset
 // (prelude.glsl): the GL kernel (trilinear.comp) and the CPU kernel (trilinear_cpu.cpp) call
 // these same functions. The includer defines, besides trilinear_diffuse.glsl's gridCoefficient
 // (the level being rendered), cascade_weight.glsl's cascadeLevelOrigin and cascadeLevelCellSize.

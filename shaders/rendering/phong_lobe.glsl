@@ -9,7 +9,7 @@
 //   Lambda_0 = 1,  Lambda_1 = (m + 1) / (m + 2),  Lambda_2 = m / (m + 3),
 //   Lambda_3 = (m + 1)(m - 1) / ((m + 2)(m + 4)).
 // m = 1 is the normalised clamped cosine (1, 2/3, 1/4, 0); m -> infinity tends to evaluation at a
-// (all Lambda_l -> 1). Checked by numerical integration in tests/pipeline/rendering_variants_test.cpp.
+// (all Lambda_l -> 1). Checked by numerical integration in tests/variants/rendering/rendering_variants_test.cpp.
 #ifndef LPVLAB_PHONG_LOBE_GLSL
 #define LPVLAB_PHONG_LOBE_GLSL
 #include "../common/sh.glsl"

@@ -8,7 +8,7 @@
 //   LEAK_DAMPING: the diffuse read is damped (leak_damping.glsl).
 //   GLOSSY:       adds specularAlbedo * the grid's radiance arriving from the reflected view
 //                 direction r, weighted by a normalised Phong lobe (phong_lobe.glsl) and averaged
-//                 over samples marched along r (docs/variants.md#glossy).
+//                 over samples marched along r (docs/variants/glossy.md#glossy).
 #include "../common/cascade_blend.glsl"
 
 #include "trilinear_interface.glsl"

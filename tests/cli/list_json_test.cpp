@@ -46,6 +46,13 @@ TEST(ListJson, IsTheTextListsCatalogueWithDefaultsStagesAndResources) {
       lpv = true;
       EXPECT_EQ(m.at("stages").front(), "clear");
       EXPECT_EQ(m.at("stages").back(), "indirect");
+      // The default composition injects RSM texels, so it consumes the RSMs, and a summary shows
+      // its strategies.
+      EXPECT_EQ(m.at("consumes"), nlohmann::json({"rsm"}));
+      EXPECT_NE(m.at("summary_keys").dump().find("propagation.type"), std::string::npos);
+    }
+    if (m.at("name") == "instant_radiosity") {
+      EXPECT_EQ(m.at("consumes"), nlohmann::json::array()) << "it makes its own VPLs";
     }
     if (m.at("name") == "radiosity") {
       radiosity = true;

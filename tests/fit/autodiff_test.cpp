@@ -15,7 +15,7 @@
 #include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
-#include "pipeline/propagation_rig.h"
+#include "support/propagation_rig.h"
 
 namespace lpvlab {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "crystal_model.h"
 #include "framework/core/error.h"
-#include "pipeline/pipeline_test_support.h"
+#include "support/pipeline_test_support.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
 #include "shaders/particles/light_field_views.glsl"

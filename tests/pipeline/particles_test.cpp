@@ -225,7 +225,9 @@ TEST(Particles, TheSweepSummaryHasTheirCountsAndDrawing) {
   EXPECT_EQ(column(rows, "param.particles[0].draw"), -1);
   EXPECT_EQ(column(rows, "particles.alive"), -1);
 
+  // A run with particle systems names their drawing among its summary keys (run_outputs.cpp).
   write("b", {{"configuration", {{"particles", {{{"draw", "light_field"}}, {{"draw", "geometry"}}}}}},
+              {"summary_keys", {"indirect.method", "scene.file", "particles[0].draw"}},
               {"particles", {{{"alive_at_frame_0", 10}, {"capacity", 20}, {"triangles", 160}},
                              {{"alive_at_frame_0", 5}, {"capacity", 6}, {"triangles", 48}}}}});
   rows = table();

@@ -1,5 +1,5 @@
 // Injection "sky_columns": light from a constant sky ([sky] radiance), column by column from the
-// top of the grid down to the first surface (thesis 5.3 and 6.9.4; docs/variants.md#sky_columns).
+// top of the grid down to the first surface (thesis 5.3 and 6.9.4; docs/variants/sky_columns.md#sky_columns).
 // A top-down orthographic depth map of the scene over the grid's xz extent finds each texel's
 // first surface; the flux pi L a through the texel's open top (a its area) is added to the cell
 // above that surface as a downward Lambertian lobe (shaders/injection/sky_columns.glsl), at any

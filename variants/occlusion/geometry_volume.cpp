@@ -11,7 +11,7 @@
 // each surfel also adds its albedo, weighted by its A_s / s^2, to the GV's albedo: a camera
 // surfel the G-buffer's, an RSM surfel its reflected flux over the flux arriving at it. Albedo is
 // a weighted mean, not a sum, so both sources add to the one albedo buffer without merging.
-// docs/variants.md#geometry_volume has the mathematics. On the CPU backend the same surfels are
+// docs/variants/geometry_volume.md#geometry_volume has the mathematics. On the CPU backend the same surfels are
 // summed per cell without atomics (geometry_volume_cpu.h).
 // With `history`, the GV of the frames before is kept and merged into each frame's by the same
 // rule, with its albedo: "for static scenes the GV need not be built anew each frame; the GV of

@@ -6,7 +6,7 @@
 // face passes into a cell is reprojected a second time about the cell's dilated normal, which
 // removes what travels against it. The mathematics and the normalisation (a gain G(n) per
 // cell, so that light travelling along agreeing normals keeps its flux) are in
-// shaders/propagation/directed_faces.glsl and docs/variants.md#directed, at SH orders 1-3 (the
+// shaders/propagation/directed_faces.glsl and docs/variants/directed.md#directed, at SH orders 1-3 (the
 // gain derived for the grid's order). A geometry volume, if the occlusion strategy provides one,
 // attenuates the light crossing each shared face as in thesis alg. 6.2.
 // On the CPU backend the standard CPU kernel runs it, finishing each cell with a normal by the

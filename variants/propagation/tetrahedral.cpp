@@ -1,7 +1,7 @@
 // Propagation "tetrahedral": light propagates on the tetrahedral lattice of the body-centred
 // cubic points (cube corners and centres; 12 congruent disphenoids per cube, four face
 // neighbours each) instead of the cubes, with the standard method's face logic and
-// normalisation (docs/variants.md#tetrahedral; geometry and face solid angles in
+// normalisation (docs/variants/tetrahedral.md#tetrahedral; geometry and face solid angles in
 // shaders/propagation/tetrahedral_lattice.glsl and framework/math/tetrahedral_solid_angles.h).
 // Injection and rendering stay on the cubic light grid, so each frame:
 //   1. split (tetrahedral_split.comp): the cubic `current` -> lattice, flux conserving;

@@ -5,7 +5,7 @@
 // (shaders/rendering/phong_lobe.glsl), as radiance I / cellSize^2; the steps' mean times
 // specular_albedo is added to `indirect`. The path-traced reference is Lambertian, so
 // specular_albedo defaults to 0: then the output is trilinear's exactly and the march is not
-// even compiled in. docs/variants.md#glossy.
+// even compiled in. docs/variants/glossy.md#glossy.
 //
 // | parameter       | type  | default | meaning                                                |
 // |-----------------|-------|---------|--------------------------------------------------------|

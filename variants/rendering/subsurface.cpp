@@ -1,5 +1,5 @@
 // Rendering "subsurface": the subsurface-scattering LPV (thesis 5.4, 6.9.4). What it does, its
-// parameters and its units: subsurface.h; the mathematics: docs/variants.md#subsurface.
+// parameters and its units: subsurface.h; the mathematics: docs/variants/subsurface.md#subsurface.
 
 #include "variants/rendering/subsurface.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Rendering "subsurface": the subsurface-scattering LPV (SSLPV; thesis 5.4 and 6.9.4;
-// docs/variants.md#subsurface), a second, self-contained LPV for translucent materials
+// docs/variants/subsurface.md#subsurface), a second, self-contained LPV for translucent materials
 // (Material::transmittance > 0, set with [[materials]] in the experiment), meant for
 // [[rendering.also]] beside the main rendering. Per frame, inside the pipeline's "indirect" stage:
 //   1. its own RSM of every light view (shaders/subsurface/rsm.frag): translucent surfaces store

@@ -1,10 +1,10 @@
 // Rendering "trilinear": indirect light read from one light grid, trilinearly interpolated, at
 // each visible surface point (thesis 4.5, 6.9.3; kernel shaders/rendering/trilinear.comp), with
-// optional leak damping (thesis 4.5, fig. 4.3 right; docs/variants.md#leak_damping): where the
+// optional leak damping (thesis 4.5, fig. 4.3 right; docs/variants/trilinear.md#leak_damping): where the
 // light read grows towards the surface along its normal, it probably came through the wall
 // behind, and is damped. Damping is a parameter, not a strategy of its own, because it changes
 // only one factor of the same read, and combines with "glossy" (glossy.cpp), which shares this
-// kernel. docs/variants.md#trilinear.
+// kernel. docs/variants/trilinear.md#trilinear.
 //
 // | parameter     | type  | default | meaning                                                  |
 // |---------------|-------|---------|----------------------------------------------------------|

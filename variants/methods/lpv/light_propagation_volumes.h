@@ -60,6 +60,7 @@ public:
   nlohmann::json memoryReport() const override;
   nlohmann::json computeReport() const override;
   nlohmann::json describe(const std::map<std::string, double>& medianStageMs) const override;
+  std::vector<std::string> summaryKeys() const override;
   nlohmann::json audit() override;
   std::string derivativeRefusal(const std::string& key) const override;
   FrameDerivatives renderDerivatives(const std::vector<std::string>& seeds,

@@ -98,6 +98,13 @@ nlohmann::json LightPropagationVolumes::computeReport() const {
   return {{"strategies", stages}};
 }
 
+// A summary tells LPV's configurations apart by their strategies, grid and iterations.
+std::vector<std::string> LightPropagationVolumes::summaryKeys() const {
+  return {"injection.type",  "occlusion.type", "propagation.type",
+          "rendering.type",  "grid.resolution", "grid.sh_order",
+          "cascades.levels", "propagation.iterations"};
+}
+
 nlohmann::json LightPropagationVolumes::describe(
     const std::map<std::string, double>& medianStageMs) const {
   const auto propagation = medianStageMs.find("propagation");

@@ -2,7 +2,7 @@
 // scene is split into patches (framework/radiosity/patches.h), form factors are estimated by the
 // hemicube on GL or by Embree rays, the system B = E + rho (P + F B) is solved by Jacobi,
 // Gauss-Seidel or progressive shooting, and each pixel shows the irradiance of the patch side it
-// sees (flat or Gouraud). Parameters (docs/radiosity.md):
+// sees (flat or Gouraud). Parameters (docs/variants/radiosity.md):
 //   patch_size           longest patch edge, m (0: the scene's largest extent / 8)
 //   max_patches          a bound on the patches (an error above it, not a silent coarsening)
 //   form_factors         "hemicube" (seed 004, 3.5-3.7) or "rays"

@@ -271,7 +271,7 @@ TEST_P(EnergyAudit, InjectionKeepsTheRsmFluxAndEveryVariantStaysInItsBand) {
 }
 
 // Issue 42's candidate causes of directed propagation's lost light, checked under each light type
-// (none of them was the cause: docs/variants.md#directed): the RSM's normals are world-space
+// (none of them was the cause: docs/variants/directed.md#directed): the RSM's normals are world-space
 // unit normals facing their light in every view (a point light's six cube faces, the faces a
 // spot's cone reaches, a sun's one view), and the normal grid directed propagation reads holds every view's VPLs: its flux
 // weights sum to the RSM's flux and its flux-weighted normals to the RSM's.
