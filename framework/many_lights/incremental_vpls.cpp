@@ -147,7 +147,8 @@ void IncrementalVpls::updateChart(const RayScene& scene, ChartState& state, bool
     const auto [id, edge] = triangulation.densest();
     if (int(triangulation.size()) <= share && !(edge < 0.5 * triangulation.largestEmptyCircle().second)) break;
     triangulation.remove(id);
-    std::erase_if(state.kept, [&](const Kept& k) { return k.id == id; });
+    const int removedId = id;  // a structured binding is not captured by lambdas before C++23 in clang 14
+    std::erase_if(state.kept, [removedId](const Kept& k) { return k.id == removedId; });
     ++counts.removedDense;
   }
 
