@@ -6,14 +6,16 @@ changed, at several grid resolutions. Every other configuration is compared with
 
   * equal settings: the baseline configuration at the same grid.resolution (the ratio
     error / baseline error says what the extension changes, whatever it costs);
-  * equal time: the baseline's error at the configuration's total frame time, interpolated
+  * equal time: the baseline's error at the configuration's time (the report's speed axis: by
+    default the indirect method's own stages, summary.S.with_speed), interpolated
     linearly in (log time, log error) between the two baseline points bracketing that time
     (the baseline sorted by time). A time outside the baseline's range is "out of range" and
     gets no value: extrapolating a power law past its last point would be a guess. A ratio
     below 1 means the extension beats simply spending its time on a finer standard grid.
 
 Baselines are per scene (param.scene.file when present), so a sweep over several scenes compares
-each configuration with its own scene's series. Baseline points without a finite positive time
+each configuration with its own scene's series, and per clock (the speed axis's: GL timer queries
+or the CPU's wall clock), so a time taken on one backend is never compared with another's. Baseline points without a finite positive time
 and error cannot be placed on log axes and are left out of the series.
 """
 import bisect
@@ -25,7 +27,6 @@ from . import summary as S
 
 SERIES_COL = "param.series"
 BASELINE = "baseline"
-TIME_COL = S.TIME_COL
 RESOLUTION_COL = "param.grid.resolution"
 SCENE_COL = "param.scene.file"
 METRIC_NAMES = ("rmse", "flip")
@@ -87,29 +88,38 @@ def _ratio(a, b):
 
 
 def _groups(agg):
+    """(scene, rows) per scene and clock of the speed axis: baselines never cross either."""
+    keys = []
     if SCENE_COL in agg.columns:
-        return [(str(k), g) for k, g in agg.groupby(agg[SCENE_COL].astype(str), sort=False)]
-    return [("", agg)]
+        keys.append(agg[SCENE_COL].astype(str))
+    clock = S.speed_clock_col(agg)
+    if clock:
+        keys.append(agg[clock].fillna("").astype(str))
+    if not keys:
+        return [("", agg)]
+    scenes = agg[SCENE_COL].astype(str) if SCENE_COL in agg.columns else pd.Series([""] * len(agg), index=agg.index)
+    return [(scenes.loc[g.index[0]], g) for _, g in agg.groupby(keys, sort=False)]
 
 
 def compare(agg, metric):
     """One row per configuration (baseline ones included, their ratios at equal settings are 1):
 
     scene, config_id, config_name, name (the series label, else config_name), baseline (bool),
-    resolution, total ms, propagation ms, error,
+    resolution, time ms (the speed axis's, summary.speed_col), propagation ms, error,
     settings error (the baseline's at the same resolution; NaN when the series lacks it),
     settings ratio, time error (the baseline's at equal time), time ratio, time status
     ("" or why there is no value). Empty DataFrame when the metric or time column is absent.
     """
-    cols = ["scene", "config_id", "config_name", "name", "baseline", "resolution", "total ms", "propagation ms",
+    cols = ["scene", "config_id", "config_name", "name", "baseline", "resolution", "time ms", "propagation ms",
             "error", "settings error", "settings ratio", "time error", "time ratio", "time status"]
-    if metric not in agg.columns or TIME_COL not in agg.columns:
+    time_col = S.speed_col(agg)
+    if metric not in agg.columns or time_col not in agg.columns:
         return pd.DataFrame(columns=cols)
     base_mask = is_baseline(agg)
     rows = []
     for scene, g in _groups(agg):
         base = g[base_mask.loc[g.index]]
-        points = baseline_points(base[TIME_COL].astype(float), base[metric].astype(float))
+        points = baseline_points(base[time_col].astype(float), base[metric].astype(float))
         by_res = {}
         if RESOLUTION_COL in base.columns:
             for _, b in base.iterrows():
@@ -121,12 +131,12 @@ def compare(agg, metric):
             if base.empty:
                 t_err, status = math.nan, "no baseline"
             else:
-                t_err, status = error_at_time(points, r[TIME_COL])
+                t_err, status = error_at_time(points, r[time_col])
             rows.append({
                 "scene": scene, "config_id": str(r["config_id"]), "config_name": str(r["config_name"]),
                 "name": _name(r),
                 "baseline": bool(base_mask.loc[idx]), "resolution": res,
-                "total ms": float(r[TIME_COL]),
+                "time ms": float(r[time_col]),
                 "propagation ms": float(r.get(S.time_col("propagation"), math.nan)),
                 "error": err, "settings error": s_err, "settings ratio": _ratio(err, s_err),
                 "time error": t_err, "time ratio": _ratio(err, t_err), "time status": status})
@@ -145,18 +155,18 @@ def metrics_present(agg):
 
 def to_markdown(agg):
     """Markdown tables, one per metric of metrics_present: every configuration with its error at
-    equal settings and at equal time (baseline rows first, then by total time)."""
+    equal settings and at equal time (baseline rows first, then by time)."""
     from .tables import fmt
     out = []
     for m, t in _comparisons(agg):
         out.append(f"### {_title(m)}\n")
-        out.append("| scene | configuration | baseline | res | total ms | propagation ms | error | "
+        out.append("| scene | configuration | baseline | res | time ms | propagation ms | error | "
                    "baseline error, equal settings | ratio | baseline error, equal time | ratio |")
         out.append("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
         for _, r in t.iterrows():
             time_err = r["time status"] or fmt(r["time error"])
             cells = [r["scene"], r["config_name"], "yes" if r["baseline"] else "", fmt(r["resolution"]),
-                     fmt(r["total ms"]), fmt(r["propagation ms"]), fmt(r["error"]), fmt(r["settings error"]),
+                     fmt(r["time ms"]), fmt(r["propagation ms"]), fmt(r["error"]), fmt(r["settings error"]),
                      fmt(r["settings ratio"]), time_err, fmt(r["time ratio"])]
             out.append("| " + " | ".join(str(c).replace("|", "\\|") for c in cells) + " |")
         out.append("")
@@ -165,7 +175,7 @@ def to_markdown(agg):
 
 def compact_markdown(agg):
     """One table per scene with every metric of metrics_present side by side, configurations
-    named by their series label (baseline rows first, then by total time): for each metric the
+    named by their series label (baseline rows first, then by time): for each metric the
     error, the ratio at equal settings, the baseline's error at equal time and the ratio."""
     from .tables import fmt
     metrics = metrics_present(agg)
@@ -176,7 +186,7 @@ def compact_markdown(agg):
     first = _ordered(next(iter(tables.values())))
     out = []
     for scene, g in first.groupby("scene", sort=False):
-        head = ["configuration", "res", "frame ms", "propagation ms"]
+        head = ["configuration", "res", "time ms", "propagation ms"]
         for m in tables:
             short = f"{S.metric_name(m).upper()} {m.split('.')[1].split('_vs_')[1]}"
             head += [short, "ratio, equal settings", "baseline, equal time", "ratio, equal time"]
@@ -185,7 +195,7 @@ def compact_markdown(agg):
         out.append("| " + " | ".join(head) + " |")
         out.append("|---|" + "---:|" * (len(head) - 1))
         for idx, r in g.iterrows():
-            cells = [r["name"], fmt(r["resolution"]), fmt(r["total ms"]), fmt(r["propagation ms"])]
+            cells = [r["name"], fmt(r["resolution"]), fmt(r["time ms"]), fmt(r["propagation ms"])]
             for t in tables.values():
                 q = t.loc[idx]
                 cells += [fmt(q["error"]), fmt(q["settings ratio"]), q["time status"] or fmt(q["time error"]),
@@ -201,7 +211,7 @@ def _title(metric):
 
 
 def _ordered(t):
-    return t.sort_values(["scene", "baseline", "total ms"], ascending=[True, False, True], kind="mergesort")
+    return t.sort_values(["scene", "baseline", "time ms"], ascending=[True, False, True], kind="mergesort")
 
 
 def _comparisons(agg):
@@ -220,7 +230,7 @@ def to_html(agg):
     for m, t in _comparisons(agg):
         out.append(f"<h3>{html.escape(_title(m))}</h3>")
         out.append('<table class="equal_time"><thead><tr><th>scene</th><th>configuration</th><th>baseline</th>'
-                   "<th>res</th><th>total ms</th><th>propagation ms</th><th>error</th>"
+                   "<th>res</th><th>time ms</th><th>propagation ms</th><th>error</th>"
                    "<th>baseline error, equal settings</th><th>ratio</th>"
                    "<th>baseline error, equal time</th><th>ratio</th></tr></thead><tbody>")
         for _, r in t.iterrows():
@@ -232,7 +242,7 @@ def to_html(agg):
             time_err = (f"<td class='num'>{html.escape(r['time status'])}</td>" if r["time status"]
                         else num(r["time error"]))
             out.append("<tr>" + f"<td>{html.escape(r['scene'])}</td><td>{html.escape(r['config_name'])}</td>"
-                       f"<td>{'yes' if r['baseline'] else ''}</td>" + num(r["resolution"]) + num(r["total ms"])
+                       f"<td>{'yes' if r['baseline'] else ''}</td>" + num(r["resolution"]) + num(r["time ms"])
                        + num(r["propagation ms"]) + num(r["error"]) + num(r["settings error"])
                        + num(sr, not math.isnan(sr) and sr < 1) + time_err
                        + num(tr, not math.isnan(tr) and tr < 1) + "</tr>")

@@ -2,7 +2,8 @@
 
 A sweep over `[indirect] method` (LPV and the many-light methods of seed 001) gets a section of
 its own: every configuration on one speed/accuracy plot, coloured by method (LPV's variants by
-their strategies), and a table with each configuration's total time, error, the ratio of its
+their strategies), and a table with each configuration's time (the report's speed axis: by
+default the method's own stages, summary.with_speed), error, the ratio of its
 error to the LPV baseline's at equal time (equal_time.py: interpolated between the two baseline
 points around its time, never extrapolated) and what the method did (VPLs, gathered pairs, the
 share of the light its clamp removed; summary.csv's method.* columns).
@@ -48,7 +49,8 @@ def by_method(agg):
 
 
 def table(agg, metric):
-    """One row per configuration, fastest first: configuration, method, series, total ms, error,
+    """One row per configuration, fastest first: configuration, method, series, time ms (the speed
+    axis's), error,
     equal-time error ratio against the LPV baseline (with why it is missing), and the figures;
     with several scenes a first column names each row's scene (the rows sorted by it first)."""
     compared = ET.compare(agg, metric).set_index("config_id") if metric in agg.columns else None
@@ -57,14 +59,14 @@ def table(agg, metric):
     baselines = {}
     if compared is not None:
         for scene, g in compared[compared["baseline"]].groupby("scene"):
-            baselines[str(scene)] = (g["total ms"].min(), g["total ms"].max(), g["error"].min(), g["error"].max())
+            baselines[str(scene)] = (g["time ms"].min(), g["time ms"].max(), g["error"].min(), g["error"].max())
     methods = methods_of(agg)
     rows = []
     for idx, r in agg.iterrows():
         cid = str(r["config_id"])
         row = {"configuration": str(r["config_name"]), "method": methods.loc[idx],
                "series": str(r.get(ET.SERIES_COL, "")),
-               "total ms": float(r.get(ET.TIME_COL, math.nan)),
+               "time ms": float(r.get(S.speed_col(agg), math.nan)),
                "error": float(r.get(metric, math.nan)) if metric in agg.columns else math.nan,
                "equal-time ratio": math.nan, "why no ratio": ""}
         if compared is not None and cid in compared.index:
@@ -80,9 +82,9 @@ def table(agg, metric):
     # Several scenes (a report of several sweeps): a column naming each row's, sorted by it first.
     if ET.SCENE_COL in agg.columns and agg[ET.SCENE_COL].nunique() > 1:
         t.insert(0, "scene", [os.path.basename(str(v)) for v in agg[ET.SCENE_COL]])
-        return t.sort_values(["scene", "total ms", "configuration"], na_position="last",
+        return t.sort_values(["scene", "time ms", "configuration"], na_position="last",
                              kind="mergesort").reset_index(drop=True)
-    return t.sort_values(["total ms", "configuration"], na_position="last", kind="mergesort").reset_index(drop=True)
+    return t.sort_values(["time ms", "configuration"], na_position="last", kind="mergesort").reset_index(drop=True)
 
 
 def _beyond(row, baseline):
@@ -91,7 +93,7 @@ def _beyond(row, baseline):
     if baseline is None or not math.isfinite(row["error"]):
         return ET.OUT_OF_RANGE
     fastest, slowest, best, worst = baseline
-    faster = row["total ms"] < fastest
+    faster = row["time ms"] < fastest
     side = "faster than the fastest" if faster else "slower than the slowest"
     if row["error"] < best:
         verdict = "more accurate than every"
@@ -109,14 +111,15 @@ def _cell(value, fmt="{:.4g}"):
 
 
 def _formatted(t):
-    formats = {"total ms": "{:.1f}", "error": "{:.4g}", "equal-time ratio": "{:.3f}"}
+    formats = {"time ms": "{:.1f}", "error": "{:.4g}", "equal-time ratio": "{:.3f}"}
     formats.update({name: fmt for _, name, fmt in FIGURES})
     return [[_cell(r[c], formats.get(c, "{:.4g}")) for c in t.columns] for _, r in t.iterrows()]
 
 
 def to_markdown(agg, metric):
     t = table(agg, metric)
-    out = [f"Methods: {metric} (equal-time ratio: error / LPV baseline's error at the same total time)", "",
+    out = [f"Methods: {metric} (time: {S.speed_words(agg)}; equal-time ratio: error / LPV baseline's "
+           "error at the same time)", "",
            "| " + " | ".join(t.columns) + " |", "|" + "---|" * len(t.columns)]
     out += ["| " + " | ".join(cells) + " |" for cells in _formatted(t)]
     return "\n".join(out) + "\n"
@@ -144,7 +147,8 @@ sections.register(sections.Section(
     title="Methods", applies=has_methods, order=10, parts=[sections.Part(
         note="Every indirect-light method of the sweep on one speed/accuracy plot (coloured by method; "
              "LPV by its strategies), and each configuration's error against the LPV baseline series at "
-             "equal total time (ratio below 1, bold: the method beats spending that time on LPV). Each "
+             "equal time (ratio below 1, bold: the method beats spending that time on LPV; the time is the "
+             "report's speed axis, named on the plot). Each "
              "method's images are under <i>Images per configuration</i>: the reference, the result and the "
              "error map side by side.",
         plot=_plot, html=to_html, markdown=to_markdown,

@@ -58,7 +58,7 @@ def table(agg, metric):
             return float(r[col]) if col in agg.columns and pd.notna(r.get(col)) else math.nan
         rows.append({"configuration": str(r["config_name"]), "scene": scenes.loc[idx],
                      "drawing": drawings.loc[idx], "particles": number(ALIVE_COL),
-                     "triangles": number(TRIANGLES_COL), "frame ms": number(ET.TIME_COL),
+                     "triangles": number(TRIANGLES_COL), "frame ms": number(S.TIME_COL),
                      "error": number(metric)})
     t = pd.DataFrame(rows, columns=["configuration", "scene", "drawing", "particles", "triangles",
                                     "frame ms", "error"])
@@ -124,7 +124,7 @@ def plot(agg, path, metric):
 def has_resolution_sweep(agg):
     """Light-field runs at more than one resolution."""
     return (has_particles(agg) and RESOLUTION_COL in agg.columns
-            and resolution_table(agg, ET.TIME_COL)["texels"].nunique() > 1)
+            and resolution_table(agg, S.TIME_COL)["texels"].nunique() > 1)
 
 
 def _text(agg, col, default):
@@ -149,7 +149,7 @@ def resolution_table(agg, metric):
         views = f"{azimuths.loc[idx].split('.')[0]} x {elevations.loc[idx].split('.')[0]}"
         rows.append({"configuration": str(r["config_name"]), "views": views, "blending": blending.loc[idx],
                      "texels": number(RESOLUTION_COL), "particles": number(ALIVE_COL),
-                     "frame ms": number(ET.TIME_COL), "error": number(metric)})
+                     "frame ms": number(S.TIME_COL), "error": number(metric)})
     t = pd.DataFrame(rows, columns=["configuration", "views", "blending", "texels", "particles", "frame ms",
                                     "error"])
     count = t["views"].map(lambda v: tuple(int(x) if x.isdigit() else 0 for x in v.split(" x ")))

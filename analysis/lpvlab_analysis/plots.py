@@ -16,7 +16,6 @@ from . import pareto  # noqa: E402
 from . import summary as S  # noqa: E402
 from . import thesis_tables as T  # noqa: E402
 
-TIME_COL = S.TIME_COL
 
 
 def _save(fig, path):
@@ -34,11 +33,13 @@ def _pname(col):
     return col[len("param."):] if col.startswith("param.") else col
 
 
-def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
-    """Median total frame time (by the clocks that timed it: S.timed_on) vs an image metric, one colour per variant; the
-    Pareto front (fast and accurate; for PSNR/SSIM 'accurate' = high) is
-    drawn as a step line and its points are ringed. Infinite metric values
-    (PSNR of identical images) are drawn at the top edge with a marker."""
+def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=None):
+    """The speed axis's median time (summary.with_speed: by default the indirect method's own
+    stages; by the clocks that timed it, S.timed_on) vs an image metric, one colour per variant;
+    the Pareto front (fast and accurate; for PSNR/SSIM 'accurate' = high) is drawn as a step line
+    and its points are ringed. Infinite metric values (PSNR of identical images) are drawn at the
+    top edge with a marker. `time_col`: another time column instead."""
+    time_col = time_col or S.speed_col(agg)
     if metric not in agg.columns or time_col not in agg.columns:
         return None
     t = agg[time_col].astype(float).values
@@ -67,7 +68,10 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=TIME_COL):
     if np.isinf(e[ok]).any():
         ax.axhline(top, color="0.7", lw=0.8)
         ax.text(ax.get_xlim()[0], top, " inf", va="bottom", fontsize=7, color="0.4")
-    ax.set_xlabel(f"frame time (ms, median), {S.timed_on(agg)}")
+    if time_col == S.speed_col(agg):
+        ax.set_xlabel(f"{S.speed_words(agg)}: ms, median; {S.timed_on(agg, S.speed_stage(agg))}", fontsize=8)
+    else:
+        ax.set_xlabel(f"{time_col} (ms, median)", fontsize=8)
     ax.set_ylabel(metric[len("metric."):] + (" (higher is better)" if hib else " (lower is better)"))
     ax.set_title("Speed vs accuracy")
     ax.grid(alpha=0.3)

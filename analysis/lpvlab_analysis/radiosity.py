@@ -19,6 +19,7 @@ from . import equal_time as ET  # noqa: E402
 from . import methods  # noqa: E402
 from . import plots  # noqa: E402
 from . import sections  # noqa: E402
+from . import summary as S  # noqa: E402
 from . import tables  # noqa: E402
 
 SOLUTION_COL = "method.solution_ms.total"
@@ -32,7 +33,7 @@ COLUMNS = [("method.patches", "patches", "{:.0f}"),
            ("method.solution_ms.solve", "solve ms", "{:.0f}"),
            ("method.solution_ms.refine", "refine ms", "{:.0f}"),
            (SOLUTION_COL, "solution ms", "{:.0f}"),
-           (ET.TIME_COL, "frame ms", "{:.1f}")]
+           (S.TIME_COL, "frame ms", "{:.1f}")]
 
 
 def is_radiosity(agg):
@@ -107,14 +108,17 @@ def plot(agg, path, metric):
             if isinstance(p[3], float) and math.isfinite(p[3]):
                 ax.annotate(f"{p[3]:.0f}", (p[1], p[2]), fontsize=6, xytext=(3, 3), textcoords="offset points")
     lpv = agg[methods.methods_of(agg) == "lpv"]
-    if ET.TIME_COL in lpv.columns and len(lpv):
+    # LPV solves every frame: its time to solution is a frame's, on the report's speed axis (by
+    # default its own stages, as radiosity's solution time is; summary.with_speed).
+    lpv_time = S.speed_col(agg)
+    if lpv_time in lpv.columns and len(lpv):
         for scene in sorted(set(scenes.loc[lpv.index])):
-            g = lpv[scenes.loc[lpv.index] == scene].sort_values(ET.TIME_COL)
-            t, e = g[ET.TIME_COL].astype(float), g[metric].astype(float)
+            g = lpv[scenes.loc[lpv.index] == scene].sort_values(lpv_time)
+            t, e = g[lpv_time].astype(float), g[metric].astype(float)
             ok = t.notna() & e.notna()
             if ok.any():
                 ax.plot(t[ok], e[ok], "k--", marker=markers[scene], lw=0.8, ms=5, zorder=2,
-                        label="LPV (frame time: solves every frame)" + (f" ({scene})" if several else ""))
+                        label=f"LPV (solves every frame: {S.speed_words(lpv)})" + (f" ({scene})" if several else ""))
     ax.set_xscale("log")
     ax.set_xlabel("time to solution (ms; radiosity: method.solution_ms.total)")
     ax.set_ylabel(metric[len("metric."):] + " (lower is better)")

@@ -263,10 +263,12 @@ def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
 
 
 def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
-                 gpu_table=G.DEFAULT_TABLE):
+                 gpu_table=G.DEFAULT_TABLE, speed=S.DEFAULT_SPEED):
     """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
     may be a list of sweep directories: one report of them all, which needs out_dir. The inputs
-    (the summaries, the GPU table) are read before anything is written."""
+    (the summaries, the GPU table) are read before anything is written. `speed`: the time of the
+    speed axis, plots, Pareto fronts, equal-time comparisons and tables (S.SPEEDS: "method", the
+    indirect method's own stages, or "total", the whole frame)."""
     sweep_dirs = list(sweep_dir) if isinstance(sweep_dir, (list, tuple)) else [sweep_dir]
     if len(sweep_dirs) > 1 and not out_dir:
         raise S.SummaryError("a report of several sweeps needs --out (where to write it)")
@@ -277,7 +279,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     out_dir = out_dir or os.path.join(sweep_dir, "report")
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise S.SummaryError(f"--out {out_dir}: is a file, not a directory")
-    agg = S.aggregate(df)
+    agg = S.aggregate(df, speed)
     # A metric the user named must exist (before anything is written); the default may not.
     metric = S.resolve_metric(agg, metric or S.DEFAULT_METRIC, required=metric is not None)
     img_dir = os.path.join(out_dir, "img")
@@ -291,7 +293,10 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
             f"{len(agg)} configurations, {len(df)} runs; generated "
             f"{datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}. "
             f"Times are medians over repeats, each stage by its own clock: {html.escape(S.timed_on(agg))} "
-            f"(per stage in summary.csv's <code>time.&lt;stage&gt;.clock</code>).</p>"]
+            f"(per stage in summary.csv's <code>time.&lt;stage&gt;.clock</code>). Speed axis, Pareto fronts, "
+            f"equal-time comparisons and table order: {html.escape(S.speed_words(agg))} "
+            f"(<code>lpvlab report --time {'total' if speed == 'method' else 'method'}</code> for "
+            f"{'the whole frame' if speed == 'method' else 'the method alone'}).</p>"]
     if swept:
         body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
     # Runs whose results are suspect (all black, a solve that did not converge): named at the top,
@@ -311,7 +316,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         body.append("<p class='note'>Circled points and dashed line: Pareto front (no other configuration is both "
                     f"faster and better in <code>{html.escape(metric)}</code>).</p>")
     else:
-        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs {S.TIME_COL} "
+        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs {S.speed_col(agg)} "
                     "(no reference comparison in this sweep?).</p>")
 
     # The sections of the kinds of run this sweep holds (sections.py: methods, radiosity,
@@ -326,7 +331,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
                               part.markdown(agg, metric))
 
     body.append("<h2>Ablation table</h2>")
-    body.append("<p class='note'>Sorted by median total frame time; best value of each metric in bold.</p>")
+    body.append(f"<p class='note'>Sorted by median time, {html.escape(S.speed_words(agg))}; best value of each "
+                "metric in bold.</p>")
     body.append(tables.to_html(agg))
     fsutil.write_text(os.path.join(out_dir, "ablation.md"), tables.to_markdown(agg))
     body.append("<p class='note'>Markdown version: <a href='ablation.md'>ablation.md</a></p>")
@@ -335,7 +341,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     if ET.is_baseline(agg).any():
         body.append("<p class='note'>Against the baseline series (<code>series = \"baseline\"</code>: the standard "
                     "method at several grid resolutions): its error at the same grid resolution (equal settings) "
-                    "and at the same total frame time, interpolated log-log between the two baseline points "
+                    f"and at the same time ({html.escape(S.speed_words(agg))}; only against baseline points timed "
+                    "by the same clock), interpolated log-log between the two baseline points "
                     "bracketing it (equal time; never extrapolated: outside the series it is "
                     f"&ldquo;{ET.OUT_OF_RANGE}&rdquo;). Ratio = error / baseline error; below 1 (bold) the "
                     "configuration wins.</p>")
@@ -422,7 +429,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
 
 
 def main(argv=None):
-    """CLI: report.py DIR [DIR...] [--metric NAME] [--out DIR/report] [--no-exr]. Exit 2 on
+    """CLI: report.py DIR [DIR...] [--metric NAME] [--out DIR/report] [--no-exr] [--time method|total]. Exit 2 on
     unusable input."""
     import argparse
     ap = argparse.ArgumentParser(description="Build an HTML report (plots, ablation table, images) of an lpvlab sweep.")
@@ -432,9 +439,13 @@ def main(argv=None):
     ap.add_argument("--metric", default=None, help=f"error metric column (default {S.DEFAULT_METRIC})")
     ap.add_argument("--out", default=None, help="output directory (default DIR/report)")
     ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")
+    ap.add_argument("--time", default=S.DEFAULT_SPEED, choices=S.SPEEDS,
+                    help="the speed axis: method = the indirect method's own stages (default; what differs "
+                         "between configurations), total = the whole frame with the raster passes and direct light")
     a = ap.parse_args(argv)
     try:
-        idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr)
+        idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr,
+                           speed=a.time)
     except (S.SummaryError, G.GpuTableError) as exc:
         print(f"lpvlab: error: {exc}", file=sys.stderr)
         return 2

@@ -41,15 +41,36 @@ def clock_col(stage):
 
 TIME_COL = time_col("total")
 
+# The speed axis (`lpvlab report --time`): the time that the speed/accuracy plot, its Pareto
+# front, the equal-time comparisons and the tables use, per configuration in column SPEED_COL
+# (aggregate adds it). "method": the indirect method's own stages (time.method.ms: LPV's clear,
+# occlusion, injection, propagation and indirect; another method's stages), what differs between
+# a sweep's configurations; "total": the whole frame (time.total.ms), the raster passes and direct
+# light, which every configuration pays alike, included. A run that did not record which stages
+# are the method's (summaries before 2026-11) falls back to its total, and SPEED_SOURCE_COL says so.
+SPEEDS = ("method", "total")
+DEFAULT_SPEED = "method"
+SPEED_COL = "speed.ms"
+SPEED_CLOCK_COL = "speed.clock"
+SPEED_SOURCE_COL = "speed.source"
+_SPEED_WORDS = {time_col("method"): "the indirect method's own stages (time.method.ms)",
+                time_col("total"): "the whole frame (time.total.ms)"}
+
 
 def is_time_col(col):
     return col.startswith("time.") and col.endswith(".ms")
 
 
+# Sums over stages that summary.csv has beside the stages (time.method.ms, time.shared.ms).
+STAGE_SUMS = ("method", "shared")
+
+
 def stages(df):
     """The stages of the summary's time.<stage>.ms columns, in their column order: the order the
-    runs ran them (lpvlab summary merges the manifests' timing.stage_order), "total" last."""
-    return [c[len("time."):-len(".ms")] for c in df.columns if is_time_col(c)]
+    runs ran them (lpvlab summary merges the manifests' timing.stage_order), "total" last; the
+    partial sums (STAGE_SUMS) left out."""
+    return [c[len("time."):-len(".ms")] for c in df.columns
+            if is_time_col(c) and c[len("time."):-len(".ms")] not in STAGE_SUMS]
 
 
 def _unique(df, col):
@@ -196,12 +217,70 @@ def config_label(row, swept):
     return ", ".join(parts) if parts else str(row.get("config_name", row.get("config_id")))
 
 
-def aggregate(df):
+def with_speed(agg, speed=DEFAULT_SPEED):
+    """agg with the speed axis's time per configuration (SPEED_COL), its clock (SPEED_CLOCK_COL)
+    and the column it came from (SPEED_SOURCE_COL): `speed` "method" or "total" (SPEEDS)."""
+    if speed not in SPEEDS:
+        raise SummaryError(f"--time {speed}: expected one of {', '.join(SPEEDS)}")
+    out = agg.copy()
+    times, clocks, sources = [], [], []
+    for _, r in out.iterrows():
+        source = TIME_COL
+        method = r.get(time_col("method"), math.nan)
+        if speed == "method" and isinstance(method, (int, float)) and not math.isnan(method):
+            source = time_col("method")
+        stage = source[len("time."):-len(".ms")]
+        times.append(float(r.get(source, math.nan)) if source in out.columns else math.nan)
+        clock = r.get(clock_col(stage), "")
+        clocks.append(clock if isinstance(clock, str) else "")
+        sources.append(source)
+    out[SPEED_COL] = pd.Series(times, index=out.index, dtype=float)
+    out[SPEED_CLOCK_COL] = pd.Series(clocks, index=out.index, dtype=object)
+    out[SPEED_SOURCE_COL] = pd.Series(sources, index=out.index, dtype=object)
+    return out
+
+
+def speed_col(df):
+    """The speed axis's column: SPEED_COL where aggregate() added it, else time.total.ms (a frame
+    made by hand, or by a caller that did not aggregate)."""
+    return SPEED_COL if SPEED_COL in df.columns else TIME_COL
+
+
+def speed_clock_col(df):
+    """The column naming how the speed axis's times were taken (gl_timer_query, cpu_wall_clock,
+    mixed), or None when the frame does not say."""
+    if SPEED_CLOCK_COL in df.columns:
+        return SPEED_CLOCK_COL
+    return clock_col("total") if clock_col("total") in df.columns else None
+
+
+def speed_words(df):
+    """What the speed axis measures, in words for a label: the method's stages, the whole frame,
+    or the method's stages with the total where a run did not record them."""
+    if SPEED_SOURCE_COL not in df.columns or not len(df):
+        return _SPEED_WORDS[TIME_COL]
+    sources = set(df[SPEED_SOURCE_COL])
+    if sources == {time_col("method")}:
+        return _SPEED_WORDS[time_col("method")]
+    if sources == {TIME_COL}:
+        return _SPEED_WORDS[TIME_COL]
+    return (_SPEED_WORDS[time_col("method")] + "; the whole frame (time.total.ms) for the runs "
+            "that did not record the method's stages")
+
+
+def speed_stage(df):
+    """The stage whose clock the speed axis's times carry ("method" or "total"), for timed_on."""
+    if SPEED_SOURCE_COL in df.columns and len(df) and set(df[SPEED_SOURCE_COL]) == {time_col("method")}:
+        return "method"
+    return "total"
+
+
+def aggregate(df, speed=DEFAULT_SPEED):
     """One row per configuration (ordered by first appearance).
 
     Columns: config_id, config_name, run_dir, repeats, param.*, median
-    time.*.ms/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant' and
-    'label'. Timings are medians over repeats (NaN repeats ignored); metric.*,
+    time.*.ms/wall_ms.*, memory_bytes, cells, metric.*, plus 'variant', 'label' and the speed
+    axis's time (with_speed: SPEED_COL, by `speed`). Timings are medians over repeats (NaN repeats ignored); metric.*,
     temporal.* and method.* figures their means (a sequence's frames differ; a
     static run's repeats share the run's); other columns take the first
     non-missing value of the configuration.
@@ -231,7 +310,7 @@ def aggregate(df):
     categorical = [c for c in swept if not is_numeric_param(agg, c)]
     agg["variant"] = [variant_label(row, categorical) for _, row in agg.iterrows()]
     agg["label"] = [config_label(row, swept) for _, row in agg.iterrows()]
-    return agg
+    return with_speed(agg, speed)
 
 
 def one_at_a_time(agg, param):

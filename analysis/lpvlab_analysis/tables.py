@@ -1,9 +1,10 @@
 """Ablation table: one row per configuration, best value of each metric in bold.
 
-Rows are sorted by median total frame time (fastest first, ties by name), so
-the table reads as "what each extra millisecond buys". Columns: config_name,
-variant, median total ms, median propagation ms, memory MB, then every
-metric.* column present. For each metric column the best value (lowest
+Rows are sorted by the speed axis's median time (fastest first, ties by name;
+summary.with_speed: by default the indirect method's own stages), so the table
+reads as "what each extra millisecond buys". Columns: config_name, variant,
+median method ms (where the summary has it), median total ms, median
+propagation ms, memory MB, then every metric.* column present. For each metric column the best value (lowest
 error, or highest PSNR/SSIM) is bold; ties are all bold.
 """
 import html
@@ -16,18 +17,21 @@ from . import summary as S
 
 def ablation_table(agg):
     """Return (DataFrame of raw values, list of metric column names) in display order."""
-    t = pd.DataFrame({
-        "config_name": agg["config_name"].astype(str),
-        "variant": agg["variant"].astype(str),
-        "total ms": agg.get(S.TIME_COL, pd.Series([math.nan] * len(agg))).astype(float).values,
-        "propagation ms": agg.get(S.time_col("propagation"), pd.Series([math.nan] * len(agg))).astype(float).values,
-        "memory MB": (agg["memory_bytes"].astype(float) / 2**20).values if "memory_bytes" in agg else math.nan,
-    })
+    def column(col):
+        return agg.get(col, pd.Series([math.nan] * len(agg))).astype(float).values
+
+    t = pd.DataFrame({"config_name": agg["config_name"].astype(str), "variant": agg["variant"].astype(str)})
+    if S.time_col("method") in agg.columns:
+        t["method ms"] = column(S.time_col("method"))
+    t["total ms"] = column(S.TIME_COL)
+    t["propagation ms"] = column(S.time_col("propagation"))
+    t["memory MB"] = (agg["memory_bytes"].astype(float) / 2**20).values if "memory_bytes" in agg else math.nan
     metrics = S.metric_columns(agg)
     for m in metrics:
         t[m] = agg[m].astype(float).values
-    t = t.sort_values(["total ms", "config_name"], na_position="last", kind="mergesort").reset_index(drop=True)
-    return t, metrics
+    t["_speed"] = column(S.speed_col(agg))
+    t = t.sort_values(["_speed", "config_name"], na_position="last", kind="mergesort").reset_index(drop=True)
+    return t.drop(columns="_speed"), metrics
 
 
 def best_mask(values, higher_better):

@@ -123,6 +123,33 @@ class CompareTest(unittest.TestCase):
         self.assertAlmostEqual(gb["settings ratio"], 0.5)
         self.assertAlmostEqual(gb["time error"], math.sqrt(0.8 * 0.4), places=12)
 
+    def test_baselines_per_clock(self):
+        # A configuration timed on the CPU backend is never placed on a baseline timed by GL timer
+        # queries: with no baseline on its clock it gets no equal-time value.
+        agg = frame(BASE + [("gv", "gv", 32, 8.0, 0.1), ("cpu", "x", 32, 8.0, 0.1)])
+        agg["time.total.clock"] = ["gl_timer_query"] * 4 + ["cpu_wall_clock"]
+        t = ET.compare(agg, RMSE)
+        self.assertEqual(row(t, "gv")["time status"], "")
+        self.assertEqual(row(t, "cpu")["time status"], "no baseline")
+        self.assertTrue(math.isnan(row(t, "cpu")["time ratio"]))
+
+    def test_equal_time_on_the_methods_own_time(self):
+        # The speed axis (summary.with_speed) is the method's time by default: the same
+        # configurations, whose totals share 100 ms of raster passes, are compared at their own
+        # stages' times. gv's method time 8 ms lies between the baseline's 4 and 16 ms; its total
+        # (108 ms) between 104 and 116 gives another baseline error.
+        rows = BASE + [("gv", "gv", 32, 8.0, 0.1)]
+        agg = frame(rows)
+        agg["time.method.ms"] = agg["time.total.ms"]
+        agg["time.total.ms"] = agg["time.total.ms"] + 100.0
+        method = ET.compare(S.with_speed(agg), RMSE)
+        self.assertAlmostEqual(row(method, "gv")["time error"], 0.2 / math.sqrt(2.0), places=12)
+        self.assertEqual(row(method, "gv")["time ms"], 8.0)
+        total = ET.compare(S.with_speed(agg, "total"), RMSE)
+        self.assertEqual(row(total, "gv")["time ms"], 108.0)
+        w = (math.log(108.0) - math.log(104.0)) / (math.log(116.0) - math.log(104.0))
+        self.assertAlmostEqual(row(total, "gv")["time error"], 0.2 * 0.5 ** w, places=12)
+
     def test_no_baseline(self):
         agg = frame([("a", "x", 32, 1.0, 0.1)])
         t = ET.compare(agg, RMSE)

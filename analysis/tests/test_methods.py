@@ -66,7 +66,7 @@ class MethodsTest(unittest.TestCase):
         self.assertEqual(t.loc["ir64", "VPLs"], 50)
         self.assertAlmostEqual(t.loc["ir64", "clamp removed"], 0.1)
         self.assertTrue(math.isnan(t.loc["rsm", "VPLs"]))
-        self.assertEqual(list(M.table(frame(), RMSE)["total ms"]), [10.0, 20.0, 20.0, 40.0, 80.0])
+        self.assertEqual(list(M.table(frame(), RMSE)["time ms"]), [10.0, 20.0, 20.0, 40.0, 80.0])
 
     def test_several_scenes_get_a_scene_column_and_baselines_of_their_own(self):
         a, b = frame(), frame()

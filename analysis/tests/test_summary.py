@@ -62,6 +62,42 @@ class SummaryTest(unittest.TestCase):
             f.write("a,A,0,a,1,2,3,6\n")
         self.assertEqual(S.stages(S.load_summary(p)), ["rsm", "vpls", "indirect", "total"])
 
+    def test_the_sums_of_stages_are_no_stages(self):
+        # summary.csv has time.method.ms and time.shared.ms beside the stages: sums, which a plot
+        # stacking the stages must not add again.
+        p = os.path.join(self.dir, "sums.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,time.gbuffer.ms,time.propagation.ms,"
+                    "time.method.ms,time.shared.ms,time.total.ms\n")
+            f.write("a,A,0,a,4,1,1,4,5\n")
+        self.assertEqual(S.stages(S.load_summary(p)), ["gbuffer", "propagation", "total"])
+
+    def test_the_speed_axis_is_the_methods_time_unless_total_is_asked(self):
+        # Two configurations whose totals are dominated by the same raster passes: by the method's
+        # time b is 4x dearer, by the total 1.3x. A run that recorded no method stages (c, a
+        # summary from before) falls back to its total, and the words say so.
+        p = os.path.join(self.dir, "speed.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,time.method.ms,time.method.clock,"
+                    "time.total.ms,time.total.clock\n")
+            f.write("a,A,0,a,1,gl_timer_query,10,gl_timer_query\n"
+                    "b,B,0,b,4,gl_timer_query,13,gl_timer_query\n")
+        agg = S.aggregate(S.load_summary(p))
+        self.assertEqual(list(agg[S.SPEED_COL]), [1.0, 4.0])
+        self.assertEqual(list(agg[S.SPEED_CLOCK_COL]), ["gl_timer_query"] * 2)
+        self.assertIn("method's own stages", S.speed_words(agg))
+        self.assertEqual(S.speed_stage(agg), "method")
+        total = S.aggregate(S.load_summary(p), "total")
+        self.assertEqual(list(total[S.SPEED_COL]), [10.0, 13.0])
+        self.assertIn("whole frame", S.speed_words(total))
+        with open(p, "a") as f:
+            f.write("c,C,0,c,,,20,gl_timer_query\n")
+        mixed = S.aggregate(S.load_summary(p))
+        self.assertEqual(list(mixed[S.SPEED_COL]), [1.0, 4.0, 20.0])
+        self.assertIn("did not record", S.speed_words(mixed))
+        with self.assertRaises(S.SummaryError):
+            S.aggregate(S.load_summary(p), "frames")
+
     def test_memory_groups_are_numeric(self):
         p = os.path.join(self.dir, "m.csv")
         with open(p, "w") as f:

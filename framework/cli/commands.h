@@ -26,6 +26,7 @@ struct Options {
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
   SlurmResources slurm;                   // sweep --emit slurm: what each job asks for
   std::string metric;                     // report: the error metric of the speed/accuracy plot
+  std::string reportTime;                 // report: the speed axis, "method" or "total" ("": method)
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
   std::string reportOut;                  // report: where it goes ("": DIR/report)
   std::vector<std::string> images;        // compare: TEST and REFERENCE (run directories or EXRs)

@@ -2,6 +2,7 @@
 // each stage was timed.
 
 #include "framework/cli/commands.h"
+#include "framework/pipeline/pipeline.h"
 
 namespace lpvlab::cli {
 
@@ -24,7 +25,7 @@ std::string clocksLine(const std::map<std::string, std::string>& clock, const st
                        const std::string& cpu) {
   std::string gl, host;
   for (const auto& [stage, name] : clock) {
-    if (stage == "total") continue;
+    if (stage == kMethodTime || stage == kSharedTime || stage == kTotalTime) continue;  // sums
     std::string& list = name == "cpu_wall_clock" ? host : gl;
     list += (list.empty() ? "" : ", ") + stage;
   }

@@ -119,6 +119,11 @@ Command addReport(CLI::App& app, Options& o) {
   report->add_option(
       "--metric", o.metric,
       "Error metric of the speed/accuracy plot (default: indirect_vs_indirect1 rmse)");
+  report
+      ->add_option("--time", o.reportTime,
+                   "The speed axis: method = the indirect method's own stages (default: what differs "
+                   "between configurations), total = the whole frame with the raster passes")
+      ->check(CLI::IsMember({"method", "total"}));
   return {report, [&o] { return cli::reportCommand(o); }};
 }
 

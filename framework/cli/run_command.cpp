@@ -87,7 +87,11 @@ int runCommand(const Options& options) {
                           manifest["host"].value("cpu", std::string("?")))
             << "\n";
   std::cout << "stage         median ms  (q1-q3)          clock\n";
-  for (const auto& [stage, summary] : timing["stage_ms"].items()) {
+  // In the order the frame ran them, then the sums: the method's stages, the shared ones, all.
+  for (const auto& entry : timing["stage_order"]) {
+    const std::string stage = entry.get<std::string>();
+    if (!timing["stage_ms"].contains(stage)) continue;
+    const nlohmann::json& summary = timing["stage_ms"][stage];
     std::ostringstream spread;
     spread << std::fixed << std::setprecision(3) << "(" << summary["q1"].get<double>() << "-"
            << summary["q3"].get<double>() << ")";

@@ -56,6 +56,9 @@ FrameTimes frameTimesOf(const nlohmann::json& record) {
     for (const auto& stage : *order) times.order.push_back(stage.get<std::string>());
   for (const auto& [stage, ms] : record.at("wall_ms").items())
     times.wallMs[stage] = ms.get<double>();
+  // Records written before they named the method's stages (2026-11) have no method_stages.
+  if (const auto* method = findPath(record, "method_stages"); method && method->is_array())
+    for (const auto& stage : *method) times.methodStages.insert(stage.get<std::string>());
   return times;
 }
 
@@ -183,6 +186,7 @@ nlohmann::json frameRecord(const Experiment& experiment, Pipeline& pipeline, int
                            {"stage_ms", times.stageMs},
                            {"stage_clock", times.clock},
                            {"stage_order", times.order},
+                           {"method_stages", times.methodStages},
                            {"wall_ms", times.wallMs},
                            {"png_exposure_stops", exposure}};
   for (std::size_t s = 0; s < aliveParticles.size(); ++s)

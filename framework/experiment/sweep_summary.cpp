@@ -11,6 +11,7 @@
 #include "framework/core/error.h"
 #include "framework/experiment/json_path.h"
 #include "framework/io/atomic_file.h"
+#include "framework/pipeline/pipeline.h"
 
 namespace lpvlab {
 
@@ -129,7 +130,7 @@ Manifests readManifests(const fs::path& root, const SweepIndex& index, SummaryRe
     nlohmann::json manifest = readJson(sub / "manifest.json");
     // A row is a timed frame: a manifest without timing samples has none to give.
     const auto* samples = stageSamples(manifest);
-    const auto* total = samples ? findPath(*samples, "total") : nullptr;
+    const auto* total = samples ? findPath(*samples, kTotalTime) : nullptr;
     if (!total || !total->is_array() || total->empty()) {
       result.dropped.push_back({id, "its manifest.json has no timing.samples.stage_ms.total"});
       continue;
@@ -239,9 +240,13 @@ Columns columnsOf(const SweepIndex& index, const Manifests& manifests, const fs:
     if (const auto* keys = findPath(m, "summary_keys"); keys && keys->is_array())
       mergeSummaryKeys(*keys, index.swept.size(), columns.params);
   }
-  // The frame's total after every stage of every run.
-  std::stable_partition(columns.stages.begin(), columns.stages.end(),
-                        [](const std::string& stage) { return stage != "total"; });
+  // The sums after every stage of every run: the method's stages, the shared ones, the total.
+  for (const char* sum : {kMethodTime, kSharedTime, kTotalTime}) {
+    const auto at = std::find(columns.stages.begin(), columns.stages.end(), sum);
+    if (at == columns.stages.end()) continue;
+    columns.stages.erase(at);
+    columns.stages.push_back(sum);
+  }
   return columns;
 }
 
@@ -363,7 +368,7 @@ SummaryResult summarise(const std::string& dir, std::string& reading) {
   writeLine(csv, headerOf(columns));
   for (const auto& [id, m] : manifests) {
     reading = (root / id / "manifest.json").string();
-    const std::size_t repeats = findPath(*stageSamples(m), "total")->size();
+    const std::size_t repeats = findPath(*stageSamples(m), kTotalTime)->size();
     const std::string cells = cellsOf(m);
     for (std::size_t r = 0; r < repeats; ++r, ++result.rows)
       writeLine(csv, rowOf(columns, id, index.names.at(id), m, r, cells));

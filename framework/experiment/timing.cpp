@@ -1,6 +1,8 @@
 #include "framework/experiment/timing.h"
 
 #include <algorithm>
+#include <functional>
+#include <set>
 
 namespace lpvlab {
 
@@ -14,25 +16,63 @@ nlohmann::json TimingReport::toJson() const {
   return out;
 }
 
+namespace {
+
+// The clock of a sum of stages: theirs when all agree, else "mixed".
+std::string clockOfSum(const std::map<std::string, std::string>& clock,
+                       const std::function<bool(const std::string&)>& counted) {
+  std::string sum;
+  for (const auto& [stage, name] : clock)
+    if (counted(stage)) sum = sum.empty() || sum == name ? name : "mixed";
+  return sum;
+}
+
+}  // namespace
+
 TimingReport timingReport(const std::vector<FrameTimes>& frames, int warmup) {
   std::map<std::string, std::vector<double>> byStage, wall;
   TimingReport report;
+  // The method's and the shared stages' sums need every frame to say which stages are the
+  // method's (frame records written before they did, 2026-11, do not).
+  const bool split = !frames.empty() && std::all_of(frames.begin(), frames.end(), [](const FrameTimes& t) {
+    return !t.methodStages.empty();
+  });
+  std::set<std::string> methodStages;
   for (const FrameTimes& times : frames) {
-    double stageTotal = 0.0, wallTotal = 0.0;
-    for (const auto& [stage, ms] : times.stageMs) byStage[stage].push_back(ms), stageTotal += ms;
-    for (const auto& [stage, ms] : times.wallMs) wall[stage].push_back(ms), wallTotal += ms;
-    byStage["total"].push_back(stageTotal);
-    wall["total"].push_back(wallTotal);
+    std::map<std::string, double> stageSums, wallSums;  // total, method, shared
+    for (const auto& [stage, ms] : times.stageMs) {
+      byStage[stage].push_back(ms);
+      stageSums[kTotalTime] += ms;
+      stageSums[times.methodStages.count(stage) ? kMethodTime : kSharedTime] += ms;
+    }
+    for (const auto& [stage, ms] : times.wallMs) {
+      wall[stage].push_back(ms);
+      wallSums[kTotalTime] += ms;
+      wallSums[times.methodStages.count(stage) ? kMethodTime : kSharedTime] += ms;
+    }
+    for (const char* sum : {kMethodTime, kSharedTime, kTotalTime}) {
+      if (!split && sum != std::string(kTotalTime)) continue;
+      byStage[sum].push_back(stageSums[sum]);
+      wall[sum].push_back(wallSums[sum]);
+    }
     for (const auto& [stage, clock] : times.clock) report.clock[stage] = clock;
+    methodStages.insert(times.methodStages.begin(), times.methodStages.end());
     for (const std::string& stage : times.order)
       if (std::find(report.order.begin(), report.order.end(), stage) == report.order.end())
         report.order.push_back(stage);
   }
-  if (!frames.empty()) report.order.push_back("total");
-  // The total adds the stages' times; it is one clock's only when every stage's is.
-  std::string total;
-  for (const auto& [stage, clock] : report.clock) total = total.empty() || total == clock ? clock : "mixed";
-  if (!total.empty()) report.clock["total"] = total;
+  // Each sum's clock: its stages' when all agree, else "mixed".
+  std::map<std::string, std::string> sumClocks = {
+      {kTotalTime, clockOfSum(report.clock, [](const std::string&) { return true; })}};
+  if (split) {
+    sumClocks[kMethodTime] = clockOfSum(report.clock, [&](const std::string& s) { return methodStages.count(s) > 0; });
+    sumClocks[kSharedTime] = clockOfSum(report.clock, [&](const std::string& s) { return !methodStages.count(s); });
+  }
+  for (const char* sum : {kMethodTime, kSharedTime, kTotalTime}) {
+    if (!byStage.count(sum)) continue;
+    report.order.push_back(sum);
+    if (!sumClocks[sum].empty()) report.clock[sum] = sumClocks[sum];
+  }
   report.warmupFrames = warmup;
   report.repeats = int(frames.size());
   for (auto& [stage, samples] : byStage) report.stageMs[stage] = summarize(samples);

@@ -17,13 +17,17 @@ namespace lpvlab {
 struct TimingReport {
   int warmupFrames = 0;
   int repeats = 0;
-  // Per stage, plus "total" (their sum): stageMs by each stage's clock, wallMs by the steady one.
+  // Per stage, plus the sums "method" (the indirect method's stages), "shared" (the raster passes
+  // and direct light, which every configuration pays alike) and "total" (every stage):
+  // stageMs by each stage's clock, wallMs by the steady one. "method" and "shared" only where
+  // every frame says which stages are the method's (FrameTimes::methodStages).
   std::map<std::string, Summary> stageMs, wallMs;
   std::map<std::string, std::vector<double>> stageSamples, wallSamples;  // per repeat, in order
-  // Per stage: kGlTimerQuery or kCpuWallClock (pipeline.h); "total": theirs when all agree, else
-  // "mixed".
+  // Per stage: kGlTimerQuery or kCpuWallClock (pipeline.h); a sum: its stages' when all agree,
+  // else "mixed".
   std::map<std::string, std::string> clock;
-  // The stages in the order the frames ran them (the maps above are sorted by name), then "total".
+  // The stages in the order the frames ran them (the maps above are sorted by name), then the
+  // sums "method", "shared" and "total".
   std::vector<std::string> order;
   nlohmann::json toJson() const;
 };

@@ -43,6 +43,11 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
       sceneBounds_(scene.bounds()),
       method_(std::move(method)),
       consumed_(method_->consumes()) {
+  for (const std::string& name : method_->stageNames())
+    if (name == kMethodTime || name == kSharedTime || name == kTotalTime ||
+        std::find(stageNames().begin(), stageNames().end(), name) != stageNames().end())
+      throw Error("indirect method \"" + method_->name() + "\": its stage \"" + name +
+                  "\" has the name of the pipeline's own stage or of a sum of stages");
   const bool emissive = std::any_of(scene.materials.begin(), scene.materials.end(),
                                     [](const Material& m) { return m.emits(); });
   if (scene.lights.empty() && !(emissive && renders(raster::kEmission.name)))
@@ -146,6 +151,7 @@ FrameTimes Pipeline::renderFrame() {
                     .host = hostReadback_,
                     .indirect = indirectImage_,
                     .stage = [&](const std::string& name, const std::function<void()>& work) {
+                      times.methodStages.insert(name);
                       stage(name, times, work);
                     }};
   method_->render(frame);

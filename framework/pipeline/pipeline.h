@@ -67,7 +67,15 @@ struct FrameTimes {
   std::map<std::string, std::string> clock;    // kGlTimerQuery or kCpuWallClock, per stage
   std::map<std::string, double> wallMs;        // steady clock, each stage ended by glFinish
   std::vector<std::string> order;              // the stages in the order they ran
+  // Of them, the indirect method's (the rest are the raster passes and direct light, which every
+  // configuration of a sweep pays alike).
+  std::set<std::string> methodStages;
 };
+
+// Names a timing report gives its sums over stages (timing.h): no stage may be named so.
+inline constexpr const char* kMethodTime = "method";  // the indirect method's stages
+inline constexpr const char* kSharedTime = "shared";  // the raster passes and direct light
+inline constexpr const char* kTotalTime = "total";    // every stage
 
 class Pipeline {
 public:

@@ -149,7 +149,8 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
                              "timed_on.cpu", "memory_bytes",
                              "memory_bytes.light_grid", "memory_bytes.light_maps", "cells"})
     EXPECT_NE(std::find(before.header.begin(), before.header.end(), column), before.header.end()) << column;
-  // The stages' columns in the order the pipeline ran them (not alphabetical), the total last.
+  // The stages' columns in the order the pipeline ran them (not alphabetical), then the sums: the
+  // method's stages, the shared ones (raster passes, direct light), the total.
   std::vector<std::string> timed;
   for (const std::string& column : before.header)
     if (column.rfind("time.", 0) == 0 && column.size() > 8 && column.substr(column.size() - 3) == ".ms")
@@ -157,10 +158,21 @@ TEST_F(SweepCli, RunsEveryConfigurationWritesSummaryAndRedoesOnlyTheInterruptedO
   EXPECT_EQ(timed, (std::vector<std::string>{"time.shadow_maps.ms", "time.rsm.ms", "time.gbuffer.ms",
                                              "time.direct.ms", "time.clear.ms", "time.occlusion.ms",
                                              "time.injection.ms", "time.propagation.ms",
-                                             "time.indirect.ms", "time.total.ms"}));
+                                             "time.indirect.ms", "time.method.ms",
+                                             "time.shared.ms", "time.total.ms"}));
   std::set<std::string> iterations;
   for (const auto& row : before.rows) {
     iterations.insert(row.at("param.propagation.iterations"));
+    // The method's time is its five stages' sum, the shared time the pipeline's four, and the
+    // two make the total (each rounded by the CSV's number format: to 1e-9 ms).
+    double method = 0.0, shared = 0.0;
+    for (const char* stage : {"clear", "occlusion", "injection", "propagation", "indirect"})
+      method += std::stod(row.at(std::string("time.") + stage + ".ms"));
+    for (const char* stage : {"shadow_maps", "rsm", "gbuffer", "direct"})
+      shared += std::stod(row.at(std::string("time.") + stage + ".ms"));
+    EXPECT_NEAR(std::stod(row.at("time.method.ms")), method, 1e-9 * (1 + method));
+    EXPECT_NEAR(std::stod(row.at("time.shared.ms")), shared, 1e-9 * (1 + shared));
+    EXPECT_NEAR(std::stod(row.at("time.total.ms")), method + shared, 1e-9 * (1 + method + shared));
     EXPECT_EQ(row.at("param.grid.resolution"), "4");
     EXPECT_EQ(row.at("cells").empty(), false);
     EXPECT_FALSE(row.at("time.total.ms").empty());
