@@ -31,8 +31,10 @@ struct Options {
   std::string reportOut;                  // report: where it goes ("": DIR/report)
   std::vector<std::string> images;        // compare: TEST and REFERENCE (run directories or EXRs)
   std::vector<std::string> aovs;          // compare: the AOVs (default direct, indirect)
+  std::vector<std::string> thresholds;    // compare: NAME=VALUE bounds; exit 3 beyond one
   bool json = false;                      // compare, list: JSON instead of the text
   bool force = false;                     // run, fit, sweep: replace a finished run, fit or other sweep in --out
+  std::string shell;                      // completion: the shell whose script to print
 };
 
 // "compute: BACKEND; on the CPU: [direct, ]TABLES" from a Pipeline::computeReport().

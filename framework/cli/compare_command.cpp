@@ -1,11 +1,19 @@
-// `lpvlab compare TEST REFERENCE [--aov NAME]... [--json]`: how far one rendering is from another
-// of the same configuration (relative_difference.h), per AOV, over the pixels with a surface in
-// the reference (its depth > 0). TEST and REFERENCE are run directories (their images.exr) or
-// EXR files. scripts/gpu-check.sh compares the GL kernels' images with the CPU kernels' by it.
+// `lpvlab compare TEST REFERENCE [--aov NAME]... [--json] [--threshold NAME=VALUE]... [--out DIR]`:
+// how far one rendering is from another, per AOV, over the pixels with a surface in the
+// reference (its depth > 0). TEST and REFERENCE are run directories (their images.exr) or EXR
+// files: two runs of one configuration (scripts/gpu-check.sh compares the GL kernels' images with
+// the CPU kernels' by it), or a run and its reference (the reference cache's images.exr, whose
+// indirect1 layer a run's indirect approximates: --aov indirect=indirect1).
+//
+// Per AOV: the relative difference (relative_difference.h: mean, 99th percentile, maximum), the
+// image metrics (metrics.h: RMSE, relative MSE, FLIP, SSIM, block nRMSE) and the ratio of the
+// means. --threshold gates scripts: exit code 3 when a figure exceeds its bound.
 
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -13,11 +21,15 @@
 #include "framework/core/error.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/io/image.h"
+#include "framework/metrics/metrics.h"
 #include "framework/metrics/relative_difference.h"
 
 namespace lpvlab::cli {
 
 namespace {
+
+// Exit code of a comparison with a figure beyond its --threshold (1 and 2 are errors).
+constexpr int kOverThreshold = 3;
 
 std::string exrOf(const std::string& path) {
   const std::filesystem::path p(path);
@@ -31,41 +43,156 @@ std::string exrOf(const std::string& path) {
   return path;
 }
 
+// The figures --threshold can bound, each an error (larger is worse): name -> (group, key) in
+// the JSON of an AOV.
+const std::map<std::string, std::pair<std::string, std::string>>& thresholdFigures() {
+  static const std::map<std::string, std::pair<std::string, std::string>> figures = {
+      {"mean", {"relative_difference", "mean"}}, {"p99", {"relative_difference", "p99"}},
+      {"max", {"relative_difference", "max"}},   {"rmse", {"metrics", "rmse"}},
+      {"rel_mse", {"metrics", "rel_mse"}},       {"flip", {"metrics", "flip"}},
+      {"block_nrmse", {"metrics", "block_nrmse"}}};
+  return figures;
+}
+
+// --threshold NAME=VALUE, checked before any image is read.
+std::map<std::string, double> thresholds(const std::vector<std::string>& given) {
+  std::map<std::string, double> out;
+  for (const std::string& t : given) {
+    const auto equals = t.find('=');
+    const std::string name = t.substr(0, equals);
+    std::string names;
+    for (const auto& [figure, _] : thresholdFigures()) names += (names.empty() ? "" : ", ") + figure;
+    if (equals == std::string::npos || !thresholdFigures().count(name))
+      throw Error("--threshold '" + echoed(t) + "': expected NAME=VALUE with NAME one of " + names);
+    try {
+      std::size_t used = 0;
+      const double value = std::stod(t.substr(equals + 1), &used);
+      if (used != t.size() - equals - 1 || !(value >= 0.0)) throw std::invalid_argument("");
+      out[name] = value;
+    } catch (const std::exception&) {
+      throw Error("--threshold '" + echoed(t) + "': the bound must be a number >= 0");
+    }
+  }
+  return out;
+}
+
+// "aov" or "test_aov=reference_aov": the test's layer and the reference's it is compared with.
+std::pair<std::string, std::string> layers(const std::string& aov) {
+  const auto equals = aov.find('=');
+  if (equals == std::string::npos) return {aov, aov};
+  return {aov.substr(0, equals), aov.substr(equals + 1)};
+}
+
+double meanOf(const Image& image, const Image* mask) {
+  double sum = 0.0;
+  long long n = 0;
+  for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p) {
+    if (mask && mask->pixels[p] == 0.0f) continue;
+    for (int c = 0; c < 3; ++c) sum += image.pixels[p * 3 + c];
+    n += 3;
+  }
+  return n ? sum / double(n) : 0.0;
+}
+
+// The signed (t - r) and relative (|t - r| / (|r| + epsilon), relative_difference.h's epsilon)
+// differences of one AOV, 0 at background pixels.
+std::vector<NamedImage> differenceLayers(const std::string& name, const Image& t, const Image& r,
+                                         const Image* mask, double epsilon) {
+  Image signedDifference(r.width, r.height, 3), relative(r.width, r.height, 3);
+  for (std::size_t p = 0; p < std::size_t(r.width) * r.height; ++p) {
+    if (mask && mask->pixels[p] == 0.0f) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(t.pixels[p * 3 + c]) - r.pixels[p * 3 + c];
+      signedDifference.pixels[p * 3 + c] = float(d);
+      relative.pixels[p * 3 + c] =
+          float(epsilon > 0.0 ? std::abs(d) / (std::abs(r.pixels[p * 3 + c]) + epsilon) : (d != 0.0 ? 1.0 : 0.0));
+    }
+  }
+  return {{name + "_signed", std::move(signedDifference)}, {name + "_relative", std::move(relative)}};
+}
+
+void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs) {
+  std::cout << "compare " << out["test"].get<std::string>() << " against "
+            << out["reference"].get<std::string>() << " over " << out["mask"].get<std::string>()
+            << "\n  relative difference |t - r| / (|r| + eps), eps = 1e-3 mean |r|: mean, p99, max;"
+            << " metrics.h's RMSE, relative MSE, FLIP, SSIM, block nRMSE; mean t / mean r\n"
+            << std::left << std::setw(12) << "aov" << std::right;
+  for (const char* h : {"mean", "p99", "max", "values", "rmse", "rel_mse", "flip", "ssim", "block_nrmse", "mean_ratio"})
+    std::cout << std::setw(12) << h;
+  std::cout << "\n";
+  for (const std::string& aov : aovs) {
+    const nlohmann::json& a = out["aovs"][aov];
+    std::cout << std::left << std::setw(12) << aov << std::right << std::scientific << std::setprecision(3);
+    for (const char* k : {"mean", "p99", "max"}) std::cout << std::setw(12) << a["relative_difference"][k].get<double>();
+    std::cout << std::setw(12) << a["relative_difference"]["values"].get<long long>();
+    for (const char* k : {"rmse", "rel_mse", "flip", "ssim", "block_nrmse"}) {
+      const nlohmann::json& v = a["metrics"][k];
+      if (v.is_string()) std::cout << std::setw(12) << v.get<std::string>();
+      else std::cout << std::setw(12) << v.get<double>();
+    }
+    std::cout << std::setw(12) << a["mean_ratio"].get<double>() << "\n";
+  }
+}
+
 }  // namespace
 
 int compareCommand(const Options& options) {
+  const std::map<std::string, double> bounds = thresholds(options.thresholds);
   const std::string testPath = exrOf(options.images.at(0)), referencePath = exrOf(options.images.at(1));
   const std::vector<NamedImage> test = readExr(testPath), reference = readExr(referencePath);
   std::vector<std::string> aovs = options.aovs;
   if (aovs.empty()) aovs = {"direct", "indirect"};
   const Image* depth = findAovOrNull(reference, "depth");
   const Image mask = depth ? coverageMask(*depth) : Image();
+  const Image* covered = depth ? &mask : nullptr;
   nlohmann::json out = {{"test", testPath}, {"reference", referencePath},
                         {"mask", depth ? "the reference's depth > 0" : "every pixel"},
                         {"aovs", nlohmann::json::object()}};
+  std::vector<NamedImage> differences;
   for (const std::string& aov : aovs) {
-    const Image* t = findAovOrNull(test, aov);
-    const Image* r = findAovOrNull(reference, aov);
-    if (!t || !r) throw Error((t ? referencePath : testPath) + ": no AOV '" + aov + "'");
-    out["aovs"][aov] = relativeDifference(*t, *r, depth ? &mask : nullptr).toJson();
+    const auto [mine, theirs] = layers(aov);
+    const Image* t = findAovOrNull(test, mine);
+    const Image* r = findAovOrNull(reference, theirs);
+    if (!t) throw Error(testPath + ": no AOV '" + mine + "'");
+    if (!r) throw Error(referencePath + ": no AOV '" + theirs + "'");
+    const RelativeDifference relative = relativeDifference(*t, *r, covered);
+    const double meanReference = meanOf(*r, covered);
+    out["aovs"][aov] = {{"relative_difference", relative.toJson()},
+                        {"metrics", computeMetrics(*t, *r, covered).toJson()},
+                        {"mean_ratio", meanReference != 0.0 ? meanOf(*t, covered) / meanReference : 0.0}};
+    if (!options.out.empty()) {
+      std::vector<NamedImage> layer = differenceLayers(mine, *t, *r, covered, relative.epsilon);
+      differences.insert(differences.end(), layer.begin(), layer.end());
+    }
   }
+  if (!options.out.empty()) {
+    std::filesystem::create_directories(options.out);
+    const std::string path = (std::filesystem::path(options.out) / "difference.exr").string();
+    writeExr(path, differences, {{"lpvlab:test", testPath}, {"lpvlab:reference", referencePath}});
+    out["difference_exr"] = path;
+  }
+  // Every figure beyond its bound, named (an infinite block nRMSE, written "inf", exceeds any).
+  nlohmann::json exceeded = nlohmann::json::array();
+  for (const auto& [name, bound] : bounds)
+    for (const std::string& aov : aovs) {
+      const auto& [group, key] = thresholdFigures().at(name);
+      const nlohmann::json& value = out["aovs"][aov][group][key];
+      const double v = value.is_string() ? std::numeric_limits<double>::infinity() : value.get<double>();
+      if (!(v <= bound)) exceeded.push_back({{"aov", aov}, {"figure", name}, {"value", v}, {"bound", bound}});
+    }
+  if (!bounds.empty()) out["thresholds_exceeded"] = exceeded;
   if (options.json) {
     std::cout << out.dump(2) << "\n";
-    return 0;
+  } else {
+    printTable(out, aovs);
+    if (!options.out.empty())
+      std::cout << "wrote " << out["difference_exr"].get<std::string>()
+                << " (per AOV <aov>_signed: t - r; <aov>_relative: |t - r| / (|r| + eps))\n";
   }
-  std::cout << "compare " << testPath << " against " << referencePath
-            << ": relative difference |t - r| / (|r| + eps), eps = 1e-3 mean |r|, over "
-            << out["mask"].get<std::string>() << "\n"
-            << std::left << std::setw(12) << "aov" << std::right << std::setw(12) << "mean"
-            << std::setw(12) << "p99" << std::setw(12) << "max" << std::setw(12) << "values" << "\n";
-  for (const std::string& aov : aovs) {
-    const nlohmann::json& d = out["aovs"][aov];
-    std::cout << std::left << std::setw(12) << aov << std::right << std::scientific
-              << std::setprecision(3) << std::setw(12) << d["mean"].get<double>() << std::setw(12)
-              << d["p99"].get<double>() << std::setw(12) << d["max"].get<double>()
-              << std::setw(12) << d["values"].get<long long>() << "\n";
-  }
-  return 0;
+  for (const nlohmann::json& e : exceeded)
+    std::cerr << "lpvlab: compare: " << e["aov"].get<std::string>() << " " << e["figure"].get<std::string>()
+              << " " << e["value"].get<double>() << " exceeds --threshold " << e["bound"].get<double>() << "\n";
+  return exceeded.empty() ? 0 : kOverThreshold;
 }
 
 }  // namespace lpvlab::cli

@@ -1,6 +1,7 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
 // `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
-// `lpvlab report DIR`, `lpvlab fit FILE`, `lpvlab compare TEST REFERENCE`.
+// `lpvlab report DIR`, `lpvlab fit FILE`, `lpvlab compare TEST REFERENCE`,
+// `lpvlab completion bash`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1; a usage error (an unknown
 // command or option, a missing argument) is one such line too, with exit code 2.
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/completion.h"
 #include "framework/core/error.h"
 #include "framework/io/provenance.h"
 
@@ -145,13 +147,21 @@ Command addFit(CLI::App& app, Options& o) {
 Command addCompare(CLI::App& app, Options& o) {
   CLI::App* compare = app.add_subcommand(
       "compare",
-      "How far one run's images are from another's: per AOV the mean, 99th percentile "
-      "and maximum relative difference over the covered pixels");
+      "How far one run's images are from another's (or from a reference's): per AOV the "
+      "relative difference (mean, 99th percentile, maximum), RMSE, relative MSE, FLIP, SSIM, "
+      "block nRMSE and the ratio of the means over the covered pixels");
   compare->add_option("images", o.images, "TEST and REFERENCE: run directories or EXR files")
       ->required()
       ->expected(2);
-  compare->add_option("--aov", o.aovs, "An AOV to compare (repeatable; default direct, indirect)");
+  compare->add_option("--aov", o.aovs,
+                      "An AOV to compare, or TEST_AOV=REFERENCE_AOV (e.g. indirect=indirect1 against "
+                      "a reference); repeatable; default direct, indirect");
   compare->add_flag("--json", o.json, "Print JSON instead of the table");
+  compare->add_option("--threshold", o.thresholds,
+                      "NAME=VALUE: exit 3 when an AOV's figure exceeds VALUE (mean, p99, max, rmse, "
+                      "rel_mse, flip, block_nrmse); repeatable");
+  compare->add_option("--out", o.out,
+                      "Also write DIR/difference.exr: per AOV the signed and the relative difference");
   return {compare, [&o] { return cli::compareCommand(o); }};
 }
 
@@ -169,6 +179,18 @@ Command addInfo(CLI::App& app, Options& o) {
   info->add_option("scene", o.experiment, "A scene file, shared:<path> or builtin:cornell_box")
       ->required();
   return {info, [&o] { return cli::infoCommand(o); }};
+}
+
+// `lpvlab completion bash`: the completion script of the commands above (completion.h).
+Command addCompletion(CLI::App& app, Options& o) {
+  CLI::App* completion = app.add_subcommand(
+      "completion", "Print a bash completion script of lpvlab's commands and options "
+                    "(source <(lpvlab completion bash))");
+  completion->add_option("shell", o.shell, "The shell (bash)")->required()->check(CLI::IsMember({"bash"}));
+  return {completion, [&app] {
+            std::cout << cli::bashCompletion(app);
+            return 0;
+          }};
 }
 
 // A usage error as one line with the prefix every error has: --help and --version (CLI11's exit
@@ -207,7 +229,8 @@ int main(int argc, char** argv) {
       lpvlab::addReference(app, options), lpvlab::addSweep(app, options),
       lpvlab::addSummary(app, options),   lpvlab::addReport(app, options),
       lpvlab::addFit(app, options),       lpvlab::addCompare(app, options),
-      lpvlab::addList(app, options),      lpvlab::addInfo(app, options)};
+      lpvlab::addList(app, options),      lpvlab::addInfo(app, options),
+      lpvlab::addCompletion(app, options)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

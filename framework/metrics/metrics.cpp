@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "framework/metrics/block_error.h"
 #include "framework/metrics/display.h"
 #include "framework/metrics/flip.h"
 #include "framework/metrics/mask.h"
@@ -38,6 +39,7 @@ nlohmann::json MetricSet::toJson() const {
           {"psnr", std::isinf(psnr) ? nlohmann::json("inf") : nlohmann::json(psnr)},
           {"ssim", ssim},
           {"flip", flip},
+          {"block_nrmse", std::isinf(blockNrmse) ? nlohmann::json("inf") : nlohmann::json(blockNrmse)},
           {"pixels", pixels}};
 }
 
@@ -51,6 +53,7 @@ MetricSet computeMetrics(const Image& test, const Image& reference, const Image*
   metrics.mae = errors.mae;
   metrics.rmse = errors.rmse;
   metrics.relMse = errors.relMse;
+  metrics.blockNrmse = blockNrmse(test, reference, covered);
   metrics.psnr = errors.psnr;
   metrics.ssim = meanSsim(display.test, display.reference, covered);
   const Plane flip = ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree);

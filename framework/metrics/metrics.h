@@ -8,6 +8,8 @@
 //   ssim       mean SSIM (Wang et al. 2004) over covered pixels, on display luminance (ssim.h)
 //   flip       mean LDR-FLIP (Andersson et al. 2020) over covered pixels, of the display images
 //              (flip.h)
+//   blockNrmse the RMSE of 8 x 8-pixel block means over the reference's mean (block_error.h):
+//              the low frequencies' error, blind to pixel noise of zero mean
 //
 // SSIM and FLIP are defined for displayed (LDR) images, so they see the images as shown on a
 // screen: scaled by 2^exposureStops and clamped to [0, 1] per channel ("the display images",
@@ -55,10 +57,11 @@ struct MetricSet {
   double psnr = 0.0;        // dB; +inf for identical images
   double ssim = 0.0;        // in [-1, 1], 1 for identical images
   double flip = 0.0;        // in [0, 1], 0 for identical images
+  double blockNrmse = 0.0;  // unitless; +inf when the reference is black and the test is not
   std::int64_t pixels = 0;  // covered pixels
 
-  // {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "pixels"}. JSON has no infinity, so an
-  // infinite PSNR (identical images) is written as the string "inf".
+  // {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "block_nrmse", "pixels"}. JSON has no
+  // infinity, so an infinite PSNR (identical images) or block nRMSE is written as "inf".
   nlohmann::json toJson() const;
 };
 

@@ -11,6 +11,9 @@ exists.
    (docs/<page>.md#<anchor>) from the code, the docs or the README finds that section.
 4. Every registered strategy and method (`lpvlab list --json`) has its page,
    docs/variants/<name>.md: a variant is added with its files, its tests and its docs.
+5. The conventions a cited research tool keeps: LICENSE, CITATION.cff naming the version that
+   CMakeLists.txt builds (so a citation names what `lpvlab --version` prints), and CHANGELOG.md
+   with that version or an Unreleased section.
 
     code_shape_test.py [BUILD_DIR/lpvlab]
 """
@@ -194,10 +197,33 @@ def undocumented_variants(lpvlab):
             if not os.path.exists(os.path.join(SOURCE, "docs", "variants", name + ".md"))]
 
 
+def conventions():
+    out = []
+    version = re.search(r"project\(lpvlab VERSION ([\d.]+)", read("CMakeLists.txt")).group(1)
+    if not os.path.isfile(os.path.join(SOURCE, "LICENSE")):
+        out.append("no LICENSE")
+    if not os.path.isfile(os.path.join(SOURCE, "CITATION.cff")):
+        out.append("no CITATION.cff")
+    else:
+        citation = read("CITATION.cff")
+        for key in ("cff-version", "message", "title", "authors", "version", "license"):
+            if not re.search(rf"^{key}:", citation, re.M):
+                out.append(f"CITATION.cff: no {key}")
+        cited = re.search(r'^version:\s*"?([\w.]+)"?', citation, re.M)
+        if cited and cited.group(1) != version:
+            out.append(f"CITATION.cff: version {cited.group(1)}, but CMakeLists.txt builds {version}")
+    if not os.path.isfile(os.path.join(SOURCE, "CHANGELOG.md")):
+        out.append("no CHANGELOG.md")
+    elif not re.search(rf"^## (Unreleased|{re.escape(version)})\b", read("CHANGELOG.md"), re.M):
+        out.append(f"CHANGELOG.md: no section for {version} or Unreleased")
+    return out
+
+
 def main():
     failures = [("functions over %d lines" % MAX_FUNCTION_LINES, long_functions()),
                 ("include cycles among framework's units", [" <-> ".join(c) for c in include_cycles()]),
-                ("documentation naming what does not exist", broken_references())]
+                ("documentation naming what does not exist", broken_references()),
+                ("missing conventions (licence, citation, changelog)", conventions())]
     if len(sys.argv) > 1:
         failures.append(("strategies or methods without their page", undocumented_variants(sys.argv[1])))
     failed = False

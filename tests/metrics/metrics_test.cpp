@@ -146,7 +146,7 @@ TEST(Metrics, JsonWritesInfinitePsnrAsAString) {
   EXPECT_EQ(same["psnr"], "inf");
   EXPECT_EQ(same["mae"], 0.0);
   EXPECT_EQ(same["pixels"], 64);
-  for (const char* key : {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "pixels"})
+  for (const char* key : {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "block_nrmse", "pixels"})
     EXPECT_TRUE(same.contains(key)) << key;
 
   const MetricSet different = computeMetrics(plus(image, 0.1f), image);

@@ -1,0 +1,95 @@
+// `lpvlab compare` on images whose differences are known: a test 0.1 brighter than a reference of
+// 0.5 on every covered pixel (depth > 0; one background column left out) has RMSE 0.1, block
+// nRMSE 0.2, a ratio of means 1.2 and a relative difference 0.1 / (0.5 + 5e-4); --threshold gates
+// on them with exit code 3; --out writes the signed and relative differences; --aov A=B compares
+// a run's layer with a reference's of another name.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "executable_support.h"
+#include "framework/io/image.h"
+#include "io/temp_dir.h"
+
+namespace lpvlab {
+namespace {
+
+constexpr int kSize = 16;
+
+Image constant(float value, int channels = 3) { return Image(kSize, kSize, channels, value); }
+
+// The reference: indirect (and indirect1, as a reference cache has it) 0.5; depth 1, but 0 in
+// column 0 (background).
+void writeImages(const test::TempDir& dir) {
+  Image depth = constant(1.0f, 1);
+  for (int y = 0; y < kSize; ++y) depth.at(0, y, 0) = 0.0f;
+  writeExr(dir.file("reference.exr"),
+           {{"indirect", constant(0.5f)}, {"indirect1", constant(0.5f)}, {"depth", depth}});
+  Image brighter = constant(0.6f);
+  for (int y = 0; y < kSize; ++y)
+    for (int c = 0; c < 3; ++c) brighter.at(0, y, c) = 9.0f;  // on the background: not counted
+  writeExr(dir.file("test.exr"), {{"indirect", brighter}, {"depth", depth}});
+}
+
+TEST(CompareCommand, KnownDifferencesGiveTheirFigures) {
+  test::TempDir dir;
+  writeImages(dir);
+  const test::LpvlabResult r = test::runLpvlab("compare test.exr reference.exr --aov indirect --json",
+                                               dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json a = nlohmann::json::parse(r.out)["aovs"]["indirect"];
+  EXPECT_NEAR(a["metrics"]["rmse"].get<double>(), 0.1, 1e-6);
+  EXPECT_NEAR(a["metrics"]["block_nrmse"].get<double>(), 0.2, 1e-6);
+  EXPECT_NEAR(a["mean_ratio"].get<double>(), 1.2, 1e-6);
+  EXPECT_NEAR(a["relative_difference"]["mean"].get<double>(), 0.1 / 0.5005, 1e-6);
+  EXPECT_EQ(a["metrics"]["pixels"].get<int>(), kSize * (kSize - 1));
+  // The text table has the same figures, one row per AOV.
+  const test::LpvlabResult text =
+      test::runLpvlab("compare test.exr reference.exr --aov indirect", dir.path(), dir.path());
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("block_nrmse"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("2.000e-01"), std::string::npos) << text.out;
+}
+
+TEST(CompareCommand, ThresholdsGateWithExitCode3) {
+  test::TempDir dir;
+  writeImages(dir);
+  const auto compare = [&](const std::string& bounds) {
+    return test::runLpvlab("compare test.exr reference.exr --aov indirect " + bounds, dir.path(), dir.path());
+  };
+  EXPECT_EQ(compare("--threshold rmse=0.2 --threshold block_nrmse=0.25").exitCode, 0);
+  const test::LpvlabResult over = compare("--threshold rmse=0.2 --threshold block_nrmse=0.1");
+  EXPECT_EQ(over.exitCode, 3);
+  EXPECT_NE(over.err.find("indirect block_nrmse"), std::string::npos) << over.err;
+  EXPECT_EQ(over.err.find("rmse 0.1"), std::string::npos) << "rmse is within its bound: " << over.err;
+  // A figure compare does not have, or a bound that is no number: one error line, exit 1.
+  const test::LpvlabResult unknown = compare("--threshold speed=1");
+  EXPECT_EQ(unknown.exitCode, 1);
+  EXPECT_NE(unknown.err.find("block_nrmse"), std::string::npos) << unknown.err;
+  EXPECT_EQ(compare("--threshold rmse=-1").exitCode, 1);
+  EXPECT_EQ(compare("--threshold rmse=abc").exitCode, 1);
+}
+
+TEST(CompareCommand, OutWritesTheDifferencesAndLayersPairUp) {
+  test::TempDir dir;
+  writeImages(dir);
+  const test::LpvlabResult r = test::runLpvlab(
+      "compare test.exr reference.exr --aov indirect=indirect1 --out diff", dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::vector<NamedImage> layers = readExr(dir.file("diff/difference.exr"));
+  const Image* signedDifference = findAovOrNull(layers, "indirect_signed");
+  const Image* relative = findAovOrNull(layers, "indirect_relative");
+  ASSERT_TRUE(signedDifference && relative);
+  EXPECT_NEAR(signedDifference->at(5, 5, 1), 0.1f, 1e-6f);
+  EXPECT_EQ(signedDifference->at(0, 5, 1), 0.0f) << "background pixels are 0";
+  EXPECT_NEAR(relative->at(5, 5, 2), 0.1f / 0.5005f, 1e-6f);
+  // A layer the reference lacks is named.
+  const test::LpvlabResult missing =
+      test::runLpvlab("compare test.exr reference.exr --aov indirect=indirect2", dir.path(), dir.path());
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("no AOV 'indirect2'"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace lpvlab
