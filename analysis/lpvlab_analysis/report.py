@@ -45,7 +45,14 @@ img.plot{max-width:100%;border:1px solid #ddd;margin:4px}
 .trio{display:flex;gap:8px;flex-wrap:wrap}.trio figure{margin:0}
 .trio img{width:256px;image-rendering:pixelated;border:1px solid #ddd}
 figcaption{font-size:12px;color:#555}.note{font-size:12px;color:#666}
+.scroll{overflow-x:auto;max-width:100%}
 """
+
+
+def _scrolling_tables(body):
+    """Every table in a box of its own that scrolls sideways: a wide table (a column per metric)
+    never makes the page wider than the window."""
+    return body.replace("<table", "<div class='scroll'><table").replace("</table>", "</table></div>")
 
 
 def _log(msg):
@@ -421,7 +428,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         body.append("<div class='trio'>" + "".join(figs) + "</div>")
 
     page = ("<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>lpvlab sweep report</title>"
-            f"<style>{CSS}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
+            f"<style>{CSS}</style></head><body>\n" + _scrolling_tables("\n".join(body)) + "\n</body></html>\n")
     index = os.path.join(out_dir, "index.html")
     fsutil.write_text(index, page)
     _log(f"wrote {index}")

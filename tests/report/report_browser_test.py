@@ -107,6 +107,14 @@ class ReportInBrowser(unittest.TestCase):
             manifests += path.endswith("manifest.json")
         self.assertEqual(manifests, self.configurations)  # one per configuration
 
+    def test_the_page_does_not_overflow_1280_px(self):
+        # Wide tables (an ablation table has a column per metric) scroll inside their own box;
+        # the page itself never needs a horizontal scroll bar in a 1280 px window.
+        self.driver.set_window_size(1280, 1000)
+        page, window = self.driver.execute_script(
+            "return [document.documentElement.scrollWidth, document.documentElement.clientWidth];")
+        self.assertLessEqual(page, window, "the page is wider than the window")
+
     def test_console_shows_no_error(self):
         errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
         self.assertEqual(errors, [])
