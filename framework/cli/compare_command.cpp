@@ -14,6 +14,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -149,7 +150,11 @@ int compareCommand(const Options& options) {
                         {"mask", depth ? "the reference's depth > 0" : "every pixel"},
                         {"aovs", nlohmann::json::object()}};
   std::vector<NamedImage> differences;
+  std::set<std::string> written;  // the test layers --out names its difference layers after
   for (const std::string& aov : aovs) {
+    if (!options.out.empty() && !written.insert(layers(aov).first).second)
+      throw Error("--aov " + aov + ": another --aov compares '" + layers(aov).first +
+                  "' too, and --out would write its difference layers twice");
     const auto [mine, theirs] = layers(aov);
     const Image* t = findAovOrNull(test, mine);
     const Image* r = findAovOrNull(reference, theirs);
@@ -168,8 +173,12 @@ int compareCommand(const Options& options) {
   if (!options.out.empty()) {
     std::filesystem::create_directories(options.out);
     const std::string path = (std::filesystem::path(options.out) / "difference.exr").string();
+    // An earlier comparison's differences are replaced, and said to be.
+    const bool replaced = std::filesystem::exists(path);
     writeExr(path, differences, {{"lpvlab:test", testPath}, {"lpvlab:reference", referencePath}});
     out["difference_exr"] = path;
+    out["replaced_an_earlier_difference_exr"] = replaced;
+    if (replaced) std::cerr << "lpvlab: warning: " << path << ": replaced an earlier comparison's differences\n";
   }
   // Every figure beyond its bound, named (an infinite block nRMSE, written "inf", exceeds any).
   nlohmann::json exceeded = nlohmann::json::array();

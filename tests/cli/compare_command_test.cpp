@@ -4,6 +4,8 @@
 // on them with exit code 3; --out writes the signed and relative differences; --aov A=B compares
 // a run's layer with a reference's of another name.
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -84,6 +86,18 @@ TEST(CompareCommand, OutWritesTheDifferencesAndLayersPairUp) {
   EXPECT_NEAR(signedDifference->at(5, 5, 1), 0.1f, 1e-6f);
   EXPECT_EQ(signedDifference->at(0, 5, 1), 0.0f) << "background pixels are 0";
   EXPECT_NEAR(relative->at(5, 5, 2), 0.1f / 0.5005f, 1e-6f);
+  // Writing there again replaces the differences and says so; two comparisons of one test layer
+  // would write its layers twice, which is refused.
+  const test::LpvlabResult again = test::runLpvlab(
+      "compare test.exr reference.exr --aov indirect --out diff", dir.path(), dir.path());
+  EXPECT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.err.find("replaced an earlier"), std::string::npos) << again.err;
+  const test::LpvlabResult twice = test::runLpvlab(
+      "compare test.exr reference.exr --aov indirect --aov indirect=indirect1 --out diff2", dir.path(),
+      dir.path());
+  EXPECT_EQ(twice.exitCode, 1);
+  EXPECT_NE(twice.err.find("twice"), std::string::npos) << twice.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("diff2/difference.exr")));
   // A layer the reference lacks is named.
   const test::LpvlabResult missing =
       test::runLpvlab("compare test.exr reference.exr --aov indirect=indirect2", dir.path(), dir.path());
