@@ -103,10 +103,9 @@ std::vector<NamedImage> differenceLayers(const std::string& name, const Image& t
   for (std::size_t p = 0; p < std::size_t(r.width) * r.height; ++p) {
     if (mask && mask->pixels[p] == 0.0f) continue;
     for (int c = 0; c < 3; ++c) {
-      const double d = double(t.pixels[p * 3 + c]) - r.pixels[p * 3 + c];
-      signedDifference.pixels[p * 3 + c] = float(d);
+      signedDifference.pixels[p * 3 + c] = float(double(t.pixels[p * 3 + c]) - r.pixels[p * 3 + c]);
       relative.pixels[p * 3 + c] =
-          float(epsilon > 0.0 ? std::abs(d) / (std::abs(r.pixels[p * 3 + c]) + epsilon) : (d != 0.0 ? 1.0 : 0.0));
+          float(relativeDifferenceOf(t.pixels[p * 3 + c], r.pixels[p * 3 + c], epsilon));
     }
   }
   return {{name + "_signed", std::move(signedDifference)}, {name + "_relative", std::move(relative)}};

@@ -28,11 +28,8 @@ RelativeDifference relativeDifference(const Image& test, const Image& reference,
   for (std::size_t p = 0; p < pixels; ++p) {
     if (!covered.covers(p)) continue;
     for (int c = 0; c < 3; ++c) {
-      const double t = test.pixels[p * 3 + c], r = reference.pixels[p * 3 + c];
-      const double difference = std::abs(t - r);
       // All-black reference: epsilon is 0, and a difference counts as 1 (wholly different).
-      d.push_back(result.epsilon > 0.0 ? difference / (std::abs(r) + result.epsilon)
-                                       : (difference > 0.0 ? 1.0 : 0.0));
+      d.push_back(relativeDifferenceOf(test.pixels[p * 3 + c], reference.pixels[p * 3 + c], result.epsilon));
     }
   }
   double sum = 0.0;

@@ -27,6 +27,14 @@ struct RelativeDifference {
   nlohmann::json toJson() const;  // {"mean", "p99", "max", "epsilon", "values"}
 };
 
+// One value's relative difference |t - r| / (|r| + epsilon); with epsilon 0 (an all-black
+// reference) 1 where they differ, else 0.
+inline double relativeDifferenceOf(double t, double r, double epsilon) {
+  const double difference = t > r ? t - r : r - t;
+  if (epsilon > 0.0) return difference / ((r < 0.0 ? -r : r) + epsilon);
+  return difference > 0.0 ? 1.0 : 0.0;
+}
+
 // `test` against `reference` over the pixels `mask` covers (1-channel, 0 = background; none: all).
 // Throws an Error as computeMetrics does for mismatched sizes, non-RGB images or NaN/Inf values.
 RelativeDifference relativeDifference(const Image& test, const Image& reference,
