@@ -17,6 +17,7 @@ exists.
 
     code_shape_test.py [BUILD_DIR/lpvlab]
 """
+import functools
 import glob
 import json
 import os
@@ -133,6 +134,7 @@ def slug(heading):
     return text.replace(" ", "-")
 
 
+@functools.lru_cache(maxsize=None)
 def anchors(page):
     """A page's sections: its headings' anchors and its explicit <a id="..."> ones."""
     text = read(page)
