@@ -61,6 +61,8 @@ sh_order_2|-|-s grid.sh_order=2|
 sh_order_3|-|-s grid.sh_order=3|
 geometry_volume|-|-s occlusion.type="geometry_volume"|
 scatter|-|-s propagation.method="scatter"|
+tiled|-|-s propagation.gpu_kernel="tiled"|
+tiled_sh_order_3_gv|-|-s propagation.gpu_kernel="tiled" -s grid.sh_order=3 -s occlusion.type="geometry_volume"|
 glossy|-|-s rendering.type="glossy" -s rendering.specular_albedo=0.5|
 cascades|-|-s cascades.levels=3|
 sponza_sun|sponza_sun.toml||

@@ -18,24 +18,30 @@
 // it last; the GV is read back from GL), with iterations paired so the accumulated grid is updated
 // every other one.
 //
-// | parameter  | type   | default  | meaning                                                     |
-// |------------|--------|----------|-------------------------------------------------------------|
-// | iterations | int    | 32       | propagation steps; light travels one cell per step (0..4096):
-// | |            |        |          | a 32-cell grid needs about 32 for light to cross it | |
-// method     | string | "gather" | "gather" or "scatter": the same grid (up to float rounding),  |
-// |            |        |          | different memory traffic (scatter: atomics on GL, six passes |
-// |            |        |          | on the CPU) | | bounces    | bool   | false    | re-emit the
-// light the GV blocks with its surfaces' albedo     | |            |        |          | (multiple
-// bounces); needs [occlusion] "geometry_volume"       | | far_face_solid_angle  | real | 0.40066968
-// | Omega of the far face (solid_angle.h); a     | | side_face_solid_angle | real | 0.42343135 |
-// side face's; both for `lpvlab fit` to vary   | | damping    | real   | 1        | every step's
-// transfer times this (0..2): both solid angles    | |            |        |          | scaled,
-// since the transfer is linear in them                  |
+// Its kernels on GL come in two layouts of the same gather ([propagation] gpu_kernel): "simple"
+// (standard_gather.comp, one invocation per cell, every neighbour read from memory) and "tiled"
+// (standard_gather_tiled.comp: x-long tiles of a plane staged in shared memory, walking up z);
+// both call standard_transfer.glsl, so they give the same grid. The CPU backend ignores the key.
+//
+// | parameter             | type   | default    | meaning                                       |
+// |-----------------------|--------|------------|-----------------------------------------------|
+// | iterations            | int    | 32         | propagation steps (0..4096); light travels one |
+// |                       |        |            | cell per step: a 32-cell grid needs about 32  |
+// | method                | string | "gather"   | "gather" or "scatter": the same grid (up to   |
+// |                       |        |            | float rounding), other memory traffic         |
+// | gpu_kernel            | string | "simple"   | GL gather layout: "simple" or "tiled"         |
+// | bounces               | bool   | false      | re-emit the light the GV blocks with its      |
+// |                       |        |            | surfaces' albedo; needs a geometry volume     |
+// | far_face_solid_angle  | real   | 0.40066968 | Omega of the far face (solid_angle.h)         |
+// | side_face_solid_angle | real   | 0.42343135 | a side face's; both for `lpvlab fit` to vary  |
+// | damping               | real   | 1          | every step's transfer times this (0..2)       |
 
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "framework/core/error.h"
 #include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
@@ -45,6 +51,7 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/standard_cpu_frame.h"
+#include "variants/propagation/standard_tiled.h"
 #include "variants/propagation/standard_work.h"
 #include "variants/resources/geometry_volume.h"
 
@@ -60,12 +67,17 @@ public:
   explicit StandardPropagation(Params& params)
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
         scatter_(params.getChoice("method", "gather", {"gather", "scatter"}) == "scatter"),
+        tiled_(params.getChoice("gpu_kernel", "simple", {"simple", "tiled"}) == "tiled"),
         bounces_(params.get<bool>("bounces", false)),
         farFace_(params.get<double>("far_face_solid_angle", cubeFaceSolidAngles().farFace,
                                     {.min = 0.0, .max = 4.0 * M_PI})),
         sideFace_(params.get<double>("side_face_solid_angle", cubeFaceSolidAngles().sideFace,
                                      {.min = 0.0, .max = 4.0 * M_PI})),
-        damping_(params.get<double>("damping", 1.0, {.min = 0.0, .max = 2.0})) {}
+        damping_(params.get<double>("damping", 1.0, {.min = 0.0, .max = 2.0})) {
+    if (tiled_ && scatter_)
+      throw Error(params.where("gpu_kernel") +
+                  ": \"tiled\" is a layout of the gather; method = \"scatter\" has only the simple one");
+  }
 
   int maxShOrder() const override { return 3; }
   // Bounces re-emit what the GV blocks with its surfaces' albedo: they cannot run without both.
@@ -90,11 +102,19 @@ public:
       return;
     }
     const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-    program_ = setup.shaders.compute(
-        scatter_ ? "propagation/standard_scatter.comp" : "propagation/standard_gather.comp",
-        {SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
-         SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
-         SpecConstant::b(4, bounces_)});
+    std::vector<SpecConstant> spec{
+        SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
+        SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
+        SpecConstant::b(4, bounces_)};
+    if (tiled_) {
+      tile_ = standardTiledGroup(coefficients);
+      spec.push_back(SpecConstant::i(kernel::SPEC_TILE_X, tile_.x));
+      spec.push_back(SpecConstant::i(kernel::SPEC_TILE_Y, tile_.y));
+    }
+    program_ = setup.shaders.compute(scatter_  ? "propagation/standard_scatter.comp"
+                                     : tiled_ ? "propagation/standard_gather_tiled.comp"
+                                              : "propagation/standard_gather.comp",
+                                     spec);
     scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
   }
@@ -123,13 +143,23 @@ public:
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
       }
       scratch_.bindStorage(BUFFER_TARGET);
-      dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                       GL_SHADER_STORAGE_BARRIER_BIT);
+      dispatch(grid.geometry.resolution);
       std::swap(grid.current, scratch_);  // the new light becomes the next step's source
     }
   }
 
   int iterations() const override { return iterations_; }
+
+  // One step over the grid: a group per cell block (simple), or per tile and z-span (tiled).
+  void dispatch(const glm::ivec3& resolution) const {
+    using namespace kernel;
+    if (!tiled_)
+      return dispatchCovering(resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                              GL_SHADER_STORAGE_BARRIER_BIT);
+    const int spans = (resolution.z + TILED_Z_SPAN - 1) / TILED_Z_SPAN;
+    dispatchCovering({resolution.x, resolution.y, spans}, {tile_.x, tile_.y, 1},
+                     GL_SHADER_STORAGE_BARRIER_BIT);
+  }
 
   // Derivatives: the standard CPU kernel on dual numbers (scattering gives gathering's grid).
   std::vector<std::string> differentiableParameters() const override {
@@ -151,6 +181,7 @@ public:
     const bool onCpu = runsOnCpu(requirements);
     StandardTransferWork w = standardTransferWork(shape.coefficients, onCpu, scatter_,
                                                   requirements.has(kGeometryVolume));
+    if (tiled_ && !onCpu) w.bytes -= tiledSourceBytesSaved(shape.coefficients);
     if (bounces_ && !onCpu) w.multiplyAdds *= 2;
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
@@ -160,10 +191,12 @@ public:
 private:
   int iterations_;
   bool scatter_;
+  bool tiled_;
   bool bounces_;
   double farFace_, sideFace_, damping_;
   int shOrder_ = 1;
   Program program_;
+  glm::ivec2 tile_{1, 1};  // the tiled kernel's work group (x, y)
   DualBuffer scratch_;  // swapped with the grid's current buffer
   bool onCpu_ = false;
   StandardCpuFrame cpu_;  // on the CPU backend
