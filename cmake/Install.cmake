@@ -1,6 +1,6 @@
 # `cmake --install BUILD --prefix PREFIX` (docs/install.md):
-#   PREFIX/bin/lpvlab
-#   PREFIX/share/lpvlab/{shaders, experiments, analysis, REVISION}   found relative to bin/lpvlab
+#   PREFIX/bin/lpvlab, PREFIX/bin/lpvlab-gpubench
+#   PREFIX/share/lpvlab/{shaders, spirv, experiments, analysis, REVISION}   found relative to bin/lpvlab
 #                                                                    (framework/core/install_layout.h)
 #   PREFIX/include/lpvlab/{framework, variants, glad}/...            the headers
 #   PREFIX/lib/lpvlab/*.a, PREFIX/lib/lpvlab/objects/                the libraries, the strategies
@@ -13,8 +13,8 @@ include(CMakePackageConfigHelpers)
 set(LPVLAB_EXPORTED
     lpvlab_core lpvlab_math lpvlab_scene lpvlab_animation lpvlab_io lpvlab_metrics lpvlab_gl
     lpvlab_pipeline lpvlab_reference lpvlab_particles lpvlab_experiment lpvlab_fit
-    lpvlab_many_lights lpvlab_radiosity lpvlab_variants lpvlab_glad lpvlab_gl_headers lpvlab_cli)
-install(TARGETS lpvlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+    lpvlab_many_lights lpvlab_radiosity lpvlab_gl_kernels lpvlab_variants lpvlab_glad lpvlab_gl_headers lpvlab_cli)
+install(TARGETS lpvlab lpvlab-gpubench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ${LPVLAB_EXPORTED} EXPORT lpvlabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/lpvlab
         OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/lpvlab/objects)
@@ -23,6 +23,8 @@ install(DIRECTORY "${CMAKE_SOURCE_DIR}/framework" "${CMAKE_SOURCE_DIR}/variants"
 install(DIRECTORY "${LPVLAB_GLAD_DIR}/include/" DESTINATION include/lpvlab)
 install(DIRECTORY "${CMAKE_SOURCE_DIR}/shaders" "${CMAKE_SOURCE_DIR}/experiments"
         DESTINATION share/lpvlab)
+install(DIRECTORY "${CMAKE_BINARY_DIR}/spirv/" DESTINATION share/lpvlab/spirv
+        FILES_MATCHING PATTERN "*.spv")
 install(FILES "${CMAKE_SOURCE_DIR}/analysis/report.py" "${CMAKE_SOURCE_DIR}/analysis/pyproject.toml"
         DESTINATION share/lpvlab/analysis)
 install(DIRECTORY "${CMAKE_SOURCE_DIR}/analysis/lpvlab_analysis" DESTINATION share/lpvlab/analysis

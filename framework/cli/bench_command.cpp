@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "framework/cli/commands.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/io/provenance.h"
 #include "framework/experiment/experiment_renderer.h"
 #include "framework/experiment/timing.h"

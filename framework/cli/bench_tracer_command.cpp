@@ -16,7 +16,7 @@
 #include "framework/core/error.h"
 #include "framework/core/stats.h"
 #include "framework/experiment/experiment.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab::cli {
 

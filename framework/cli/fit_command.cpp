@@ -16,7 +16,7 @@
 #include "framework/fit/fit_checkpoint.h"
 #include "framework/fit/fit_output.h"
 #include "framework/gl/context.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab::cli {
 

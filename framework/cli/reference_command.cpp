@@ -2,7 +2,7 @@
 
 #include "framework/cli/commands.h"
 #include "framework/experiment/experiment.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab::cli {
 

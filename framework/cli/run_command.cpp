@@ -12,7 +12,7 @@
 
 #include "framework/cli/commands.h"
 #include "framework/experiment/run.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab::cli {
 

@@ -7,7 +7,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/experiment.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/reference/reference_cache.h"
 
 namespace lpvlab::cli {

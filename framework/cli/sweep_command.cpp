@@ -28,7 +28,7 @@
 #include "framework/experiment/sweep_check.h"
 #include "framework/experiment/sweep_expansion.h"
 #include "framework/experiment/sweep_summary.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab::cli {
 

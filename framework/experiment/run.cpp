@@ -9,7 +9,7 @@
 #include "framework/experiment/experiment_renderer.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/experiment/sequence.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/metrics/metrics.h"
 #include "framework/scene/scene_loader.h"
 

@@ -20,7 +20,7 @@
 #include "framework/experiment/timing.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/experiment/sequence_temporal.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/io/child_process.h"
 #include "framework/particles/particle_billboards.h"
 #include "framework/scene/scene_loader.h"

@@ -10,7 +10,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/json_path.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/pipeline/pipeline.h"
 
 namespace lpvlab {

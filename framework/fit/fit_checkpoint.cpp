@@ -8,7 +8,7 @@
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
 #include "framework/fit/fit_output.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab {
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "framework/core/error.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/io/provenance.h"
 
 namespace lpvlab {

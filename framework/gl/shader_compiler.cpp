@@ -1,67 +1,30 @@
 #include "framework/gl/shader_compiler.h"
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
-
 #include <algorithm>
 #include <bit>
 #include <cstdlib>
-#include <optional>
+#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "framework/core/install_layout.h"
 #include "framework/core/error.h"
-#include "framework/gl/shader_includer.h"
 
 namespace lpvlab {
 namespace {
 
-// glslang keeps process-wide tables; a function-local static initialises them exactly once, even
-// when compilers on several threads start at the same time. They are never finalised: they are
-// needed until the process ends, which frees them.
-void initGlslang() {
-  static const bool initialised = glslang::InitializeProcess();
-  (void)initialised;
-}
-
-struct Stage {
-  EShLanguage glslang;
-  GLenum gl;
-};
-
-Stage stageOf(const std::string& path) {
-  const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension == ".comp") return {EShLangCompute, GL_COMPUTE_SHADER};
-  if (extension == ".vert") return {EShLangVertex, GL_VERTEX_SHADER};
-  if (extension == ".frag") return {EShLangFragment, GL_FRAGMENT_SHADER};
-  if (extension == ".geom") return {EShLangGeometry, GL_GEOMETRY_SHADER};
-  if (extension == ".tesc") return {EShLangTessControl, GL_TESS_CONTROL_SHADER};
-  if (extension == ".tese") return {EShLangTessEvaluation, GL_TESS_EVALUATION_SHADER};
-  throwAt(path, "unknown shader stage (extension must be .comp .vert .frag .geom .tesc .tese)");
-}
-
-// glslang's log, one problem a line as "<file>:<line>: <message>". Its lines read
-// "ERROR: common/sh.glsl:12: 'x' : undeclared identifier", with the file named as the includer
-// named it (root-relative). Its summaries ("1 compilation errors. No code generated.", "'' :
-// compilation terminated") say nothing more and are dropped.
-std::string rewriteLog(const std::string& log) {
-  std::istringstream lines(log);
-  std::string line, out;
-  while (std::getline(lines, line)) {
-    if (line.rfind("ERROR: ", 0) == 0) {
-      line.erase(0, 7);
-    } else if (line.rfind("WARNING: ", 0) == 0) {
-      line = "warning: " + line.substr(9);
-    }
-    line.erase(line.find_last_not_of(" \t\r") + 1);
-    if (line.empty() || line.find("compilation errors.") != std::string::npos ||
-        line.find("compilation terminated") != std::string::npos)
-      continue;
-    out += "\n  " + line;
-  }
-  return out;
+// A SPIR-V module made ahead of time: `root`/<path>.spv (lpvlab-compile-spirv's output).
+std::vector<std::uint32_t> readSpirv(const std::filesystem::path& root, const std::string& path) {
+  const std::filesystem::path file = root / (path + ".spv");
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in) throwAt(path, "no SPIR-V at " + file.string() + " (made at build time by lpvlab-compile-spirv)");
+  const std::streamsize bytes = in.tellg();
+  std::vector<std::uint32_t> spirv(std::size_t(std::max<std::streamsize>(bytes, 0)) / 4);
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(spirv.data()), std::streamsize(spirv.size() * 4));
+  constexpr std::uint32_t kSpirvMagic = 0x07230203;
+  if (!in || bytes % 4 != 0 || spirv.size() < 5 || spirv[0] != kSpirvMagic)
+    throwAt(path, file.string() + " is not a SPIR-V module");
+  return spirv;
 }
 
 // The constant_id of every specialization constant in a SPIR-V module: the literal of each
@@ -118,8 +81,22 @@ Program::~Program() {
 
 void Program::use() const { glUseProgram(id_); }
 
-ShaderCompiler::ShaderCompiler(std::filesystem::path root) : root_(std::move(root)) {
-  initGlslang();
+ShaderCompiler::ShaderCompiler(std::filesystem::path root, SpirvSource source)
+    : root_(std::move(root)), source_(source) {}
+
+ShaderCompiler ShaderCompiler::precompiled(std::filesystem::path spirvRoot) {
+  return ShaderCompiler(std::move(spirvRoot), &readSpirv);
+}
+
+GLenum shaderStageOf(const std::string& path) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension == ".comp") return GL_COMPUTE_SHADER;
+  if (extension == ".vert") return GL_VERTEX_SHADER;
+  if (extension == ".frag") return GL_FRAGMENT_SHADER;
+  if (extension == ".geom") return GL_GEOMETRY_SHADER;
+  if (extension == ".tesc") return GL_TESS_CONTROL_SHADER;
+  if (extension == ".tese") return GL_TESS_EVALUATION_SHADER;
+  throwAt(path, "unknown shader stage (extension must be .comp .vert .frag .geom .tesc .tese)");
 }
 
 ShaderCompiler::~ShaderCompiler() = default;
@@ -128,37 +105,8 @@ std::filesystem::path ShaderCompiler::defaultRoot() { return shaderDirectory(); 
 
 std::vector<std::uint32_t> ShaderCompiler::compileToSpirv(const std::string& path) {
   if (auto cached = cache_.find(path); cached != cache_.end()) return cached->second;
-
-  const Stage stage = stageOf(path);
-  const std::optional<std::string> source = readTextFile(root_ / path);
-  if (!source) throwAt(path, "shader file not found in " + root_.string());
-
-  glslang::TShader shader(stage.glslang);
-  const char* text = source->c_str();
-  const int length = int(source->size());
-  const char* name = path.c_str();  // what glslang calls the file in its messages
-  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
-  // The preamble comes after the shader's #version as far as glslang is concerned, so shaders
-  // need not ask for #include support themselves.
-  shader.setPreamble("#extension GL_GOOGLE_include_directive : require\n");
-  shader.setEnvInput(glslang::EShSourceGlsl, stage.glslang, glslang::EShClientOpenGL, 450);
-  shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-  const auto messages = EShMessages(EShMsgSpvRules);
-  ShaderIncluder includer(root_);
-  if (!shader.parse(GetDefaultResources(), 450, false, messages, includer))
-    throwAt(path, "does not compile:" + rewriteLog(shader.getInfoLog()));
-
-  glslang::TProgram program;
-  program.addShader(&shader);
-  if (!program.link(messages))
-    throwAt(path, "does not link:" + rewriteLog(program.getInfoLog()));
-
-  std::vector<std::uint32_t> spirv;
-  spv::SpvBuildLogger logger;
-  glslang::GlslangToSpv(*program.getIntermediate(stage.glslang), spirv, &logger);
-  if (spirv.empty()) throwAt(path, "no SPIR-V generated: " + logger.getAllMessages());
-  return cache_[path] = std::move(spirv);
+  shaderStageOf(path);  // an unknown stage is an error before anything is read
+  return cache_[path] = source_(root_, path);
 }
 
 Program ShaderCompiler::link(const std::vector<std::string>& paths,
@@ -187,7 +135,7 @@ Program ShaderCompiler::link(const std::vector<std::string>& paths,
       values.push_back(constant.bits);
       specialized.insert(constant.id);
     }
-    const GLuint shader = glCreateShader(stageOf(path).gl);
+    const GLuint shader = glCreateShader(shaderStageOf(path));
     shaders.ids.push_back(shader);
     glShaderBinary(1, &shader, GL_SHADER_BINARY_FORMAT_SPIR_V_ARB, spirv.data(),
                    GLsizei(spirv.size() * sizeof(std::uint32_t)));

@@ -43,10 +43,19 @@ private:
   GLuint id_ = 0;
 };
 
+// The stage a shader file holds, by its extension (.comp .vert .frag .geom .tesc .tese): its GL
+// shader type; any other extension is an Error naming the file.
+GLenum shaderStageOf(const std::string& path);
+
 class ShaderCompiler {
 public:
-  // `root` is the shaders/ folder (default: LPVLAB_SHADER_DIR env var, else the source tree's).
+  // `root` is the shaders/ folder (default: LPVLAB_SHADER_DIR env var, else the source tree's);
+  // its GLSL is compiled by glslang at run time (shader_compiler_glsl.cpp).
   explicit ShaderCompiler(std::filesystem::path root = defaultRoot());
+  // SPIR-V made ahead of time instead of GLSL: `spirvRoot`/<path>.spv for each path (the output
+  // of lpvlab-compile-spirv). A program that only calls this links no glslang.
+  static ShaderCompiler precompiled(std::filesystem::path spirvRoot);
+  ShaderCompiler(ShaderCompiler&&) = default;
   ~ShaderCompiler();
 
   // `path` relative to root, e.g. "propagation/standard.comp". SPIR-V is cached per file for
@@ -56,7 +65,8 @@ public:
   Program graphics(const std::string& vertexPath, const std::string& fragmentPath,
                    const std::vector<SpecConstant>& spec = {});
 
-  // GLSL -> SPIR-V only (no GL needed): for tests and for checking shaders without a context.
+  // The SPIR-V of `path` (GLSL compiled, or read where precompiled; no GL needed): for tests and
+  // for checking shaders without a context.
   // Errors read "<path>: does not compile:" followed by one "<file>:<line>: <message>" line per
   // problem, <file> relative to the root (an included file names itself, not its includer).
   std::vector<std::uint32_t> compileToSpirv(const std::string& path);
@@ -64,10 +74,14 @@ public:
   static std::filesystem::path defaultRoot();
 
 private:
+  using SpirvSource = std::vector<std::uint32_t> (*)(const std::filesystem::path& root,
+                                                     const std::string& path);
+  ShaderCompiler(std::filesystem::path root, SpirvSource source);
   // One program from the stages in `paths`; each stage is specialized with the constants it
   // declares, and a constant that no stage declares is an Error.
   Program link(const std::vector<std::string>& paths, const std::vector<SpecConstant>& spec);
   std::filesystem::path root_;
+  SpirvSource source_;
   std::map<std::string, std::vector<std::uint32_t>> cache_;
 };
 

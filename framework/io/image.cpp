@@ -8,7 +8,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "framework/core/error.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 namespace lpvlab {
 

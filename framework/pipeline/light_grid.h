@@ -9,7 +9,7 @@
 #include <cstddef>
 
 #include "framework/math/grid_geometry.h"
-#include "framework/pipeline/dual_buffer.h"
+#include "framework/gl/dual_buffer.h"
 
 namespace lpvlab {
 

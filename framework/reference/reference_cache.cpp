@@ -21,7 +21,7 @@
 #include "framework/core/error.h"
 #include "framework/core/hash.h"
 #include "framework/core/progress.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/io/provenance.h"
 #include "framework/scene/scene_loader.h"
 

@@ -19,7 +19,8 @@
 // variants/propagation/standard.cpp so that the shared tile fits GL's guaranteed 32 KiB.
 // Not done: several iterations per dispatch (temporal blocking), which the halo would allow.
 #include "standard_interface.glsl"
-layout(local_size_x_id = SPEC_TILE_X, local_size_y_id = SPEC_TILE_Y, local_size_z = 1) in;
+layout(local_size_x_id = SPEC_TILE_X, local_size_y_id = SPEC_TILE_Y,
+       local_size_z = TILED_GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 1) const float SIDE_FACE_SOLID_ANGLE = 0.0;
 layout(constant_id = 2) const int SH_COEFFICIENTS = 4;

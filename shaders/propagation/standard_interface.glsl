@@ -16,4 +16,5 @@ const int LOCATION_FIRST_OCCLUDED_ITERATION = 2;  // uniform int firstOccludedIt
 // one z-plane (specialisation constants 5 and 6), which walks TILED_Z_SPAN planes up the grid.
 const int SPEC_TILE_X = 5;
 const int SPEC_TILE_Y = 6;
+const int TILED_GROUP_SIZE_Z = 1;                 // a tile is one plane thick
 const int TILED_Z_SPAN = 8;

@@ -16,7 +16,7 @@
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/json_path.h"
 #include "framework/experiment/sweep_summary.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "io/temp_dir.h"
 #include "sweep_support.h"
 

@@ -21,7 +21,7 @@
 #include "lpv_support.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/sweep_summary.h"
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 #include "framework/pipeline/pipeline.h"
 #include "io/temp_dir.h"
 #include "pipeline_test_support.h"

@@ -37,15 +37,15 @@ struct LpvlabResult {
   std::string out, err;
 };
 
-// Runs `lpvlab ARGS` in `workDir`, capturing stdout and stderr into files in `logDir`;
+// Runs `EXE ARGS` in `workDir`, capturing stdout and stderr into files in `logDir`;
 // `environment` ("NAME=value ...", shell-quoted) is set for it alone.
-inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::path& workDir,
-                              const std::filesystem::path& logDir,
-                              const std::string& environment = "") {
-  const std::filesystem::path exe = lpvlabExecutable();
+inline LpvlabResult runExecutable(const std::filesystem::path& exe, const std::string& args,
+                                  const std::filesystem::path& workDir,
+                                  const std::filesystem::path& logDir,
+                                  const std::string& environment = "") {
   LpvlabResult r;
   if (!std::filesystem::exists(exe)) {
-    ADD_FAILURE() << exe << " does not exist: build the lpvlab target";
+    ADD_FAILURE() << exe << " does not exist: build its target";
     return r;
   }
   const std::filesystem::path out = logDir / "stdout.txt", err = logDir / "stderr.txt";
@@ -57,6 +57,13 @@ inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::pa
   r.out = readFile(out);
   r.err = readFile(err);
   return r;
+}
+
+// The same for the built lpvlab.
+inline LpvlabResult runLpvlab(const std::string& args, const std::filesystem::path& workDir,
+                              const std::filesystem::path& logDir,
+                              const std::string& environment = "") {
+  return runExecutable(lpvlabExecutable(), args, workDir, logDir, environment);
 }
 
 }  // namespace lpvlab::test

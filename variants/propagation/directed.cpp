@@ -48,6 +48,7 @@
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/directed_cpu.h"
 #include "variants/propagation/standard_cpu_frame.h"
+#include "variants/propagation/standard_gl.h"
 #include "variants/propagation/standard_work.h"
 #include "variants/resources/geometry_volume.h"
 
@@ -62,9 +63,6 @@ namespace gather_kernel {
 }
 namespace release_kernel {
 #include "shaders/propagation/directed_release_interface.glsl"
-}
-namespace free_kernel {  // the free light's transfer: standard gathering
-#include "shaders/propagation/standard_interface.glsl"
 }
 
 class DirectedPropagation final : public PropagationStrategy {
@@ -108,11 +106,10 @@ public:
       release_kernel_ = shaders.compute(
           "propagation/directed_release.comp",
           {SpecConstant::i(0, coefficients), SpecConstant::f(1, float(cosRegionAngle_))});
-      free_kernel_ = shaders.compute(
-          "propagation/standard_gather.comp",
-          {SpecConstant::f(0, float(angles.farFace)), SpecConstant::f(1, float(angles.sideFace)),
-           SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
-           SpecConstant::b(4, false)});
+      free_kernel_ = StandardGlKernel(shaders, {.coefficients = coefficients,
+                                                .farFace = angles.farFace,
+                                                .sideFace = angles.sideFace,
+                                                .withGv = requirements.has(kGeometryVolume)});
       for (DualBuffer& b : free_)
         b = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                        "light grid (directed propagation's free light)");
@@ -275,20 +272,10 @@ private:
   // One standard gathering step of the free light (free_[0] into free_[1], then swapped),
   // added to the accumulated grid.
   void gatherFree(LightGrid& grid, const GeometryVolume* gv, int iteration) {
-    using namespace free_kernel;
-    free_kernel_.use();
-    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
-    if (gv) {
-      glUniform1i(LOCATION_FIRST_OCCLUDED_ITERATION, gv->firstOccludedIteration);
-      glUniform1i(LOCATION_ITERATION, iteration);
-      gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
-    }
-    free_[0].bindStorage(BUFFER_SOURCE);
-    free_[1].bindStorage(BUFFER_TARGET);
-    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
-    dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
-    std::swap(free_[0], free_[1]);
+    StandardGlOcclusion occlusion;
+    if (gv) occlusion = {.blocking = &gv->blocking, .firstOccludedIteration = gv->firstOccludedIteration};
+    free_kernel_.propagate(grid.geometry.resolution, 1, free_[0], free_[1], grid.accumulated,
+                           occlusion, iteration);
   }
 
   int iterations_;
@@ -296,7 +283,8 @@ private:
   bool release_;
   double cosRegionAngle_;
   int shOrder_ = 1;
-  Program gather_, dilate_, release_kernel_, free_kernel_;
+  Program gather_, dilate_, release_kernel_;
+  StandardGlKernel free_kernel_;  // the free light's standard gathering
   DualBuffer scratch_;  // swapped with the grid's current buffer
   DualBuffer free_[2];  // with release: the free light and its ping-pong partner
   gl::Buffer normals_[2];  // dilation ping-pong

@@ -42,8 +42,6 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/gl/dispatch.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
@@ -51,16 +49,12 @@
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/standard_cpu_frame.h"
-#include "variants/propagation/standard_tiled.h"
+#include "variants/propagation/standard_gl.h"
 #include "variants/propagation/standard_work.h"
 #include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {
-
-namespace kernel {  // gathering's and scattering's, the same
-#include "shaders/propagation/standard_interface.glsl"
-}
 
 class StandardPropagation final : public PropagationStrategy {
 public:
@@ -101,20 +95,7 @@ public:
       onCpu_ = true;
       return;
     }
-    const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-    std::vector<SpecConstant> spec{
-        SpecConstant::f(0, float(damping_ * farFace_)), SpecConstant::f(1, float(damping_ * sideFace_)),
-        SpecConstant::i(2, coefficients), SpecConstant::b(3, requirements.has(kGeometryVolume)),
-        SpecConstant::b(4, bounces_)};
-    if (tiled_) {
-      tile_ = standardTiledGroup(coefficients);
-      spec.push_back(SpecConstant::i(kernel::SPEC_TILE_X, tile_.x));
-      spec.push_back(SpecConstant::i(kernel::SPEC_TILE_Y, tile_.y));
-    }
-    program_ = setup.shaders.compute(scatter_  ? "propagation/standard_scatter.comp"
-                                     : tiled_ ? "propagation/standard_gather_tiled.comp"
-                                              : "propagation/standard_gather.comp",
-                                     spec);
+    gl_ = StandardGlKernel(setup.shaders, glSettings(requirements));
     scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
                           "light grid (propagation scratch)");
   }
@@ -123,43 +104,17 @@ public:
     if (onCpu_)
       return cpu_.propagate(frame,
                             {.count = iterations_, .scatter = scatter_, .bounces = bounces_});
-    using namespace kernel;
     LightGrid& grid = frame.lightGrid;
-    program_.use();
-    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
-    // Without a GV the kernels were compiled without its reads, and these uniforms don't exist.
-    const GeometryVolume* gv = frame.find(kGeometryVolume);
-    if (gv) {
-      glUniform1i(LOCATION_FIRST_OCCLUDED_ITERATION, gv->firstOccludedIteration);
-      gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
-      if (bounces_) frame.get(kSurfaceAlbedo).albedo.bindStorage(BUFFER_GEOMETRY_VOLUME_ALBEDO);
+    StandardGlOcclusion occlusion;
+    if (const GeometryVolume* gv = frame.find(kGeometryVolume)) {
+      occlusion = {.blocking = &gv->blocking, .firstOccludedIteration = gv->firstOccludedIteration};
+      if (bounces_) occlusion.albedo = &frame.get(kSurfaceAlbedo).albedo;
     }
-    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
-    for (int i = 0; i < iterations_; ++i) {
-      if (gv) glUniform1i(LOCATION_ITERATION, i);
-      grid.current.bindStorage(BUFFER_SOURCE);
-      if (scatter_) {
-        scratch_.zero();  // the atomics add into it
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-      }
-      scratch_.bindStorage(BUFFER_TARGET);
-      dispatch(grid.geometry.resolution);
-      std::swap(grid.current, scratch_);  // the new light becomes the next step's source
-    }
+    gl_.propagate(grid.geometry.resolution, iterations_, grid.current, scratch_, grid.accumulated,
+                  occlusion);
   }
 
   int iterations() const override { return iterations_; }
-
-  // One step over the grid: a group per cell block (simple), or per tile and z-span (tiled).
-  void dispatch(const glm::ivec3& resolution) const {
-    using namespace kernel;
-    if (!tiled_)
-      return dispatchCovering(resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                              GL_SHADER_STORAGE_BARRIER_BIT);
-    const int spans = (resolution.z + TILED_Z_SPAN - 1) / TILED_Z_SPAN;
-    dispatchCovering({resolution.x, resolution.y, spans}, {tile_.x, tile_.y, 1},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
-  }
 
   // Derivatives: the standard CPU kernel on dual numbers (scattering gives gathering's grid).
   std::vector<std::string> differentiableParameters() const override {
@@ -174,30 +129,39 @@ public:
                                     {.count = iterations_, .bounces = bounces_});
   }
 
-  // Per cell-iteration: standard_work.h; bounces run every face twice on GL (on the CPU only the
-  // blocked faces, not counted).
+  // Per cell-iteration: on GL the kernel's (standard_gl.h: bounces run every face twice, the tiled
+  // layout reads less), on the CPU standard_work.h's (bounces only on the blocked faces, not
+  // counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const bool onCpu = runsOnCpu(requirements);
-    StandardTransferWork w = standardTransferWork(shape.coefficients, onCpu, scatter_,
-                                                  requirements.has(kGeometryVolume));
-    if (tiled_ && !onCpu) w.bytes -= tiledSourceBytesSaved(shape.coefficients);
-    if (bounces_ && !onCpu) w.multiplyAdds *= 2;
+    const StandardTransferWork w =
+        runsOnCpu(requirements) ? standardTransferWork(shape.coefficients, true, scatter_,
+                                                       requirements.has(kGeometryVolume))
+                                : standardGlKernelWork(glSettings(requirements));
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
 
   std::size_t memoryBytes() const override { return scratch_.size() + cpu_.memoryBytes(); }
 
 private:
+  StandardGlSettings glSettings(const Requirements& requirements) const {
+    return {.coefficients = shared::shCoefficientCount(requirements.shOrder),
+            .farFace = damping_ * farFace_,
+            .sideFace = damping_ * sideFace_,
+            .withGv = requirements.has(kGeometryVolume),
+            .bounces = bounces_,
+            .scatter = scatter_,
+            .tiled = tiled_};
+  }
+
   int iterations_;
   bool scatter_;
   bool tiled_;
   bool bounces_;
   double farFace_, sideFace_, damping_;
   int shOrder_ = 1;
-  Program program_;
-  glm::ivec2 tile_{1, 1};  // the tiled kernel's work group (x, y)
-  DualBuffer scratch_;  // swapped with the grid's current buffer
+  StandardGlKernel gl_;   // on GL
+  DualBuffer scratch_;    // swapped with the grid's current buffer
   bool onCpu_ = false;
   StandardCpuFrame cpu_;  // on the CPU backend
 };

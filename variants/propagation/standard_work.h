@@ -14,25 +14,21 @@
 
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/standard_cpu.h"
+#include "variants/propagation/standard_gl.h"
 
 namespace lpvlab {
 
-struct StandardTransferWork {
-  double multiplyAdds = 0.0;
-  double bytes = 0.0;
-};
-
+// On GL, the kernels' count (standard_gl.h); on the CPU, the CPU kernels'.
 inline StandardTransferWork standardTransferWork(int coefficients, bool onCpu, bool scatter,
                                                  bool withGv) {
-  const double n = coefficients;
-  const int cpuMadds = scatter ? standardScatterMultiplyAdds(coefficients)
-                               : standardGatherMultiplyAdds(coefficients);
+  if (!onCpu) return standardGlTransferWork(coefficients, scatter, withGv);
   StandardTransferWork w;
-  w.multiplyAdds = onCpu ? 3.0 * cpuMadds : 3 * 30 * 2 * n;
-  w.bytes = 4 * (6 * 3 * n + (scatter ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
+  w.multiplyAdds = 3.0 * (scatter ? standardScatterMultiplyAdds(coefficients)
+                                  : standardGatherMultiplyAdds(coefficients));
+  w.bytes = 4.0 * coefficients * (6 * 3 + (scatter ? 2 * 6 * 3 : 3) + 2 * 3);
   if (withGv) {
-    w.multiplyAdds += onCpu ? 3 * 30 : 30 * 8 * 4;
-    w.bytes += onCpu ? 30 * 4 : 8 * 16;
+    w.multiplyAdds += 3 * 30;
+    w.bytes += 30 * 4;
   }
   return w;
 }

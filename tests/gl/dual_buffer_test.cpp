@@ -1,4 +1,4 @@
-// The light grid's storage on GL and the host (framework/pipeline/dual_buffer.h): whichever side
+// The light grid's storage on GL and the host (framework/gl/dual_buffer.h): whichever side
 // wrote last is what the other side sees when it is next asked for, through every way in.
 
 #include <numeric>
@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "framework/pipeline/dual_buffer.h"
-#include "pipeline_test_support.h"
+#include "framework/gl/dual_buffer.h"
+#include "gl_test_context.h"
 
 namespace lpvlab {
 namespace {

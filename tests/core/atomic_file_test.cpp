@@ -1,4 +1,4 @@
-#include "framework/io/atomic_file.h"
+#include "framework/core/atomic_file.h"
 
 #include <filesystem>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "framework/pipeline/dual_buffer.h"
+#include "framework/gl/dual_buffer.h"
 
 #include <algorithm>
 

@@ -1,0 +1,174 @@
+// lpvlab-gpubench (framework/gpubench, variants/**/*_gpubench.cpp), on llvmpipe:
+//   a. every registered case computes what the strategy's CPU kernels compute from the same
+//      inputs: its checksum equals theirs (the standard strategy on the CPU backend, with the GV
+//      and its albedo where the case has them) at SH orders 1-3, on a grid that cuts the kernels'
+//      work groups part way; a case this test does not know fails it;
+//   b. the executable, on precompiled SPIR-V, gives the checksums the GLSL compiled here gives
+//      (the gathers bit for bit; scattering's float atomics add in any order);
+//   c. the executable needs only the C and C++ runtimes (GL is opened at run time) and is, with its
+//      SPIR-V, under 5 MB stripped;
+//   d. bad options are one error line and exit 2.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "executable_support.h"
+#include "framework/gpubench/gpu_bench_inputs.h"
+#include "framework/gpubench/gpu_bench_runner.h"
+#include "io/temp_dir.h"
+#include "propagation_rig.h"
+
+namespace lpvlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The strategy configuration each case runs, as this test knows it.
+struct Known {
+  std::string method;
+  bool withGv = false;
+  bool bounces = false;
+};
+
+const std::map<std::string, Known>& knownCases() {
+  static const std::map<std::string, Known> cases{
+      {"standard_gather", {"gather"}},
+      {"standard_gather_tiled", {"gather"}},
+      {"standard_scatter", {"scatter"}},
+      {"standard_gather_gv", {"gather", true}},
+      {"standard_gather_tiled_gv", {"gather", true}},
+      {"standard_scatter_gv", {"scatter", true}},
+      {"standard_gather_gv_bounces", {"gather", true, true}},
+      {"standard_gather_tiled_gv_bounces", {"gather", true, true}}};
+  return cases;
+}
+
+const std::vector<float>& input(const GpuBenchInputs& inputs, const std::string& name) {
+  for (const auto& [n, values] : inputs)
+    if (n == name) return values;
+  throw std::runtime_error("no input " + name);
+}
+
+// The CPU backend's checksum of the same propagation from `inputs`.
+double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  toml::table table = test::iterationsTable(shape.iterations, k.method);
+  if (k.bounces) table.insert("bounces", true);
+  test::PropagationRig rig("standard", shape.resolution, table, shape.shOrder, k.withGv,
+                           ComputeBackend::Cpu);
+  rig.load(input(inputs, "current"), input(inputs, "accumulated"));
+  if (k.withGv) rig.loadGv(input(inputs, "gv"), 1);
+  if (k.bounces) rig.loadAlbedo(input(inputs, "albedo"));
+  rig.propagate();
+  return benchChecksum(rig.accumulated()) + benchChecksum(rig.current());
+}
+
+// 4^3 groups, 32x4 and 16x4 tiles and 8-plane spans cut part way, several tiles along each axis.
+const GpuBenchShape kShape{{37, 9, 11}, 1, 3};
+
+TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
+  test::glTestContext();
+  ShaderCompiler shaders;
+  ASSERT_FALSE(gpuBenchCases().empty());
+  for (const auto& [name, entry] : gpuBenchCases()) {
+    ASSERT_TRUE(knownCases().contains(name)) << name << ": a case this test does not know";
+    for (int order = 1; order <= 3; ++order) {
+      GpuBenchShape shape = kShape;
+      shape.shOrder = order;
+      std::unique_ptr<GpuBenchCase> bench = entry.make();
+      bench->prepare(shaders, shape);
+      bench->reset();
+      bench->run();
+      const double gl = bench->checksum();
+      const double cpu = cpuChecksum(knownCases().at(name), shape, bench->inputs());
+      EXPECT_NEAR(gl, cpu, 1e-5 * std::abs(cpu)) << name << ", order " << order;
+      // The propagation did something: the inputs' own checksum is far from it.
+      const double before = benchChecksum(input(bench->inputs(), "accumulated")) +
+                            benchChecksum(input(bench->inputs(), "current"));
+      EXPECT_GT(std::abs(gl - before), 1e-3 * std::abs(before)) << name << ", order " << order;
+    }
+  }
+}
+
+fs::path gpubenchExecutable() { return test::lpvlabExecutable().parent_path() / "lpvlab-gpubench"; }
+
+TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
+  test::TempDir dir;
+  const test::LpvlabResult r = test::runExecutable(
+      gpubenchExecutable(),
+      "--grids 10 --orders 2 --iterations 3 --warmup 0 --repeats 2 --backend osmesa --json out.json",
+      dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(test::readFile(dir.path() / "out.json"));
+  EXPECT_EQ(json["timing"]["clock"], "gl_timer_query");
+  EXPECT_EQ(json["timing"]["repeats"], 2);
+  ASSERT_EQ(json["results"].size(), gpuBenchCases().size());
+  test::glTestContext();
+  ShaderCompiler shaders;
+  for (const nlohmann::json& row : json["results"]) {
+    const std::string name = row["case"];
+    ASSERT_TRUE(gpuBenchCases().contains(name)) << name;
+    const GpuBenchShape shape{glm::ivec3(10), 2, 3};
+    const GpuBenchResult here = runGpuBench(name, gpuBenchCases().at(name), shaders, shape, 0, 1);
+    const double tolerance = knownCases().at(name).method == "scatter" ? 1e-6 * std::abs(here.checksum) : 0.0;
+    EXPECT_NEAR(row["checksum"].get<double>(), here.checksum, tolerance) << name;
+    EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;
+    EXPECT_EQ(row["units"].get<double>(), 1000.0 * 3) << name;
+    EXPECT_NE(r.out.find(name), std::string::npos) << "no row for " << name;
+  }
+}
+
+std::size_t bytesUnder(const fs::path& dir) {
+  std::size_t bytes = 0;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) bytes += e.file_size();
+  return bytes;
+}
+
+TEST(GpuBench, NeedsOnlyTheRuntimesAndIsUnderFiveMegabytesStripped) {
+  test::TempDir dir;
+  const fs::path exe = gpubenchExecutable();
+  const std::string stripped = (dir.path() / "lpvlab-gpubench").string();
+  ASSERT_EQ(std::system(("strip -o " + test::quoted(stripped) + " " + test::quoted(exe.string())).c_str()), 0);
+  const std::size_t bytes = fs::file_size(stripped) + bytesUnder(exe.parent_path() / "spirv");
+  std::cout << "lpvlab-gpubench stripped with its SPIR-V: " << bytes << " bytes\n";
+  EXPECT_LT(bytes, 5u * 1000 * 1000);
+  const fs::path needed = dir.path() / "needed.txt";
+  ASSERT_EQ(std::system(("readelf -d " + test::quoted(exe.string()) + " > " +
+                         test::quoted(needed.string())).c_str()), 0);
+  std::istringstream lines(test::readFile(needed));
+  const std::set<std::string> allowed{"libstdc++.so.6", "libm.so.6", "libgcc_s.so.1", "libc.so.6"};
+  int count = 0;
+  for (std::string line; std::getline(lines, line);) {
+    const auto open = line.find("Shared library: ["), close = line.rfind(']');
+    if (open == std::string::npos) continue;
+    const std::string library = line.substr(open + 17, close - open - 17);
+    EXPECT_TRUE(allowed.contains(library)) << "lpvlab-gpubench needs " << library;
+    ++count;
+  }
+  EXPECT_GT(count, 0);
+}
+
+TEST(GpuBench, BadOptionsAreOneErrorAndExitTwo) {
+  test::TempDir dir;
+  for (const char* args : {"--grids 0", "--orders 4", "--cases standard_nosuch", "--frobnicate"}) {
+    const test::LpvlabResult r =
+        test::runExecutable(gpubenchExecutable(), args, dir.path(), dir.path());
+    EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("lpvlab-gpubench: error: ", 0), 0u) << args << ": " << r.err;
+  }
+  const test::LpvlabResult r = test::runExecutable(gpubenchExecutable(), "--cases standard_nosuch",
+                                                   dir.path(), dir.path());
+  EXPECT_NE(r.err.find("standard_gather"), std::string::npos) << "the known cases are listed";
+}
+
+}  // namespace
+}  // namespace lpvlab
