@@ -1,7 +1,7 @@
 // lpvlab-gpubench (framework/gpubench, variants/**/*_gpubench.cpp), on llvmpipe:
 //   a. every registered case computes what the strategy's CPU kernels compute from the same
-//      inputs: its checksum equals theirs (the standard strategy on the CPU backend, with the GV
-//      and its albedo where the case has them) at SH orders 1-3, on a grid that cuts the kernels'
+//      inputs: its checksum equals theirs (the strategy on the CPU backend, with the GV and its
+//      albedo where the case has them) at SH orders 1-3, on a grid that cuts the kernels'
 //      work groups part way; a case this test does not know fails it;
 //   b. the executable, on precompiled SPIR-V, gives the checksums the GLSL compiled here gives
 //      (the gathers bit for bit; scattering's float atomics add in any order);
@@ -34,9 +34,10 @@ namespace fs = std::filesystem;
 
 // The strategy configuration each case runs, as this test knows it.
 struct Known {
-  std::string method;
+  std::string method;  // standard's; empty for another strategy
   bool withGv = false;
   bool bounces = false;
+  std::string strategy = "standard";
 };
 
 const std::map<std::string, Known>& knownCases() {
@@ -48,7 +49,9 @@ const std::map<std::string, Known>& knownCases() {
       {"standard_gather_tiled_gv", {"gather", true}},
       {"standard_scatter_gv", {"scatter", true}},
       {"standard_gather_gv_bounces", {"gather", true, true}},
-      {"standard_gather_tiled_gv_bounces", {"gather", true, true}}};
+      {"standard_gather_tiled_gv_bounces", {"gather", true, true}},
+      {"tetrahedral", {"", false, false, "tetrahedral"}},
+      {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
   return cases;
 }
 
@@ -62,7 +65,7 @@ const std::vector<float>& input(const GpuBenchInputs& inputs, const std::string&
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
   toml::table table = test::iterationsTable(shape.iterations, k.method);
   if (k.bounces) table.insert("bounces", true);
-  test::PropagationRig rig("standard", shape.resolution, table, shape.shOrder, k.withGv,
+  test::PropagationRig rig(k.strategy, shape.resolution, table, shape.shOrder, k.withGv,
                            ComputeBackend::Cpu);
   rig.load(input(inputs, "current"), input(inputs, "accumulated"));
   if (k.withGv) rig.loadGv(input(inputs, "gv"), 1);

@@ -35,16 +35,13 @@
 #include <utility>
 #include <vector>
 
-#include "framework/gl/dispatch.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
-#include "framework/math/tetrahedral_face_integrals.h"
-#include "framework/math/tetrahedral_solid_angles.h"
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/tetrahedral_cpu.h"
+#include "variants/propagation/tetrahedral_gl.h"
 #include "variants/resources/geometry_volume.h"
 
 LPVLAB_SHARED_GLSL_BEGIN
@@ -53,18 +50,6 @@ LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 namespace {
-
-constexpr int kCellsPerCube = 12;
-
-namespace split_kernel {
-#include "shaders/propagation/tetrahedral_split_interface.glsl"
-}
-namespace gather_kernel {
-#include "shaders/propagation/tetrahedral_gather_interface.glsl"
-}
-namespace merge_kernel {
-#include "shaders/propagation/tetrahedral_merge_interface.glsl"
-}
 
 class TetrahedralPropagation final : public PropagationStrategy {
 public:
@@ -86,102 +71,42 @@ public:
       onCpu_ = true;
       return;
     }
-    const TetrahedralFaceSolidAngles angles = tetrahedralFaceSolidAngles();
-    const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-    split_ = shaders.compute("propagation/tetrahedral_split.comp", {SpecConstant::i(0, coefficients)});
-    gather_ = shaders.compute("propagation/tetrahedral_gather.comp",
-                              {SpecConstant::f(0, float(angles.smallFace)),
-                               SpecConstant::f(1, float(angles.largeFace)),
-                               SpecConstant::i(2, coefficients),
-                               SpecConstant::b(3, requirements.has(kGeometryVolume)),
-                               SpecConstant::b(4, faceIntegrals_)});
-    if (faceIntegrals_) {
-      const std::vector<double>& table = tetrahedralFaceIntegrals();
-      const std::vector<float> values(table.begin(), table.end());
-      faceIntegralTable_ = gl::Buffer(values.size() * sizeof(float), "tetrahedral face integrals",
-                                      values.data());
-    }
-    merge_ = shaders.compute("propagation/tetrahedral_merge.comp", {SpecConstant::i(0, coefficients)});
-    // The lattice holds 12 cells per cube, each with the light grid's coefficients.
-    const std::size_t bytes = std::size_t(kCellsPerCube) * LightGrid::bytesPerGrid(grid, requirements.shOrder);
-    current_ = gl::Buffer(bytes, "tetrahedral lattice (current)");
-    scratch_ = gl::Buffer(bytes, "tetrahedral lattice (propagation scratch)");
-    sum_ = gl::Buffer(bytes, "tetrahedral lattice (sum of steps)");
+    gl_ = TetrahedralGlKernel(shaders, glSettings(requirements), grid.resolution);
   }
 
   void propagate(Frame& frame) override {
     if (onCpu_) return propagateOnCpu(frame);
     LightGrid& grid = frame.lightGrid;
-    const glm::ivec3 res = grid.geometry.resolution;
-    const glm::ivec3 cellDomain{kCellsPerCube * res.x, res.y, res.z};
-    {
-      using namespace split_kernel;
-      split_.use();
-      glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
-      grid.current.bindStorage(BUFFER_CUBES);
-      current_.bindStorage(BUFFER_CELLS);
-      dispatchCovering(cellDomain, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                       GL_SHADER_STORAGE_BARRIER_BIT);
-    }
-    {
-      using namespace gather_kernel;
-      sum_.zero();
-      gather_.use();
-      glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
-      sum_.bindStorage(BUFFER_SUM);
-      // Without a GV the kernel was compiled without its reads, and the uniform doesn't exist.
-      const GeometryVolume* gv = frame.find(kGeometryVolume);
-      if (gv) gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
-      if (faceIntegrals_) faceIntegralTable_.bindStorage(BUFFER_FACE_INTEGRALS);
-      const int firstOccluded = gv ? shared::tetFirstOccludedStep(gv->firstOccludedIteration) : 0;
-      for (int i = 0; i < iterations_; ++i) {
-        if (gv) glUniform1i(LOCATION_OCCLUDED_STEP, i >= firstOccluded);
-        current_.bindStorage(BUFFER_SOURCE);
-        scratch_.bindStorage(BUFFER_TARGET);
-        dispatchCovering(cellDomain, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                         GL_SHADER_STORAGE_BARRIER_BIT);
-        std::swap(current_, scratch_);
-      }
-    }
-    using namespace merge_kernel;
-    merge_.use();
-    glUniform3iv(LOCATION_RESOLUTION, 1, &res[0]);
-    current_.bindStorage(BUFFER_LAST);
-    sum_.bindStorage(BUFFER_SUM);
-    grid.current.bindStorage(BUFFER_CURRENT);
-    grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
-    dispatchCovering(res, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
+    const GeometryVolume* gv = frame.find(kGeometryVolume);
+    gl_.propagate(grid.geometry.resolution, iterations_, grid.current, grid.accumulated,
+                  gv ? &gv->blocking : nullptr, gv ? gv->firstOccludedIteration : 0);
   }
 
   int iterations() const override { return iterations_; }
 
-  // Per cube and step (a cell-iteration of the cubic grid, as the other propagations count), for
-  // its 12 lattice cells, with N coefficients per channel and 3 channels: each cell reads its four
-  // neighbours' 3N floats, writes its 3N and adds them to the sum (read and written). GL: per far
-  // face (12 per cell) and channel N multiply-adds of the weights and N of the lobe (the lobe's
-  // and, with "centre", the basis's evaluations per face not counted); the GV reads 8 corners
-  // (vec4) per crossing and interpolates 8 x 4. The CPU sums the fluxes per face (16N per cell and
-  // channel: tetrahedralStepMultiplyAdds) and reads each face's transmittance, found once per GV.
-  // Per cube and frame: the split (24 cell values of 3N from two cubes) and the merge (24 cells'
-  // two grids into one cube's), 2 multiply-adds each.
+  // Per cube and step (a cell-iteration of the cubic grid, as the other propagations count) and
+  // per cube and frame (the split and the merge): on GL tetrahedral_gl.h's counts; the CPU sums
+  // the fluxes per face (16N per cell and channel: tetrahedralStepMultiplyAdds) and reads each
+  // face's transmittance, found once per GV.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const double n = shape.coefficients, cells = double(kCellsPerCube);
-    const bool onCpu = runsOnCpu(requirements);
-    double madds = cells * 3 * (onCpu ? tetrahedralStepMultiplyAdds(shape.coefficients) : 12 * 2 * n);
-    double bytes = cells * 4 * (4 * 3 * n + 3 * n + 2 * 3 * n);
-    if (requirements.has(kGeometryVolume)) {
-      madds += cells * 12 * (onCpu ? 3 : 8 * 4);
-      bytes += cells * 12 * (onCpu ? 4 : 8 * 16);
+    TetrahedralGlWork w = tetrahedralGlWork(glSettings(requirements));
+    if (runsOnCpu(requirements)) {
+      const double n = shape.coefficients, cells = double(kTetrahedralCellsPerCube);
+      w.step.multiplyAdds = cells * 3 * tetrahedralStepMultiplyAdds(shape.coefficients);
+      w.step.bytes = cells * 4 * (4 * 3 * n + 3 * n + 2 * 3 * n);
+      if (requirements.has(kGeometryVolume)) {
+        w.step.multiplyAdds += cells * 12 * 3;
+        w.step.bytes += cells * 12 * 4;
+      }
     }
     const double cubes = shape.cells * shape.levels;
-    return {{"cell-iteration", cubes * iterations_, madds, bytes},
-            {"cell", cubes, 2 * 24 * 3 * n * 2, 4 * 24 * 3 * n * 3}};
+    return {{"cell-iteration", cubes * iterations_, w.step.multiplyAdds, w.step.bytes},
+            {"cell", cubes, w.frame.multiplyAdds, w.frame.bytes}};
   }
 
   std::size_t memoryBytes() const override {
-    std::size_t bytes = current_.size() + scratch_.size() + sum_.size() +
-                        faceIntegralTable_.size() + cpuGv_.size() * sizeof(float);
+    std::size_t bytes = gl_.memoryBytes() + cpuGv_.size() * sizeof(float);
     for (const auto& [grid, level] : cpuLevels_)
       bytes += level.lattice.bytes() +
                (level.occlusion.transmittance.size() + level.gv.size()) * sizeof(float);
@@ -254,12 +179,16 @@ public:
   }
 
 private:
+  TetrahedralGlSettings glSettings(const Requirements& requirements) const {
+    return {.coefficients = shared::shCoefficientCount(requirements.shOrder),
+            .withGv = requirements.has(kGeometryVolume),
+            .faceIntegrals = faceIntegrals_};
+  }
 
   int iterations_;
   bool faceIntegrals_;
   int shOrder_ = 1;
-  Program split_, gather_, merge_;
-  gl::Buffer current_, scratch_, sum_, faceIntegralTable_;
+  TetrahedralGlKernel gl_;  // on GL
   bool onCpu_ = false;
   TetrahedralTable<float> cpuTable_{};
   std::vector<float> cpuGv_;  // this frame's GV, read back
