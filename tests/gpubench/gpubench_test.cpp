@@ -51,6 +51,8 @@ const std::map<std::string, Known>& knownCases() {
       {"standard_gather_gv_bounces", {"gather", true, true}},
       {"standard_gather_tiled_gv_bounces", {"gather", true, true}},
       {"tetrahedral", {"", false, false, "tetrahedral"}},
+      {"directed", {"", false, false, "directed"}},
+      {"directed_gv", {"", true, false, "directed"}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
   return cases;
 }
@@ -70,6 +72,7 @@ double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInp
   rig.load(input(inputs, "current"), input(inputs, "accumulated"));
   if (k.withGv) rig.loadGv(input(inputs, "gv"), 1);
   if (k.bounces) rig.loadAlbedo(input(inputs, "albedo"));
+  if (k.strategy == "directed") rig.loadNormals(input(inputs, "normals"));
   rig.propagate();
   return benchChecksum(rig.accumulated()) + benchChecksum(rig.current());
 }

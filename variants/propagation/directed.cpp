@@ -38,8 +38,6 @@
 #include <utility>
 #include <vector>
 
-#include "framework/gl/dispatch.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
@@ -48,22 +46,12 @@
 #include "framework/pipeline/strategy.h"
 #include "variants/propagation/directed_cpu.h"
 #include "variants/propagation/standard_cpu_frame.h"
-#include "variants/propagation/standard_gl.h"
+#include "variants/propagation/directed_gl.h"
 #include "variants/propagation/standard_work.h"
 #include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {
-
-namespace dilate_kernel {
-#include "shaders/propagation/directed_dilate_interface.glsl"
-}
-namespace gather_kernel {
-#include "shaders/propagation/directed_gather_interface.glsl"
-}
-namespace release_kernel {
-#include "shaders/propagation/directed_release_interface.glsl"
-}
 
 class DirectedPropagation final : public PropagationStrategy {
 public:
@@ -93,115 +81,44 @@ public:
       onCpu_ = true;
       return;
     }
-    gather_ = shaders.compute("propagation/directed_gather.comp",
-                              {SpecConstant::f(0, float(angles.farFace)),
-                               SpecConstant::f(1, float(angles.sideFace)),
-                               SpecConstant::b(2, requirements.has(kGeometryVolume)),
-                               SpecConstant::i(3, shared::shCoefficientCount(requirements.shOrder))});
-    dilate_ = shaders.compute("propagation/directed_dilate.comp");
-    scratch_ = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
-                          "light grid (propagation scratch)");
-    if (release_) {
-      const int coefficients = shared::shCoefficientCount(requirements.shOrder);
-      release_kernel_ = shaders.compute(
-          "propagation/directed_release.comp",
-          {SpecConstant::i(0, coefficients), SpecConstant::f(1, float(cosRegionAngle_))});
-      free_kernel_ = StandardGlKernel(shaders, {.coefficients = coefficients,
-                                                .farFace = angles.farFace,
-                                                .sideFace = angles.sideFace,
-                                                .withGv = requirements.has(kGeometryVolume)});
-      for (DualBuffer& b : free_)
-        b = DualBuffer(LightGrid::bytesPerGrid(grid, requirements.shOrder),
-                       "light grid (directed propagation's free light)");
-    }
-    if (dilation_) {
-      const std::size_t normalBytes = std::size_t(4) * grid.cellCount() * sizeof(float);
-      for (gl::Buffer& b : normals_) b = gl::Buffer(normalBytes, "dilated normals");
-    }
+    gl_ = DirectedGlKernel(shaders, glSettings(requirements), grid.resolution);
   }
 
   void propagate(Frame& frame) override {
     if (onCpu_) return propagateOnCpu(frame);
     LightGrid& grid = frame.lightGrid;
-    const gl::Buffer* normals = &frame.get(kNormalGrid).normals;
     const GeometryVolume* gv = frame.find(kGeometryVolume);
-    if (release_) {
-      free_[0].zero();  // the grid's current light starts attached
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    }
-    for (int i = 0; i < iterations_; ++i) {
-      if (dilation_) {
-        using namespace dilate_kernel;
-        gl::Buffer& next = normals_[i % 2];
-        dilate_.use();
-        glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
-        normals->bindStorage(BUFFER_SOURCE);
-        next.bindStorage(BUFFER_TARGET);
-        dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                         GL_SHADER_STORAGE_BARRIER_BIT);
-        normals = &next;
-      }
-      if (release_) {
-        release(grid, *normals, false);
-        gatherFree(grid, gv, i);
-      }
-      using namespace gather_kernel;
-      gather_.use();
-      glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
-      // Only a kernel specialised with the GV keeps this uniform (GL refuses setting a removed one).
-      if (gv) glUniform1i(LOCATION_OCCLUDE_THIS_ITERATION, i >= gv->firstOccludedIteration);
-      grid.current.bindStorage(BUFFER_SOURCE);
-      scratch_.bindStorage(BUFFER_TARGET);
-      grid.accumulated.bindStorage(BUFFER_ACCUMULATED);
-      normals->bindStorage(BUFFER_NORMALS);
-      if (gv) gv->blocking.bindStorage(BUFFER_GEOMETRY_VOLUME);
-      dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                       GL_SHADER_STORAGE_BARRIER_BIT);
-      std::swap(grid.current, scratch_);  // the new light becomes the next step's source
-    }
-    if (release_ && iterations_ > 0) {
-      // The grid's current light: the last step's attached and free light together.
-      release(grid, *normals, true);
-      std::swap(grid.current, free_[0]);
-    }
+    gl_.propagate(grid.geometry.resolution, iterations_, grid.current, grid.accumulated,
+                  frame.get(kNormalGrid).normals, gv ? &gv->blocking : nullptr,
+                  gv ? gv->firstOccludedIteration : 0);
   }
 
   int iterations() const override { return iterations_; }
 
-  // Per cell-iteration: the standard transfer's (standard_work.h) and the second reprojection;
-  // with release, a second standard transfer (the free light) and the release.
-  // On the CPU: per channel the six normals' weighted flux sum and the lobe (6 + min(N, 9)), the
-  // weights and lobe read per cell; the dilation and gains, once per frame, not counted. On GL,
-  // per face and channel the reprojection factor (about 8), per cell the gain G(n) (60 lobe
-  // values of about 8 each) and the lobe (N), the dilation's reads of six neighbours' normals
-  // (vec4) and its write, and the gather's read of the cell's normal.
+  // Per cell-iteration: on GL directed_gl.h's count. On the CPU the standard transfer's
+  // (standard_work.h) and the second reprojection: per channel the six normals' weighted flux sum
+  // and the lobe (6 + min(N, 9)), the weights and lobe read per cell; the dilation and gains, once
+  // per frame, not counted; with release, a second standard transfer (the free light) and the
+  // release: the cell's attached and free light read and written.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const bool onCpu = runsOnCpu(requirements);
-    const double n = shape.coefficients, lobe = std::min(n, 9.0);
-    StandardTransferWork w =
-        standardTransferWork(shape.coefficients, onCpu, false, requirements.has(kGeometryVolume));
-    if (onCpu) {
+    StandardTransferWork w = directedGlWork(glSettings(requirements));
+    if (runsOnCpu(requirements)) {
+      const double n = shape.coefficients, lobe = std::min(n, 9.0);
+      const bool withGv = requirements.has(kGeometryVolume);
+      w = standardTransferWork(shape.coefficients, true, false, withGv);
       w.multiplyAdds += 3 * (6 + lobe);
       w.bytes += 4 * (1 + 6 + lobe);
-    } else {
-      w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
-      w.bytes += 16 * ((dilation_ ? 7 : 0) + 1);
-    }
-    if (release_) {
-      // The free light's standard transfer, and the release: the cell's attached and free light
-      // read and written (on GL also the seven normals it compares).
-      const StandardTransferWork free =
-          standardTransferWork(shape.coefficients, onCpu, false, requirements.has(kGeometryVolume));
-      w.multiplyAdds += free.multiplyAdds;
-      w.bytes += free.bytes + 4 * 4 * 3 * n + (onCpu ? 0 : 16 * 7);
+      if (release_) {
+        const StandardTransferWork free = standardTransferWork(shape.coefficients, true, false, withGv);
+        w.multiplyAdds += free.multiplyAdds;
+        w.bytes += free.bytes + 4 * 4 * 3 * n;
+      }
     }
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
   std::size_t memoryBytes() const override {
-    std::size_t bytes = scratch_.size() + free_[0].size() + free_[1].size() + normals_[0].size() +
-                        normals_[1].size() +
-                        cpu_.memoryBytes() + cpuNormals_.size() * sizeof(float);
+    std::size_t bytes = gl_.memoryBytes() + cpu_.memoryBytes() + cpuNormals_.size() * sizeof(float);
     for (const auto& [grid, cache] : cpuCells_) {
       const ReprojectedCells<float>& r = cache.cells.reprojected;
       const ReleasedCells& released = cache.cells.released;
@@ -256,26 +173,12 @@ private:
     return release_ ? std::optional<double>(cosRegionAngle_) : std::nullopt;
   }
 
-  // directed_release.comp over the grid's attached light and the free light (free_[0]).
-  void release(LightGrid& grid, const gl::Buffer& normals, bool all) {
-    using namespace release_kernel;
-    release_kernel_.use();
-    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.geometry.resolution[0]);
-    glUniform1i(LOCATION_RELEASE_ALL, all ? 1 : 0);
-    normals.bindStorage(BUFFER_NORMALS);
-    grid.current.bindStorage(BUFFER_ATTACHED);
-    free_[0].bindStorage(BUFFER_FREE);
-    dispatchCovering(grid.geometry.resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
-  }
-
-  // One standard gathering step of the free light (free_[0] into free_[1], then swapped),
-  // added to the accumulated grid.
-  void gatherFree(LightGrid& grid, const GeometryVolume* gv, int iteration) {
-    StandardGlOcclusion occlusion;
-    if (gv) occlusion = {.blocking = &gv->blocking, .firstOccludedIteration = gv->firstOccludedIteration};
-    free_kernel_.propagate(grid.geometry.resolution, 1, free_[0], free_[1], grid.accumulated,
-                           occlusion, iteration);
+  DirectedGlSettings glSettings(const Requirements& requirements) const {
+    return {.coefficients = shared::shCoefficientCount(requirements.shOrder),
+            .withGv = requirements.has(kGeometryVolume),
+            .dilation = dilation_,
+            .release = release_,
+            .cosRegionAngle = cosRegionAngle_};
   }
 
   int iterations_;
@@ -283,11 +186,7 @@ private:
   bool release_;
   double cosRegionAngle_;
   int shOrder_ = 1;
-  Program gather_, dilate_, release_kernel_;
-  StandardGlKernel free_kernel_;  // the free light's standard gathering
-  DualBuffer scratch_;  // swapped with the grid's current buffer
-  DualBuffer free_[2];  // with release: the free light and its ping-pong partner
-  gl::Buffer normals_[2];  // dilation ping-pong
+  DirectedGlKernel gl_;             // on GL
   bool onCpu_ = false;
   StandardCpuFrame cpu_;           // on the CPU backend
   std::vector<float> cpuNormals_;  // the injected normals, read back

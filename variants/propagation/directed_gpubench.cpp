@@ -1,0 +1,107 @@
+// lpvlab-gpubench's cases of directed propagation (docs/gpu.md#gpubench): the dilation, the
+// reprojecting gather, the release and the free light's gather, run by the strategy's own launcher
+// (directed_gl.h) with its default settings on propagation_gpubench.h's inputs and an injected
+// normal grid in which a third of the cells hold VPLs (a random flux-weighted normal, flux in
+// [0.1, 1]) and the rest none, so that the dilation has cells to fill. The GV attenuates from the
+// second iteration on. The checksum is of the accumulated grid and the last step's light.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/gpubench/gpu_bench_case.h"
+#include "variants/propagation/directed_gl.h"
+#include "variants/propagation/propagation_gpubench.h"
+
+namespace lpvlab {
+namespace {
+
+// vec4 per cell: sum of flux times normal, and flux; zero where no VPL landed.
+std::vector<float> benchNormals(const glm::ivec3& resolution) {
+  const std::size_t cells = benchCells(resolution);
+  const std::vector<float> landed = benchValues(cells, 6, 0.0f, 1.0f);
+  const std::vector<float> flux = benchValues(cells, 7, 0.1f, 1.0f);
+  const std::vector<float> direction = benchValues(2 * cells, 8, 0.0f, 1.0f);
+  std::vector<float> normals(4 * cells, 0.0f);
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (landed[i] >= 1.0f / 3.0f) continue;
+    const double z = 2.0 * direction[2 * i] - 1.0, phi = 2.0 * M_PI * direction[2 * i + 1];
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
+    for (int c = 0; c < 3; ++c) normals[4 * i + c] = float(flux[i] * n[c]);
+    normals[4 * i + 3] = flux[i];
+  }
+  return normals;
+}
+
+class DirectedBench final : public GpuBenchCase {
+public:
+  explicit DirectedBench(bool withGv) {
+    settings_.withGv = withGv;
+    settings_.cosRegionAngle = std::cos(10.0 * M_PI / 180.0);  // the strategy's default
+  }
+
+  void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
+    shape_ = shape;
+    settings_.coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
+    kernel_ = DirectedGlKernel(shaders, settings_, shape.resolution);
+    inputs_ = benchLightGrids(shape.resolution, settings_.coefficients);
+    const std::size_t bytes = inputs_[0].second.size() * sizeof(float);
+    current_ = DualBuffer(bytes, "gpubench light grid");
+    accumulated_ = DualBuffer(bytes, "gpubench light grid (accumulated)");
+    inputs_.emplace_back("normals", benchNormals(shape.resolution));
+    normals_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench normals");
+    if (settings_.withGv) {
+      inputs_.emplace_back("gv", benchGvBlocking(shape.resolution));
+      blocking_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench GV");
+    }
+  }
+
+  void reset() override {
+    upload(current_, "current");
+    upload(accumulated_, "accumulated");
+    upload(normals_, "normals");
+    if (settings_.withGv) upload(blocking_, "gv");
+    glFinish();  // the uploads are not the kernel's time
+  }
+
+  void run() override {
+    kernel_.propagate(shape_.resolution, shape_.iterations, current_, accumulated_, normals_,
+                      &blocking_, 1);
+  }
+
+  double checksum() const override { return benchGridChecksum(accumulated_, current_); }
+
+  GpuBenchWork work() const override {
+    const StandardTransferWork w = directedGlWork(settings_);
+    return {"cell-iteration", double(benchCells(shape_.resolution)) * shape_.iterations,
+            w.multiplyAdds, w.bytes};
+  }
+
+  const GpuBenchInputs& inputs() const override { return inputs_; }
+
+private:
+  template <class Buffer>
+  void upload(Buffer& buffer, const char* name) {
+    const std::vector<float>& values = benchInput(inputs_, name);
+    buffer.upload(values.data(), values.size() * sizeof(float));
+  }
+
+  DirectedGlSettings settings_;
+  GpuBenchShape shape_;
+  DirectedGlKernel kernel_;
+  DualBuffer current_, accumulated_;
+  gl::Buffer normals_, blocking_;
+  GpuBenchInputs inputs_;
+};
+
+LPVLAB_REGISTER_GPU_BENCH("directed",
+                          "directed propagation: dilation, reprojecting gather, release, free light",
+                          "[propagation] type = \"directed\"", std::make_unique<DirectedBench>(false));
+LPVLAB_REGISTER_GPU_BENCH("directed_gv", "directed propagation with the geometry volume",
+                          "[propagation] type = \"directed\"; [occlusion] type = \"geometry_volume\"",
+                          std::make_unique<DirectedBench>(true));
+
+}  // namespace
+}  // namespace lpvlab
