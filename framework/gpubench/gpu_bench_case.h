@@ -18,11 +18,13 @@
 
 namespace lpvlab {
 
-// The grid a case runs on: resolution, SH order (1-3), iterations (for iterated kernels).
+// What a case runs on: the grid's resolution and SH order (1-3), iterations (for iterated
+// kernels), and the image (for per-pixel kernels).
 struct GpuBenchShape {
   glm::ivec3 resolution{32};
   int shOrder = 1;
   int iterations = 32;
+  glm::ivec2 image{1024, 1024};
 };
 
 // A case's work per run: `units` of `unit` ("cell-iteration", "pixel"), each with the work

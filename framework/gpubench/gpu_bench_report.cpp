@@ -50,6 +50,7 @@ nlohmann::json gpuBenchJson(const GpuBenchMachine& m, const std::vector<GpuBench
                     {"grid", {r.shape.resolution.x, r.shape.resolution.y, r.shape.resolution.z}},
                     {"sh_order", r.shape.shOrder},
                     {"iterations", r.shape.iterations},
+                    {"image", {r.shape.image.x, r.shape.image.y}},
                     {"ms", r.ms.toJson()},
                     {"unit", r.work.unit},
                     {"units", r.work.units},

@@ -33,6 +33,7 @@ struct Options {
   std::vector<int> grids{16, 32, 64, 128};
   std::vector<int> orders{1, 2, 3};
   int iterations = 32;
+  int image = 1024;
   int warmup = 1;
   int repeats = 5;
   std::vector<std::string> cases;  // empty: all
@@ -95,7 +96,7 @@ int run(const Options& o) {
   for (const std::string& name : names)
     for (int order : o.orders)
       for (int grid : o.grids) {
-        const GpuBenchShape shape{glm::ivec3(grid), order, o.iterations};
+        const GpuBenchShape shape{glm::ivec3(grid), order, o.iterations, glm::ivec2(o.image)};
         results.push_back(
             runGpuBench(name, gpuBenchCases().at(name), shaders, shape, o.warmup, o.repeats));
         printGpuBenchRow(std::cout, results.back());
@@ -115,6 +116,8 @@ int main(int argc, char** argv) {
   app.add_option("--orders", o.orders, "SH orders (1-3)")->delimiter(',');
   app.add_option("--iterations", o.iterations, "propagation iterations per run")
       ->check(CLI::Range(1, 4096));
+  app.add_option("--image", o.image, "image side in pixels, for per-pixel kernels")
+      ->check(CLI::Range(1, 16384));
   app.add_option("--warmup", o.warmup, "untimed runs first")->check(CLI::Range(0, 100));
   app.add_option("--repeats", o.repeats, "timed runs (the median is reported)")
       ->check(CLI::Range(1, 1000));

@@ -7,6 +7,7 @@
 #include "framework/gl/dispatch.h"
 #include "framework/math/cascade_placement.h"
 #include "framework/math/shared.h"
+#include "framework/pipeline/cascade_blend.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/host_readback.h"
 
@@ -21,26 +22,14 @@ LPVLAB_SHARED_GLSL_END
 
 namespace lpvlab {
 
-namespace blend_kernel {
-#include "shaders/common/cascade_blend_interface.glsl"
-}
 namespace restrict_kernel {
 #include "shaders/cascade/restrict_interface.glsl"
 }
 
 void setCascadeBlendUniforms(const Frame& frame, int level) {
-  const std::span<const LightGrid> levels = frame.renderedLevels();
-  using namespace blend_kernel;
-  if (levels.size() > std::size_t(CASCADE_MAX_LEVELS))
-    throw Error("cascade: at most " + std::to_string(CASCADE_MAX_LEVELS) + " levels can be rendered");
-  std::vector<glm::vec4> placement;
-  for (const LightGrid& grid : levels)
-    placement.emplace_back(grid.geometry.origin, grid.geometry.cellSize);
-  glUniform4fv(LOCATION_CASCADE_LEVEL, GLsizei(placement.size()), &placement[0][0]);
-  glUniform1i(LOCATION_CASCADE_LEVELS, int(levels.size()));
-  glUniform1i(LOCATION_CASCADE_CURRENT, level);
-  glUniform1f(LOCATION_CASCADE_BLEND_CELLS, frame.cascadeBlendCells);
-  glUniform3iv(LOCATION_CASCADE_RESOLUTION, 1, &levels[std::size_t(level)].geometry.resolution[0]);
+  std::vector<GridGeometry> levels;
+  for (const LightGrid& grid : frame.renderedLevels()) levels.push_back(grid.geometry);
+  setCascadeBlendUniforms(levels, level, frame.cascadeBlendCells);
 }
 
 CascadeCarry::CascadeCarry(ShaderCompiler& shaders, int shOrder, bool onCpu)

@@ -26,6 +26,7 @@
 #include "framework/gpubench/gpu_bench_runner.h"
 #include "io/temp_dir.h"
 #include "propagation_rig.h"
+#include "rendering_rig.h"
 
 namespace lpvlab {
 namespace {
@@ -38,6 +39,7 @@ struct Known {
   bool withGv = false;
   bool bounces = false;
   std::string strategy = "standard";
+  double leakDamping = 0.0;  // rendering strategies ("trilinear")
 };
 
 const std::map<std::string, Known>& knownCases() {
@@ -53,6 +55,8 @@ const std::map<std::string, Known>& knownCases() {
       {"tetrahedral", {"", false, false, "tetrahedral"}},
       {"directed", {"", false, false, "directed"}},
       {"directed_gv", {"", true, false, "directed"}},
+      {"trilinear", {"", false, false, "trilinear"}},
+      {"trilinear_leak_damping", {"", false, false, "trilinear", 1.0}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
   return cases;
 }
@@ -63,8 +67,34 @@ const std::vector<float>& input(const GpuBenchInputs& inputs, const std::string&
   throw std::runtime_error("no input " + name);
 }
 
-// The CPU backend's checksum of the same propagation from `inputs`.
+// The CPU backend's checksum of the same rendering from `inputs`: the G-buffer's pixels in a row
+// (the kernel is per pixel), the grid at the origin with cells 1 / resolution.x wide (as
+// trilinear_gpubench.cpp places it).
+double cpuRenderingChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  test::HandGrid grid({glm::vec3(0.0f), 1.0f / float(shape.resolution.x), shape.resolution},
+                      shape.shOrder);
+  grid.data = input(inputs, "accumulated");
+  const std::vector<float>& p = input(inputs, "position");
+  const std::vector<float>& n = input(inputs, "normal");
+  const std::vector<float>& a = input(inputs, "albedo");
+  std::vector<test::SurfacePixel> pixels;
+  for (std::size_t i = 0; i < p.size() / 4; ++i)
+    pixels.push_back({{p[4 * i], p[4 * i + 1], p[4 * i + 2]},
+                      {n[4 * i], n[4 * i + 1], n[4 * i + 2]},
+                      {a[4 * i], a[4 * i + 1], a[4 * i + 2]}});
+  toml::table table;
+  table.insert("leak_damping", k.leakDamping);
+  const std::vector<glm::dvec3> out = test::renderPixels(
+      k.strategy, table, {grid}, pixels, glm::vec3(0.5f, 0.5f, -1.0f), 0.0f, ComputeBackend::Cpu);
+  std::vector<float> rgb;
+  for (const glm::dvec3& v : out)
+    for (int c = 0; c < 3; ++c) rgb.push_back(float(v[c]));
+  return benchChecksum(rgb);
+}
+
+// The CPU backend's checksum of the same propagation (or rendering) from `inputs`.
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  if (k.strategy == "trilinear") return cpuRenderingChecksum(k, shape, inputs);
   toml::table table = test::iterationsTable(shape.iterations, k.method);
   if (k.bounces) table.insert("bounces", true);
   test::PropagationRig rig(k.strategy, shape.resolution, table, shape.shOrder, k.withGv,
@@ -78,7 +108,8 @@ double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInp
 }
 
 // 4^3 groups, 32x4 and 16x4 tiles and 8-plane spans cut part way, several tiles along each axis.
-const GpuBenchShape kShape{{37, 9, 11}, 1, 3};
+// The image of the rendering cases: 2,048 pixels (one row of them in the CPU rig).
+const GpuBenchShape kShape{{37, 9, 11}, 1, 3, {64, 32}};
 
 TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
   test::glTestContext();
@@ -97,9 +128,13 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       const double cpu = cpuChecksum(knownCases().at(name), shape, bench->inputs());
       EXPECT_NEAR(gl, cpu, 1e-5 * std::abs(cpu)) << name << ", order " << order;
       // The propagation did something: the inputs' own checksum is far from it.
-      const double before = benchChecksum(input(bench->inputs(), "accumulated")) +
-                            benchChecksum(input(bench->inputs(), "current"));
-      EXPECT_GT(std::abs(gl - before), 1e-3 * std::abs(before)) << name << ", order " << order;
+      const bool rendering = knownCases().at(name).strategy == "trilinear";
+      const double before =
+          rendering ? 0.0
+                    : benchChecksum(input(bench->inputs(), "accumulated")) +
+                          benchChecksum(input(bench->inputs(), "current"));
+      EXPECT_GT(std::abs(gl - before), 1e-3 * std::max(std::abs(before), 1.0))
+          << name << ", order " << order;
     }
   }
 }
@@ -110,7 +145,8 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
   test::TempDir dir;
   const test::LpvlabResult r = test::runExecutable(
       gpubenchExecutable(),
-      "--grids 10 --orders 2 --iterations 3 --warmup 0 --repeats 2 --backend osmesa --json out.json",
+      "--grids 10 --orders 2 --iterations 3 --image 16 --warmup 0 --repeats 2 --backend osmesa "
+      "--json out.json",
       dir.path(), dir.path());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json json = nlohmann::json::parse(test::readFile(dir.path() / "out.json"));
@@ -122,12 +158,12 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
   for (const nlohmann::json& row : json["results"]) {
     const std::string name = row["case"];
     ASSERT_TRUE(gpuBenchCases().contains(name)) << name;
-    const GpuBenchShape shape{glm::ivec3(10), 2, 3};
+    const GpuBenchShape shape{glm::ivec3(10), 2, 3, glm::ivec2(16)};
     const GpuBenchResult here = runGpuBench(name, gpuBenchCases().at(name), shaders, shape, 0, 1);
     const double tolerance = knownCases().at(name).method == "scatter" ? 1e-6 * std::abs(here.checksum) : 0.0;
     EXPECT_NEAR(row["checksum"].get<double>(), here.checksum, tolerance) << name;
     EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;
-    EXPECT_EQ(row["units"].get<double>(), 1000.0 * 3) << name;
+    EXPECT_EQ(row["units"].get<double>(), row["unit"] == "pixel" ? 16.0 * 16 : 1000.0 * 3) << name;
     EXPECT_NE(r.out.find(name), std::string::npos) << "no row for " << name;
   }
 }

@@ -20,7 +20,6 @@
 
 #include "framework/core/error.h"
 #include "framework/core/parameters.h"
-#include "framework/gl/dispatch.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/cascade.h"
@@ -46,17 +45,8 @@ void TrilinearKernelRendering::prepare(const StrategySetup& setup) {
   coefficients_ = shared::shCoefficientCount(requirements.shOrder);
   onCpu_ = runsOnCpu(requirements);
   if (onCpu_) return;
-  program_ = setup.shaders.compute("rendering/trilinear.comp",
-                             {SpecConstant::i(0, shared::shCoefficientCount(requirements.shOrder)),
-                              SpecConstant::b(1, options_.leakDamping > 0.0f),
-                              SpecConstant::b(2, options_.specularAlbedo > 0.0f)});
+  gl_ = TrilinearGlKernel(setup.shaders, options_, coefficients_);
 }
-
-namespace {
-namespace kernel {
-#include "shaders/rendering/trilinear_interface.glsl"
-}
-}  // namespace
 
 // The G-buffer comes from the frame's host copies (read back once per frame), each level's
 // accumulated grid from its host side (read back only if GL wrote it last), and the indirect
@@ -105,56 +95,28 @@ TrilinearSettingsOf<Real> TrilinearKernelRendering::settings(const Frame& frame,
 
 void TrilinearKernelRendering::render(Frame& frame) {
   if (onCpu_) return renderOnCpu(frame);
-  using namespace kernel;
+  std::vector<TrilinearGlLevel> levels;
+  for (const LightGrid& level : frame.renderedLevels())
+    levels.push_back({&level.accumulated, level.geometry});
   // The camera is needed only by the glossy march (the view direction).
-  const glm::vec3 cameraPosition = frame.camera ? frame.camera->position : glm::vec3(0.0f);
-  program_.use();
-  glBindTextureUnit(UNIT_G_POSITION, frame.gbuffer.position.id());
-  glBindTextureUnit(UNIT_G_NORMAL, frame.gbuffer.normal.id());
-  glBindTextureUnit(UNIT_G_ALBEDO, frame.gbuffer.albedo.id());
-  glBindImageTexture(IMAGE_OUT_INDIRECT, frame.indirect.texture().id(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                     GL_RGBA32F);
-  glUniform1f(LOCATION_NORMAL_OFFSET_CELLS, options_.normalOffsetCells);
-  glUniform1f(LOCATION_INDIRECT_SCALE, options_.scale);
-  // An option that is off is compiled out with its uniforms, which then must not be set.
-  if (options_.leakDamping > 0.0f) glUniform1f(LOCATION_LEAK_DAMPING_STRENGTH, options_.leakDamping);
-  if (options_.specularAlbedo > 0.0f) {
-    glUniform3fv(LOCATION_CAMERA_POSITION, 1, &cameraPosition[0]);
-    glUniform1f(LOCATION_SPECULAR_ALBEDO, options_.specularAlbedo);
-    glUniform1f(LOCATION_PHONG_EXPONENT, options_.phongExponent);
-    glUniform1f(LOCATION_MARCH_STEP_CELLS, options_.marchStepCells);
-    glUniform1i(LOCATION_MARCH_SAMPLES, options_.marchSamples);
-  }
-  // One dispatch per cascade level, each adding its weighted share.
-  const std::span<const LightGrid> levels = frame.renderedLevels();
-  for (std::size_t level = 0; level < levels.size(); ++level) {
-    const GridGeometry& grid = levels[level].geometry;
-    levels[level].accumulated.bindStorage(BUFFER_ACCUMULATED);
-    glUniform3fv(LOCATION_GRID_ORIGIN, 1, &grid.origin[0]);
-    glUniform1f(LOCATION_CELL_SIZE, grid.cellSize);
-    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
-    setCascadeBlendUniforms(frame, int(level));
-    dispatchCovering({frame.gbuffer.width, frame.gbuffer.height, 1},
-                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_ALL_BARRIER_BITS);
-  }
+  gl_.render({.position = frame.gbuffer.position.id(),
+              .normal = frame.gbuffer.normal.id(),
+              .albedo = frame.gbuffer.albedo.id(),
+              .indirect = frame.indirect.texture().id(),
+              .width = frame.gbuffer.width,
+              .height = frame.gbuffer.height},
+             levels, frame.cascadeBlendCells,
+             frame.camera ? frame.camera->position : glm::vec3(0.0f));
 }
 
 std::vector<WorkCount> TrilinearKernelRendering::work(const FrameShape& shape,
-                                                     const Requirements& requirements) const {
-  const double n = shape.coefficients;
-  const double reads = options_.leakDamping > 0.0f ? 2.0 : 1.0;
-  // Per read (two with leak damping: the value and its slope): 8 corner weights, 24 n
-  // multiply-adds interpolating the coefficients, 3 n projecting them; n lobe coefficients.
-  std::vector<WorkCount> work = {{"pixel", shape.pixels * shape.levels,
-                                  reads * (24 * n + 8 + 3 * n) + n, 3 * 16 + 2 * 16 + reads * 96 * n}};
-  // The glossy march: every sample counted (an upper bound: a march stops where it leaves the
-  // coarsest level), each one read as above without the slope (8 n-float runs of 3 channels);
-  // the Phong lobe's n coefficients once per pixel are counted with the pixel.
-  if (options_.specularAlbedo > 0.0f) {
-    work.front().multiplyAddsPerUnit += n;
+                                                     const Requirements&) const {
+  const TrilinearGlWork w = trilinearGlWork(options_, shape.coefficients);
+  std::vector<WorkCount> work = {
+      {"pixel", shape.pixels * shape.levels, w.pixelMultiplyAdds, w.pixelBytes}};
+  if (options_.specularAlbedo > 0.0f)
     work.push_back({"march-sample", shape.pixels * shape.levels * options_.marchSamples,
-                    24 * n + 8 + 3 * n, 96 * n});
-  }
+                    w.sampleMultiplyAdds, w.sampleBytes});
   return work;
 }
 

@@ -10,26 +10,9 @@
 #include "framework/gl/shader_compiler.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/rendering/trilinear_cpu.h"
+#include "variants/rendering/trilinear_gl.h"
 
 namespace lpvlab {
-
-class Params;
-
-// What the kernel is asked to do, read from a [rendering] table.
-struct TrilinearKernelOptions {
-  float normalOffsetCells = 0.0f;   // normal_offset
-  float leakDamping = 0.0f;         // leak_damping: 0 disables it (the kernel skips the slope)
-  float scale = 1.0f;               // scale: the indirect light times this (for lpvlab fit)
-  float specularAlbedo = 0.0f;      // glossy only; 0 disables the march
-  float phongExponent = 1.0f;
-  float marchStepCells = 1.0f;
-  int marchSamples = 0;
-
-  // normal_offset, leak_damping and scale (both strategies).
-  static TrilinearKernelOptions readDiffuse(Params& params);
-  // The diffuse keys plus specular_albedo, exponent, step and max_distance ("glossy").
-  static TrilinearKernelOptions readGlossy(Params& params);
-};
 
 class TrilinearKernelRendering : public RenderingStrategy {
 public:
@@ -39,10 +22,7 @@ public:
   std::string cpuRefusal(const Requirements& requirements) const override;
   void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
-  // Per pixel and level: the G-buffer's 3 texels (16 B each) and the output's read and write;
-  // the lobe (N), and per channel the 8 corner cells' N coefficients against it plus the 8
-  // trilinear weights (24N + 8, its 96N bytes). Leak damping reads the corners once more for
-  // the slope. The glossy march (specular_albedo > 0) is not modelled: then nothing is counted.
+  // Per pixel and level, and per march sample of the glossy march: trilinear_gl.h's counts.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override;
 
@@ -62,7 +42,7 @@ private:
   TrilinearSettingsOf<Real> settings(const Frame& frame, const Constant& constant) const;
 
   TrilinearKernelOptions options_;
-  Program program_;
+  TrilinearGlKernel gl_;  // on GL
   bool onCpu_ = false;
   int coefficients_ = 4;
 };
