@@ -35,7 +35,7 @@ std::vector<float> benchNormals(const glm::ivec3& resolution) {
   return normals;
 }
 
-class DirectedBench final : public GpuBenchCase {
+class DirectedBench final : public PropagationBench {
 public:
   explicit DirectedBench(bool withGv) {
     settings_.withGv = withGv;
@@ -43,27 +43,11 @@ public:
   }
 
   void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
-    shape_ = shape;
     settings_.coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
     kernel_ = DirectedGlKernel(shaders, settings_, shape.resolution);
-    inputs_ = benchLightGrids(shape.resolution, settings_.coefficients);
-    const std::size_t bytes = inputs_[0].second.size() * sizeof(float);
-    current_ = DualBuffer(bytes, "gpubench light grid");
-    accumulated_ = DualBuffer(bytes, "gpubench light grid (accumulated)");
-    inputs_.emplace_back("normals", benchNormals(shape.resolution));
-    normals_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench normals");
-    if (settings_.withGv) {
-      inputs_.emplace_back("gv", benchGvBlocking(shape.resolution));
-      blocking_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench GV");
-    }
-  }
-
-  void reset() override {
-    upload(current_, "current");
-    upload(accumulated_, "accumulated");
-    upload(normals_, "normals");
-    if (settings_.withGv) upload(blocking_, "gv");
-    glFinish();  // the uploads are not the kernel's time
+    prepareGrids(shape, settings_.coefficients);
+    addInput("normals", benchNormals(shape.resolution), normals_);
+    if (settings_.withGv) addInput("gv", benchGvBlocking(shape.resolution), blocking_);
   }
 
   void run() override {
@@ -71,29 +55,15 @@ public:
                       &blocking_, 1);
   }
 
-  double checksum() const override { return benchGridChecksum(accumulated_, current_); }
-
   GpuBenchWork work() const override {
     const StandardTransferWork w = directedGlWork(settings_);
-    return {"cell-iteration", double(benchCells(shape_.resolution)) * shape_.iterations,
-            w.multiplyAdds, w.bytes};
+    return {"cell-iteration", cellIterations(), w.multiplyAdds, w.bytes};
   }
-
-  const GpuBenchInputs& inputs() const override { return inputs_; }
 
 private:
-  template <class Buffer>
-  void upload(Buffer& buffer, const char* name) {
-    const std::vector<float>& values = benchInput(inputs_, name);
-    buffer.upload(values.data(), values.size() * sizeof(float));
-  }
-
   DirectedGlSettings settings_;
-  GpuBenchShape shape_;
   DirectedGlKernel kernel_;
-  DualBuffer current_, accumulated_;
   gl::Buffer normals_, blocking_;
-  GpuBenchInputs inputs_;
 };
 
 LPVLAB_REGISTER_GPU_BENCH("directed",

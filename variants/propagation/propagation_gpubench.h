@@ -6,11 +6,15 @@
 // [0.1, 1] and rho in [0, 1] per channel.
 
 #include <cstddef>
+#include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "framework/gl/dual_buffer.h"
+#include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
 #include "framework/gpubench/gpu_bench_inputs.h"
 
@@ -60,5 +64,47 @@ inline const std::vector<float>& benchInput(const GpuBenchInputs& inputs, const 
     if (n == name) return values;
   return inputs.front().second;  // not reached: every case names what it uploads
 }
+
+// What every propagation case has: its inputs, each uploaded by reset() into the buffer
+// addInput allocated for it, the light grid (current_) and the accumulated grid, and the
+// checksum over both. A case adds its kernel, its other inputs and run().
+class PropagationBench : public GpuBenchCase {
+public:
+  void reset() override {
+    for (const auto& [name, upload] : uploads_) upload(benchInput(inputs_, name.c_str()));
+    glFinish();  // the uploads are not the kernel's time
+  }
+  double checksum() const override { return benchGridChecksum(accumulated_, current_); }
+  const GpuBenchInputs& inputs() const override { return inputs_; }
+
+protected:
+  // The light grid and its accumulated grid for `shape`, with `coefficients` per channel.
+  void prepareGrids(const GpuBenchShape& shape, int coefficients) {
+    shape_ = shape;
+    inputs_.clear();
+    uploads_.clear();
+    for (auto& [name, values] : benchLightGrids(shape.resolution, coefficients))
+      addInput(name, std::move(values), name == "current" ? current_ : accumulated_);
+  }
+  // `values` as input `name`, uploaded into `buffer` (a DualBuffer or gl::Buffer, allocated here).
+  template <class Buffer>
+  void addInput(const std::string& name, std::vector<float> values, Buffer& buffer) {
+    buffer = Buffer(values.size() * sizeof(float), "gpubench " + name);
+    inputs_.emplace_back(name, std::move(values));
+    uploads_.emplace_back(name, [&buffer](const std::vector<float>& v) {
+      buffer.upload(v.data(), v.size() * sizeof(float));
+    });
+  }
+  double cellIterations() const {
+    return double(benchCells(shape_.resolution)) * shape_.iterations;
+  }
+
+  GpuBenchShape shape_;
+  DualBuffer current_, accumulated_;
+
+private:
+  GpuBenchInputs inputs_;
+  std::vector<std::pair<std::string, std::function<void(const std::vector<float>&)>>> uploads_;
+};
 
 }  // namespace lpvlab

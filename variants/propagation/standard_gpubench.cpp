@@ -17,7 +17,7 @@
 namespace lpvlab {
 namespace {
 
-class StandardBench final : public GpuBenchCase {
+class StandardBench final : public PropagationBench {
 public:
   StandardBench(bool scatter, bool tiled, bool withGv, bool bounces)
       : settings_{.farFace = cubeFaceSolidAngles().farFace,
@@ -28,29 +28,12 @@ public:
                   .tiled = tiled} {}
 
   void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
-    shape_ = shape;
     settings_.coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
     kernel_ = StandardGlKernel(shaders, settings_);
-    inputs_ = benchLightGrids(shape.resolution, settings_.coefficients);
-    const std::size_t bytes = inputs_[0].second.size() * sizeof(float);
-    for (DualBuffer* b : {&current_, &scratch_, &accumulated_})
-      *b = DualBuffer(bytes, "gpubench light grid");
-    if (settings_.withGv) {
-      inputs_.emplace_back("gv", benchGvBlocking(shape.resolution));
-      blocking_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench GV");
-    }
-    if (settings_.bounces) {
-      inputs_.emplace_back("albedo", benchGvAlbedo(shape.resolution));
-      albedo_ = gl::Buffer(inputs_.back().second.size() * sizeof(float), "gpubench GV albedo");
-    }
-  }
-
-  void reset() override {
-    upload(current_, "current");
-    upload(accumulated_, "accumulated");
-    if (settings_.withGv) upload(blocking_, "gv");
-    if (settings_.bounces) upload(albedo_, "albedo");
-    glFinish();  // the uploads are not the kernel's time
+    prepareGrids(shape, settings_.coefficients);
+    scratch_ = DualBuffer(current_.size(), "gpubench light grid (scratch)");
+    if (settings_.withGv) addInput("gv", benchGvBlocking(shape.resolution), blocking_);
+    if (settings_.bounces) addInput("albedo", benchGvAlbedo(shape.resolution), albedo_);
   }
 
   void run() override {
@@ -60,29 +43,16 @@ public:
                       occlusion);
   }
 
-  double checksum() const override { return benchGridChecksum(accumulated_, current_); }
-
   GpuBenchWork work() const override {
     const StandardTransferWork w = standardGlKernelWork(settings_);
-    return {"cell-iteration", double(benchCells(shape_.resolution)) * shape_.iterations,
-            w.multiplyAdds, w.bytes};
+    return {"cell-iteration", cellIterations(), w.multiplyAdds, w.bytes};
   }
-
-  const GpuBenchInputs& inputs() const override { return inputs_; }
 
 private:
-  template <class Buffer>
-  void upload(Buffer& buffer, const char* name) {
-    const std::vector<float>& values = benchInput(inputs_, name);
-    buffer.upload(values.data(), values.size() * sizeof(float));
-  }
-
   StandardGlSettings settings_;
-  GpuBenchShape shape_;
   StandardGlKernel kernel_;
-  DualBuffer current_, scratch_, accumulated_;
+  DualBuffer scratch_;
   gl::Buffer blocking_, albedo_;
-  GpuBenchInputs inputs_;
 };
 
 #define STANDARD_CASE(name, description, settings, scatter, tiled, gv, bounces)               \
