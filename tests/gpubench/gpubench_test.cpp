@@ -27,6 +27,7 @@
 #include "io/temp_dir.h"
 #include "propagation_rig.h"
 #include "rendering_rig.h"
+#include "variants/injection/rsm_vpl_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -56,6 +57,8 @@ const std::map<std::string, Known>& knownCases() {
       {"directed", {"", false, false, "directed"}},
       {"directed_gv", {"", true, false, "directed"}},
       {"trilinear", {"", false, false, "trilinear"}},
+      {"rsm_vpl", {"", false, false, "rsm_vpl"}},
+      {"rsm_vpl_normals", {"", false, true, "rsm_vpl"}},  // bounces: here, the normal grid
       {"trilinear_leak_damping", {"", false, false, "trilinear", 1.0}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
   return cases;
@@ -92,8 +95,32 @@ double cpuRenderingChecksum(const Known& k, const GpuBenchShape& shape, const Gp
   return benchChecksum(rgb);
 }
 
-// The CPU backend's checksum of the same propagation (or rendering) from `inputs`.
+// The CPU kernel's checksum of the same injection from `inputs`: one view's RSM of image.x texels
+// square, into a zero grid at the origin with cells 1 / resolution.x wide (as
+// rsm_vpl_gpubench.cpp places it), with the normal grid when the case has it.
+double cpuInjectionChecksum(bool withNormals, const GpuBenchShape& shape,
+                            const GpuBenchInputs& inputs) {
+  auto image = [&](const char* name) {
+    const std::vector<float>& v = input(inputs, name);
+    HostImage out{shape.image.x, shape.image.x, 1, {}};
+    for (std::size_t i = 0; i < v.size(); i += 4)
+      out.texels.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
+    return out;
+  };
+  const HostImage position = image("rsm_position"), normal = image("rsm_normal"),
+                  flux = image("rsm_flux");
+  const int coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
+  const std::size_t cells = std::size_t(shape.resolution.x) * shape.resolution.y * shape.resolution.z;
+  std::vector<float> grid(3 * coefficients * cells, 0.0f), normals(4 * cells, 0.0f);
+  injectRsmVplsCpu({&position, &normal, &flux},
+                   {glm::vec3(0.0f), 1.0f / float(shape.resolution.x), shape.resolution},
+                   coefficients, 1.0f, grid.data(), withNormals ? normals.data() : nullptr);
+  return benchChecksum(grid) + (withNormals ? benchChecksum(normals) : 0.0);
+}
+
+// The CPU backend's checksum of the same propagation (or rendering, or injection) from `inputs`.
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  if (k.strategy == "rsm_vpl") return cpuInjectionChecksum(k.bounces, shape, inputs);
   if (k.strategy == "trilinear") return cpuRenderingChecksum(k, shape, inputs);
   toml::table table = test::iterationsTable(shape.iterations, k.method);
   if (k.bounces) table.insert("bounces", true);
@@ -128,9 +155,10 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       const double cpu = cpuChecksum(knownCases().at(name), shape, bench->inputs());
       EXPECT_NEAR(gl, cpu, 1e-5 * std::abs(cpu)) << name << ", order " << order;
       // The propagation did something: the inputs' own checksum is far from it.
-      const bool rendering = knownCases().at(name).strategy == "trilinear";
+      const bool fromZero = knownCases().at(name).strategy == "trilinear" ||
+                            knownCases().at(name).strategy == "rsm_vpl";
       const double before =
-          rendering ? 0.0
+          fromZero ? 0.0
                     : benchChecksum(input(bench->inputs(), "accumulated")) +
                           benchChecksum(input(bench->inputs(), "current"));
       EXPECT_GT(std::abs(gl - before), 1e-3 * std::max(std::abs(before), 1.0))
@@ -160,10 +188,14 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
     ASSERT_TRUE(gpuBenchCases().contains(name)) << name;
     const GpuBenchShape shape{glm::ivec3(10), 2, 3, glm::ivec2(16)};
     const GpuBenchResult here = runGpuBench(name, gpuBenchCases().at(name), shaders, shape, 0, 1);
-    const double tolerance = knownCases().at(name).method == "scatter" ? 1e-6 * std::abs(here.checksum) : 0.0;
+    // Float atomics (scattering, injection) add in any order.
+    const bool atomics = knownCases().at(name).method == "scatter" ||
+                         knownCases().at(name).strategy == "rsm_vpl";
+    const double tolerance = atomics ? 1e-6 * std::abs(here.checksum) : 0.0;
     EXPECT_NEAR(row["checksum"].get<double>(), here.checksum, tolerance) << name;
     EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;
-    EXPECT_EQ(row["units"].get<double>(), row["unit"] == "pixel" ? 16.0 * 16 : 1000.0 * 3) << name;
+    EXPECT_EQ(row["units"].get<double>(), row["unit"] == "cell-iteration" ? 1000.0 * 3 : 16.0 * 16)
+        << name;
     EXPECT_NE(r.out.find(name), std::string::npos) << "no row for " << name;
   }
 }

@@ -15,22 +15,17 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/gl/dispatch.h"
-#include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/pipeline/frame.h"
 #include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/strategy.h"
 #include "variants/injection/rsm_vpl_cpu.h"
+#include "variants/injection/rsm_vpl_gl.h"
 #include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {
-
-namespace kernel {
-#include "shaders/injection/rsm_vpl_interface.glsl"
-}
 
 class RsmVplInjection final : public InjectionStrategy {
 public:
@@ -44,47 +39,35 @@ public:
   }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
 
-  // Per RSM texel (a VPL), per level: 3 texel fetches (16 B each); the lobe (N coefficients,
-  // about a multiply-add each) and 3N products; the cell from the shifted position (about 10);
-  // with the normal grid 4 more sums. GL adds the products atomically (read and write, 8 B
-  // each); the CPU writes and reads the texel's cell and its place in the sort by cell
-  // (4 + 8 B, each twice) and sums in registers, each cell's total stored once (not counted).
+  // Per RSM texel (a VPL), per level: rsm_vpl_gl.h's count on GL; the CPU does the same
+  // arithmetic, and writes and reads the texel's cell and its place in the sort by cell (4 + 8 B,
+  // each twice) and sums in registers, each cell's total stored once (not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const double n = shape.coefficients;
-    const double normals = requirements.has(kNormalGrid) ? 4.0 : 0.0;
-    const double bytes = runsOnCpu(requirements) ? 3 * 16 + 2 * (4 + 8) : 3 * 16 + 8 * (3 * n + normals);
-    return {{"VPL", shape.rsmTexels * shape.levels, 4 * n + 10 + normals, bytes}};
+    StandardTransferWork w = rsmVplGlWork(shape.coefficients, requirements.has(kNormalGrid));
+    if (runsOnCpu(requirements)) w.bytes = 3 * 16 + 2 * (4 + 8);
+    return {{"VPL", shape.rsmTexels * shape.levels, w.multiplyAdds, w.bytes}};
   }
 
   void prepare(const StrategySetup& setup) override {
     coefficients_ = shared::shCoefficientCount(setup.requirements.shOrder);
     onCpu_ = runsOnCpu(setup.requirements);
     if (onCpu_) return;
-    program_ = setup.shaders.compute(
-        "injection/rsm_vpl.comp",
-        {SpecConstant::i(0, shared::shCoefficientCount(setup.requirements.shOrder)),
-         SpecConstant::b(1, setup.requirements.has(kNormalGrid))});
+    gl_ = RsmVplGlKernel(setup.shaders, coefficients_, setup.requirements.has(kNormalGrid),
+                         shiftCells_);
   }
 
   void inject(Frame& frame) override {
     if (onCpu_) return injectOnCpu(frame);
-    using namespace kernel;
     const LightMaps& maps = frame.lightMaps;
-    const GridGeometry& grid = frame.lightGrid.geometry;
-    program_.use();
-    glBindTextureUnit(UNIT_RSM_POSITION, maps.rsmPosition.id());
-    glBindTextureUnit(UNIT_RSM_NORMAL, maps.rsmNormal.id());
-    glBindTextureUnit(UNIT_RSM_FLUX, maps.rsmFlux.id());
-    frame.lightGrid.current.bindStorage(BUFFER_GRID);
-    if (const NormalGrid* normals = frame.find(kNormalGrid)) normals->normals.bindStorage(BUFFER_NORMALS);
-    glUniform3fv(LOCATION_GRID_ORIGIN, 1, &grid.origin[0]);
-    glUniform1f(LOCATION_CELL_SIZE, grid.cellSize);
-    glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
-    glUniform1f(LOCATION_SHIFT_CELLS, shiftCells_);
-    glUniform1i(LOCATION_RSM_RESOLUTION, maps.rsmResolution);
-    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views},
-                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
+    const NormalGrid* normals = frame.find(kNormalGrid);
+    gl_.inject({.position = maps.rsmPosition.id(),
+                .normal = maps.rsmNormal.id(),
+                .flux = maps.rsmFlux.id(),
+                .resolution = maps.rsmResolution,
+                .views = maps.views},
+               frame.lightGrid.geometry, frame.lightGrid.current,
+               normals ? &normals->normals : nullptr);
   }
 
   std::size_t memoryBytes() const override {
@@ -109,7 +92,7 @@ private:
   }
 
   float shiftCells_;
-  Program program_;
+  RsmVplGlKernel gl_;  // on GL
   bool onCpu_ = false;
   int coefficients_ = 4;
   std::vector<float> hostNormals_;  // on the CPU backend

@@ -1,0 +1,114 @@
+// lpvlab-gpubench's cases of RSM injection (docs/gpu.md#gpubench): the kernel run by the
+// strategy's own launcher (rsm_vpl_gl.h) over one view's RSMs of shape.image.x texels square into
+// a light grid at the origin with cells 1 / resolution.x wide. The RSM texels
+// (gpu_bench_inputs.h's hashed values): points uniform in the grid's box, random unit normals,
+// flux in [0, 1] per channel. The grid (and the normal grid) start at zero; the VPLs are added
+// with float atomics, in any order. The checksum is of the grid and the normal grid.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/gl/resources.h"
+#include "framework/gpubench/gpu_bench_case.h"
+#include "variants/injection/rsm_vpl_gl.h"
+#include "variants/propagation/propagation_gpubench.h"
+
+namespace lpvlab {
+namespace {
+
+// RGBA32F texels of one view: positions in [0, extent] (w = 1: covered), unit normals, flux.
+GpuBenchInputs benchRsm(int side, const glm::vec3& extent) {
+  const std::size_t texels = std::size_t(side) * side;
+  const std::vector<float> p = benchValues(3 * texels, 20, 0.0f, 1.0f);
+  const std::vector<float> d = benchValues(2 * texels, 21, 0.0f, 1.0f);
+  const std::vector<float> f = benchValues(3 * texels, 22, 0.0f, 1.0f);
+  std::vector<float> position(4 * texels, 1.0f), normal(4 * texels, 0.0f), flux(4 * texels, 1.0f);
+  for (std::size_t i = 0; i < texels; ++i) {
+    const double z = 2.0 * d[2 * i] - 1.0, phi = 2.0 * M_PI * d[2 * i + 1];
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
+    for (int c = 0; c < 3; ++c) {
+      position[4 * i + c] = p[3 * i + c] * extent[c];
+      normal[4 * i + c] = float(n[c]);
+      flux[4 * i + c] = f[3 * i + c];
+    }
+  }
+  return {{"rsm_position", position}, {"rsm_normal", normal}, {"rsm_flux", flux}};
+}
+
+class RsmVplBench final : public GpuBenchCase {
+public:
+  explicit RsmVplBench(bool withNormals) : withNormals_(withNormals) {}
+
+  void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
+    shape_ = shape;
+    coefficients_ = (shape.shOrder + 1) * (shape.shOrder + 1);
+    kernel_ = RsmVplGlKernel(shaders, coefficients_, withNormals_, 1.0f);
+    const int side = shape.image.x;
+    inputs_ = benchRsm(side, glm::vec3(shape.resolution) / float(shape.resolution.x));
+    for (gl::Texture* t : {&position_, &normal_, &flux_})
+      *t = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, side, side, 1, "gpubench RSM");
+    const std::size_t cells = benchCells(shape.resolution);
+    grid_ = DualBuffer(3 * coefficients_ * cells * sizeof(float), "gpubench light grid");
+    if (withNormals_) normals_ = gl::Buffer(4 * cells * sizeof(float), "gpubench normal grid");
+  }
+
+  void reset() override {
+    const int side = shape_.image.x;
+    for (auto [texture, name] : {std::pair{&position_, "rsm_position"}, {&normal_, "rsm_normal"},
+                                 {&flux_, "rsm_flux"}})
+      glTextureSubImage3D(texture->id(), 0, 0, 0, 0, side, side, 1, GL_RGBA, GL_FLOAT,
+                          benchInput(inputs_, name).data());
+    grid_.zero();
+    if (withNormals_) normals_.zero();
+    glFinish();  // the uploads are not the kernel's time
+  }
+
+  void run() override {
+    kernel_.inject({.position = position_.id(), .normal = normal_.id(), .flux = flux_.id(),
+                    .resolution = shape_.image.x, .views = 1},
+                   {glm::vec3(0.0f), 1.0f / float(shape_.resolution.x), shape_.resolution}, grid_,
+                   &normals_);
+  }
+
+  double checksum() const override {
+    std::vector<float> values(grid_.size() / sizeof(float));
+    grid_.download(values.data(), grid_.size());
+    double sum = benchChecksum(values);
+    if (withNormals_) {
+      values.resize(normals_.size() / sizeof(float));
+      normals_.download(values.data(), normals_.size());
+      sum += benchChecksum(values);
+    }
+    return sum;
+  }
+
+  GpuBenchWork work() const override {
+    const StandardTransferWork w = rsmVplGlWork(coefficients_, withNormals_);
+    return {"VPL", double(shape_.image.x) * shape_.image.x, w.multiplyAdds, w.bytes};
+  }
+
+  const GpuBenchInputs& inputs() const override { return inputs_; }
+
+private:
+  bool withNormals_;
+  GpuBenchShape shape_;
+  int coefficients_ = 4;
+  RsmVplGlKernel kernel_;
+  gl::Texture position_, normal_, flux_;
+  DualBuffer grid_;
+  gl::Buffer normals_;
+  GpuBenchInputs inputs_;
+};
+
+LPVLAB_REGISTER_GPU_BENCH("rsm_vpl", "RSM injection: an --image-square RSM's texels as VPLs",
+                          "[injection] type = \"rsm_vpl\"", std::make_unique<RsmVplBench>(false));
+LPVLAB_REGISTER_GPU_BENCH("rsm_vpl_normals",
+                          "RSM injection with the VPLs' normals (for directed propagation)",
+                          "[injection] type = \"rsm_vpl\"; [propagation] type = \"directed\"",
+                          std::make_unique<RsmVplBench>(true));
+
+}  // namespace
+}  // namespace lpvlab
