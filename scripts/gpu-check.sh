@@ -62,6 +62,7 @@ sh_order_3|-|-s grid.sh_order=3|
 geometry_volume|-|-s occlusion.type="geometry_volume"|
 scatter|-|-s propagation.method="scatter"|
 tiled|-|-s propagation.gpu_kernel="tiled"|
+directed_tiled|-|-s propagation.type="directed" -s propagation.gpu_kernel="tiled"|
 tiled_sh_order_3_gv|-|-s propagation.gpu_kernel="tiled" -s grid.sh_order=3 -s occlusion.type="geometry_volume"|
 glossy|-|-s rendering.type="glossy" -s rendering.specular_albedo=0.5|
 cascades|-|-s cascades.levels=3|

@@ -1,9 +1,10 @@
 #version 450
 // One iteration of directed propagation by gathering: as standard_gather.comp, with the second
 // reprojection of alg. 6.3 about this (the receiving) cell's dilated normal applied to what each
-// face passes (directed_faces.glsl). Any SH order: SH_COEFFICIENTS per channel. With a geometry
-// volume, the light crossing the shared face is attenuated by its blocking potential (thesis
-// alg. 6.2 lines 11-15) from the occlusion strategy's first occluded iteration on.
+// face passes (directed_transfer.glsl, directed_faces.glsl). Any SH order: SH_COEFFICIENTS per
+// channel. With a geometry volume, the light crossing the shared face is attenuated by its
+// blocking potential (thesis alg. 6.2 lines 11-15) from the occlusion strategy's first occluded
+// iteration on.
 #include "directed_gather_interface.glsl"
 layout(local_size_x = GROUP_SIZE_X, local_size_y = GROUP_SIZE_Y, local_size_z = GROUP_SIZE_Z) in;
 layout(constant_id = 0) const float FAR_FACE_SOLID_ANGLE = 0.0;
@@ -20,9 +21,7 @@ layout(location = LOCATION_RESOLUTION) uniform ivec3 resolution;
 layout(location = LOCATION_OCCLUDE_THIS_ITERATION) uniform int occludeThisIteration;  // 0 or 1
 
 const int N = SH_COEFFICIENTS;  // arrays sized by the specialisation constant stay in registers
-#include "directed_faces.glsl"
-#include "../common/grid.glsl"
-#include "../common/geometry_volume_lookup.glsl"
+#include "directed_transfer.glsl"
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
@@ -33,11 +32,7 @@ void main() {
   float gain = directedGainOf(normals[index], FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE, N);
   bool reproject = gain != 0.0;
   bool occluded = GEOMETRY_VOLUME && occludeThisIteration != 0;
-  // Without a normal: the standard transfer's coefficients. With one, every face re-emits a
-  // multiple of cosLobe(normal): only that multiple is summed, per channel.
-  float gathered[3 * N];
-  for (int i = 0; i < 3 * N; ++i) gathered[i] = 0.0;
-  float reprojected[3] = float[3](0.0, 0.0, 0.0);
+  directedGatherBegin();
   for (int axis = 0; axis < 3; ++axis) {
     for (int sign = -1; sign <= 1; sign += 2) {
       ivec3 offset = ivec3(0);
@@ -45,46 +40,18 @@ void main() {
       ivec3 neighbour = cell + offset;
       if (!cellInside(neighbour, resolution)) continue;
       int n = cellIndex(neighbour, resolution);
-      float c[3 * N];
       for (int channel = 0; channel < 3; ++channel)
-        for (int k = 0; k < N; ++k) c[channel * N + k] = source[coefficientIndex(channel, k, N, n, cells)];
-      vec3 towardsUs = vec3(-offset);
-      for (int f = 0; f < STANDARD_FACES; ++f) {
-        vec3 direction = standardFaceDirection(towardsUs, f);
-        vec3 faceNormal = standardFaceNormal(towardsUs, f);
-        float solidAngle = standardFaceSolidAngle(f, FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
-        float transmittance = 1.0;
-        if (occluded) {
-          vec3 crossing = standardFaceCrossing(vec3(neighbour) + 0.5, towardsUs, f);
-          transmittance = gvTransmittance(gvBlockingAt(crossing, resolution + 1), direction);
-        }
-        float basis[N];
-        float lobe[N];  // the standard transfer's lobe, for a cell without a normal
-        for (int k = 0; k < N; ++k) {
-          basis[k] = shBasisAt(k, direction);
-          lobe[k] = reproject ? 0.0 : shCosineLobeAt(k, faceNormal) / PI;
-        }
-        float factor = reproject ? directedReprojection(faceNormal, normal, gain, N) : 0.0;
-        for (int channel = 0; channel < 3; ++channel) {
-          float intensity = 0.0;
-          for (int k = 0; k < N; ++k) intensity += c[channel * N + k] * basis[k];
-          float flux = standardFaceFlux(intensity, solidAngle, transmittance);
-          if (reproject) {
-            reprojected[channel] += flux * factor;
-          } else {
-            for (int k = 0; k < N; ++k) gathered[channel * N + k] += flux * lobe[k];
-          }
-        }
-      }
+        for (int k = 0; k < N; ++k)
+          directedSource[channel * N + k] = source[coefficientIndex(channel, k, N, n, cells)];
+      directedGatherFrom(neighbour, vec3(-offset), normal, gain, reproject, occluded,
+                         FAR_FACE_SOLID_ANGLE, SIDE_FACE_SOLID_ANGLE);
     }
   }
-  if (reproject)
-    for (int channel = 0; channel < 3; ++channel)
-      for (int k = 0; k < N; ++k) gathered[channel * N + k] = reprojected[channel] * shCosineLobeAt(k, normal);
+  directedGatherEnd(normal, reproject);
   for (int channel = 0; channel < 3; ++channel)
     for (int k = 0; k < N; ++k) {
       int i = coefficientIndex(channel, k, N, index, cells);
-      target[i] = gathered[channel * N + k];
-      accumulated[i] += gathered[channel * N + k];
+      target[i] = directedGathered[channel * N + k];
+      accumulated[i] += directedGathered[channel * N + k];
     }
 }

@@ -12,9 +12,3 @@ const int BUFFER_GEOMETRY_VOLUME_ALBEDO = 4;      // storage buffer: GeometryVol
 const int LOCATION_RESOLUTION = 0;                // uniform ivec3 resolution
 const int LOCATION_ITERATION = 1;                 // uniform int iteration
 const int LOCATION_FIRST_OCCLUDED_ITERATION = 2;  // uniform int firstOccludedIteration
-// standard_gather_tiled.comp (gpu_kernel = "tiled"): its work group is a TILE_X x TILE_Y tile of
-// one z-plane (specialisation constants 5 and 6), which walks TILED_Z_SPAN planes up the grid.
-const int SPEC_TILE_X = 5;
-const int SPEC_TILE_Y = 6;
-const int TILED_GROUP_SIZE_Z = 1;                 // a tile is one plane thick
-const int TILED_Z_SPAN = 8;

@@ -56,6 +56,8 @@ const std::map<std::string, Known>& knownCases() {
       {"tetrahedral", {"", false, false, "tetrahedral"}},
       {"directed", {"", false, false, "directed"}},
       {"directed_gv", {"", true, false, "directed"}},
+      {"directed_tiled", {"", false, false, "directed"}},
+      {"directed_tiled_gv", {"", true, false, "directed"}},
       {"trilinear", {"", false, false, "trilinear"}},
       {"rsm_vpl", {"", false, false, "rsm_vpl"}},
       {"rsm_vpl_normals", {"", false, true, "rsm_vpl"}},  // bounces: here, the normal grid

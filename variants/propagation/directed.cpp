@@ -29,6 +29,8 @@
 // |            |      |         | perpendicular walls' cells differ by 90, the averaged normals |
 // |            |      |         | where they meet by 45 from each; 10 keeps a curved surface of |
 // |            |      |         | radius 6 cells or more one region (0..90)                     |
+// | gpu_kernel | text | "simple" | GL gathers' layout: "simple" or "tiled" (tiled_walk.glsl); the |
+// |            |      |         | same grid; the CPU backend ignores it                         |
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +61,7 @@ public:
       : iterations_(params.get<int>("iterations", 32, {.min = 0, .max = 4096})),
         dilation_(params.get<bool>("dilation", true)),
         release_(params.get<bool>("release", true)),
+        tiled_(params.getChoice("gpu_kernel", "simple", {"simple", "tiled"}) == "tiled"),
         cosRegionAngle_(std::cos(params.get<double>("region_angle_deg", 10.0, {.min = 0.0, .max = 90.0}) *
                                  M_PI / 180.0)) {}
 
@@ -178,12 +181,14 @@ private:
             .withGv = requirements.has(kGeometryVolume),
             .dilation = dilation_,
             .release = release_,
-            .cosRegionAngle = cosRegionAngle_};
+            .cosRegionAngle = cosRegionAngle_,
+            .tiled = tiled_};
   }
 
   int iterations_;
   bool dilation_;
   bool release_;
+  bool tiled_;
   double cosRegionAngle_;
   int shOrder_ = 1;
   DirectedGlKernel gl_;             // on GL

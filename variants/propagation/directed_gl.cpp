@@ -1,9 +1,11 @@
 #include "variants/propagation/directed_gl.h"
 
 #include <utility>
+#include <vector>
 
 #include "framework/gl/dispatch.h"
 #include "framework/math/solid_angle.h"
+#include "variants/propagation/tiled_walk.h"
 
 namespace lpvlab {
 namespace {
@@ -26,9 +28,10 @@ StandardTransferWork directedGlWork(const DirectedGlSettings& settings) {
   StandardTransferWork w = standardGlTransferWork(settings.coefficients, false, settings.withGv);
   w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
   w.bytes += 16 * ((settings.dilation ? 7 : 0) + 1);
+  if (settings.tiled) w.bytes -= tiledWalkBytesSaved(settings.coefficients);
   if (settings.release) {
-    const StandardTransferWork free =
-        standardGlTransferWork(settings.coefficients, false, settings.withGv);
+    const StandardTransferWork free = standardGlKernelWork(
+        {.coefficients = settings.coefficients, .withGv = settings.withGv, .tiled = settings.tiled});
     w.multiplyAdds += free.multiplyAdds;
     w.bytes += free.bytes + 4 * 4 * 3 * n + 16 * 7;
   }
@@ -40,10 +43,17 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
     : settings_(settings) {
   const CubeFaceSolidAngles angles = cubeFaceSolidAngles();
   const int coefficients = settings.coefficients;
-  gather_ = shaders.compute("propagation/directed_gather.comp",
-                            {SpecConstant::f(0, float(angles.farFace)),
-                             SpecConstant::f(1, float(angles.sideFace)),
-                             SpecConstant::b(2, settings.withGv), SpecConstant::i(3, coefficients)});
+  std::vector<SpecConstant> spec{SpecConstant::f(0, float(angles.farFace)),
+                                 SpecConstant::f(1, float(angles.sideFace)),
+                                 SpecConstant::b(2, settings.withGv), SpecConstant::i(3, coefficients)};
+  if (settings.tiled) {
+    tile_ = tiledWalkGroup(coefficients);
+    spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_X, tile_.x));
+    spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_Y, tile_.y));
+  }
+  gather_ = shaders.compute(settings.tiled ? "propagation/directed_gather_tiled.comp"
+                                           : "propagation/directed_gather.comp",
+                            spec);
   dilate_ = shaders.compute("propagation/directed_dilate.comp");
   const std::size_t gridBytes = 3 * std::size_t(coefficients) * cellsOf(resolution) * sizeof(float);
   scratch_ = DualBuffer(gridBytes, "light grid (propagation scratch)");
@@ -54,7 +64,8 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
     free_ = StandardGlKernel(shaders, {.coefficients = coefficients,
                                        .farFace = angles.farFace,
                                        .sideFace = angles.sideFace,
-                                       .withGv = settings.withGv});
+                                       .withGv = settings.withGv,
+                                       .tiled = settings.tiled});
     for (DualBuffer& b : freeLight_)
       b = DualBuffer(gridBytes, "light grid (directed propagation's free light)");
   }
@@ -101,8 +112,11 @@ void DirectedGlKernel::propagate(const glm::ivec3& res, int iterations, DualBuff
     accumulated.bindStorage(BUFFER_ACCUMULATED);
     normals->bindStorage(BUFFER_NORMALS);
     if (settings_.withGv) gv->bindStorage(BUFFER_GEOMETRY_VOLUME);
-    dispatchCovering(res, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
+    if (settings_.tiled)
+      dispatchTiledWalk(res, tile_);
+    else
+      dispatchCovering(res, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
+                       GL_SHADER_STORAGE_BARRIER_BIT);
     std::swap(current, scratch_);  // the new light becomes the next step's source
   }
   if (settings_.release && iterations > 0) {

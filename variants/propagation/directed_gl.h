@@ -20,6 +20,7 @@ struct DirectedGlSettings {
   bool dilation = true;         // dilate the normals before every iteration
   bool release = true;          // light leaves the reprojection where the normals change
   double cosRegionAngle = 1.0;  // release: normals further apart are different regions
+  bool tiled = false;           // the tiled gathers (directed_gather_tiled.comp, tiled_walk.h)
 };
 
 // Per cell-iteration on GL: the standard transfer's (standard_gl.h) and the second reprojection:
@@ -27,7 +28,8 @@ struct DirectedGlSettings {
 // of about 8 each) and the lobe (N), the dilation's reads of six neighbours' normals (vec4) and
 // its write, and the gather's read of the cell's normal; with release, a second standard transfer
 // (the free light) and the release: the cell's attached and free light read and written, and the
-// seven normals it compares.
+// seven normals it compares. The tiled gathers read each source cell once and their tiles' halos
+// again (tiled_walk.h).
 StandardTransferWork directedGlWork(const DirectedGlSettings& settings);
 
 class DirectedGlKernel {
@@ -52,6 +54,7 @@ private:
                     bool all);
 
   DirectedGlSettings settings_;
+  glm::ivec2 tile_{1, 1};     // the tiled gather's work group (x, y)
   Program gather_, dilate_, release_;
   StandardGlKernel free_;     // the free light's standard gathering
   DualBuffer scratch_;        // swapped with the grid's current buffer

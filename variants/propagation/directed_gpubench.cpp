@@ -37,8 +37,9 @@ std::vector<float> benchNormals(const glm::ivec3& resolution) {
 
 class DirectedBench final : public PropagationBench {
 public:
-  explicit DirectedBench(bool withGv) {
+  DirectedBench(bool withGv, bool tiled) {
     settings_.withGv = withGv;
+    settings_.tiled = tiled;
     settings_.cosRegionAngle = std::cos(10.0 * M_PI / 180.0);  // the strategy's default
   }
 
@@ -68,10 +69,18 @@ private:
 
 LPVLAB_REGISTER_GPU_BENCH("directed",
                           "directed propagation: dilation, reprojecting gather, release, free light",
-                          "[propagation] type = \"directed\"", std::make_unique<DirectedBench>(false));
+                          "[propagation] type = \"directed\"",
+                          std::make_unique<DirectedBench>(false, false));
 LPVLAB_REGISTER_GPU_BENCH("directed_gv", "directed propagation with the geometry volume",
                           "[propagation] type = \"directed\"; [occlusion] type = \"geometry_volume\"",
-                          std::make_unique<DirectedBench>(true));
+                          std::make_unique<DirectedBench>(true, false));
+LPVLAB_REGISTER_GPU_BENCH("directed_tiled", "directed propagation, its gathers tiled",
+                          "[propagation] type = \"directed\", gpu_kernel = \"tiled\"",
+                          std::make_unique<DirectedBench>(false, true));
+LPVLAB_REGISTER_GPU_BENCH("directed_tiled_gv", "directed propagation, tiled, with the GV",
+                          "[propagation] type = \"directed\", gpu_kernel = \"tiled\"; "
+                          "[occlusion] type = \"geometry_volume\"",
+                          std::make_unique<DirectedBench>(true, true));
 
 }  // namespace
 }  // namespace lpvlab

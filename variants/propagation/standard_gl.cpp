@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "framework/gl/dispatch.h"
-#include "variants/propagation/standard_tiled.h"
+#include "variants/propagation/tiled_walk.h"
 
 namespace lpvlab {
 namespace {
@@ -21,9 +21,9 @@ StandardGlKernel::StandardGlKernel(ShaderCompiler& shaders, const StandardGlSett
       SpecConstant::i(2, settings.coefficients), SpecConstant::b(3, settings.withGv),
       SpecConstant::b(4, settings.bounces)};
   if (settings.tiled) {
-    tile_ = standardTiledGroup(settings.coefficients);
-    spec.push_back(SpecConstant::i(kernel::SPEC_TILE_X, tile_.x));
-    spec.push_back(SpecConstant::i(kernel::SPEC_TILE_Y, tile_.y));
+    tile_ = tiledWalkGroup(settings.coefficients);
+    spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_X, tile_.x));
+    spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_Y, tile_.y));
   }
   const std::string path = settings.scatter ? "propagation/standard_scatter.comp"
                            : settings.tiled ? "propagation/standard_gather_tiled.comp"
@@ -66,16 +66,14 @@ void StandardGlKernel::dispatch(const glm::ivec3& resolution) const {
   if (!settings_.tiled)
     return dispatchCovering(resolution, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                             GL_SHADER_STORAGE_BARRIER_BIT);
-  const int spans = (resolution.z + TILED_Z_SPAN - 1) / TILED_Z_SPAN;
-  dispatchCovering({resolution.x, resolution.y, spans}, {tile_.x, tile_.y, TILED_GROUP_SIZE_Z},
-                   GL_SHADER_STORAGE_BARRIER_BIT);
+  dispatchTiledWalk(resolution, tile_);
 }
 
 StandardTransferWork standardGlKernelWork(const StandardGlSettings& settings) {
   StandardTransferWork w =
       standardGlTransferWork(settings.coefficients, settings.scatter, settings.withGv);
   if (settings.bounces) w.multiplyAdds *= 2;
-  if (settings.tiled) w.bytes -= tiledSourceBytesSaved(settings.coefficients);
+  if (settings.tiled) w.bytes -= tiledWalkBytesSaved(settings.coefficients);
   return w;
 }
 

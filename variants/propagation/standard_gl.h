@@ -56,7 +56,7 @@ struct StandardGlOcclusion {
 };
 
 // Per cell-iteration, as the kernel of `settings` runs: bounces run every face twice; the tiled
-// layout reads each source cell once and its tile's halo again (standard_tiled.h).
+// layout reads each source cell once and its tile's halo again (tiled_walk.h).
 StandardTransferWork standardGlKernelWork(const StandardGlSettings& settings);
 
 class StandardGlKernel {

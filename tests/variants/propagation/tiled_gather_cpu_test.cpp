@@ -1,9 +1,10 @@
-// The tiled layout of standard gathering on GL ([propagation] gpu_kernel = "tiled",
-// shaders/propagation/standard_gather_tiled.comp), on llvmpipe:
+// The tiled layout of the gathers on GL ([propagation] gpu_kernel = "tiled": tiled_walk.glsl in
+// shaders/propagation/standard_gather_tiled.comp and directed_gather_tiled.comp), on llvmpipe:
 //   a. it gives the simple kernel's grid (current and accumulated) at SH orders 1-3, without and
 //      with a random GV, with bounces, over several iterations, on grids that cut tiles and
 //      z-spans part way (several tiles along x and y, several spans along z) and on the extremes
-//      (one cell, one row, one column);
+//      (one cell, one row, one column); for directed propagation too, with region normals in
+//      some cells (dilation and release at work);
 //   b. it gives the CPU kernel's grid (double precision) at orders 1-3, to the tolerance the
 //      simple kernel is held to;
 //   c. it is refused with scattering, naming the key; an unknown layout is refused;
@@ -21,9 +22,10 @@
 #include "cpu_comparison.h"
 #include "error_support.h"
 #include "framework/math/solid_angle.h"
+#include "directed_model.h"
 #include "propagation_rig.h"
 #include "variants/propagation/standard_cpu.h"
-#include "variants/propagation/standard_tiled.h"
+#include "variants/propagation/tiled_walk.h"
 
 namespace lpvlab {
 namespace {
@@ -39,6 +41,7 @@ struct TiledCase {
   bool withGv = false;
   bool bounces = false;
   int iterations = 3;
+  std::string strategy = "standard";
 };
 
 struct Result {
@@ -53,8 +56,9 @@ toml::table table(const TiledCase& s, const std::string& layout) {
 }
 
 Result run(const TiledCase& s, const std::string& layout, std::uint32_t seed) {
-  test::PropagationRig rig("standard", s.resolution, table(s, layout), s.order, s.withGv);
+  test::PropagationRig rig(s.strategy, s.resolution, table(s, layout), s.order, s.withGv);
   std::mt19937 random(seed);
+  if (s.strategy == "directed") rig.loadNormals(test::regionNormals(s.resolution, random, 0.3f));
   const Grid current = test::randomFloats(rig.floatsPerGrid(), random, -1.0f, 1.0f);
   const Grid accumulated = test::randomFloats(rig.floatsPerGrid(), random, -1.0f, 1.0f);
   rig.load(current, accumulated);
@@ -70,8 +74,8 @@ void sameAsSimple(const TiledCase& s) {
   const std::uint32_t seed = 100 * s.order + 10 * s.withGv + s.bounces;
   const Result simple = run(s, "simple", seed);
   const Result tiled = run(s, "tiled", seed);
-  const std::string what = "order " + std::to_string(s.order) + (s.withGv ? ", GV" : "") +
-                           (s.bounces ? ", bounces" : "");
+  const std::string what = s.strategy + ", order " + std::to_string(s.order) +
+                           (s.withGv ? ", GV" : "") + (s.bounces ? ", bounces" : "");
   // Relative to the largest value; a grid of zeros (one cell: no neighbours) must stay zero.
   EXPECT_LE(maxDifference(tiled.current, simple.current), 1e-6 * maxAbs(simple.current)) << what;
   EXPECT_LE(maxDifference(tiled.accumulated, simple.accumulated),
@@ -90,6 +94,19 @@ TEST(StandardTiled, SameGridAsTheSimpleKernelWithTheGvAndBounces) {
   sameAsSimple({kCutGrid, 1, true, false});
   sameAsSimple({kCutGrid, 3, true, false});
   for (int order = 1; order <= 3; ++order) sameAsSimple({kCutGrid, order, true, true});
+}
+
+TEST(DirectedTiled, SameGridAsTheSimpleKernelAtEveryOrderWithAndWithoutTheGv) {
+  sameAsSimple({.resolution = kCutGrid, .order = 1, .withGv = true, .strategy = "directed"});
+  sameAsSimple({.resolution = kCutGrid, .order = 2, .strategy = "directed"});
+  sameAsSimple({.resolution = kCutGrid, .order = 3, .withGv = true, .strategy = "directed"});
+}
+
+TEST(DirectedTiled, SameGridOnTheExtremes) {
+  for (const glm::ivec3& res : {glm::ivec3(1, 1, 1), glm::ivec3(40, 1, 1), glm::ivec3(1, 1, 40),
+                                glm::ivec3(33, 5, 8)})
+    sameAsSimple({.resolution = res, .order = 1, .withGv = true, .iterations = 2,
+                  .strategy = "directed"});
 }
 
 TEST(StandardTiled, SameGridOnTheExtremes) {
@@ -120,6 +137,16 @@ TEST(StandardTiled, SameGridAsTheCpuKernelAtEveryOrder) {
   }
 }
 
+TEST(DirectedTiled, UnknownLayoutIsRefusedNamingTheKey) {
+  test::glTestContext();
+  toml::table t = test::iterationsTable(2);
+  t.insert("gpu_kernel", "blocked");
+  Params params(t, "test.toml", "propagation");
+  const std::string error =
+      test::errorOf([&] { Registry<PropagationStrategy>::instance().create(params, "directed"); });
+  EXPECT_TRUE(test::contains(error, "gpu_kernel")) << error;
+}
+
 TEST(StandardTiled, RefusedWithScatteringAndUnknownLayouts) {
   test::glTestContext();
   for (const auto& [method, layout, key] :
@@ -138,10 +165,10 @@ TEST(StandardTiled, RefusedWithScatteringAndUnknownLayouts) {
 TEST(StandardTiled, WorkModelReadsEachCellOnceAndAHalo) {
   for (int order = 1; order <= 3; ++order) {
     const int n = (order + 1) * (order + 1);
-    const double reads = standardTiledSourceReads(n);
+    const double reads = tiledWalkSourceReads(n);
     EXPECT_GT(reads, 1.0) << order;
     EXPECT_LT(reads, 2.0) << order;  // tiles of at least 16 x 4 and z-spans of 8
-    EXPECT_NEAR(tiledSourceBytesSaved(n), 4.0 * 3 * n * (6.0 - reads), 1e-9);
+    EXPECT_NEAR(tiledWalkBytesSaved(n), 4.0 * 3 * n * (6.0 - reads), 1e-9);
   }
 }
 
