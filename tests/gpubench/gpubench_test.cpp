@@ -28,6 +28,7 @@
 #include "propagation_rig.h"
 #include "rendering_rig.h"
 #include "variants/injection/rsm_vpl_cpu.h"
+#include "variants/occlusion/geometry_volume_cpu.h"
 
 namespace lpvlab {
 namespace {
@@ -60,6 +61,8 @@ const std::map<std::string, Known>& knownCases() {
       {"directed_tiled_gv", {"", true, false, "directed"}},
       {"trilinear", {"", false, false, "trilinear"}},
       {"rsm_vpl", {"", false, false, "rsm_vpl"}},
+      {"gv_camera", {"", false, false, "gv_camera"}},
+      {"gv_camera_albedo", {"", false, true, "gv_camera"}},  // bounces: here, the albedo sums
       {"rsm_vpl_normals", {"", false, true, "rsm_vpl"}},  // bounces: here, the normal grid
       {"trilinear_leak_damping", {"", false, false, "trilinear", 1.0}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
@@ -97,17 +100,20 @@ double cpuRenderingChecksum(const Known& k, const GpuBenchShape& shape, const Gp
   return benchChecksum(rgb);
 }
 
+HostImage hostImage(const std::vector<float>& rgba, const glm::ivec2& size) {
+  HostImage out{size.x, size.y, 1, {}};
+  for (std::size_t i = 0; i < rgba.size(); i += 4)
+    out.texels.emplace_back(rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]);
+  return out;
+}
+
 // The CPU kernel's checksum of the same injection from `inputs`: one view's RSM of image.x texels
 // square, into a zero grid at the origin with cells 1 / resolution.x wide (as
 // rsm_vpl_gpubench.cpp places it), with the normal grid when the case has it.
 double cpuInjectionChecksum(bool withNormals, const GpuBenchShape& shape,
                             const GpuBenchInputs& inputs) {
   auto image = [&](const char* name) {
-    const std::vector<float>& v = input(inputs, name);
-    HostImage out{shape.image.x, shape.image.x, 1, {}};
-    for (std::size_t i = 0; i < v.size(); i += 4)
-      out.texels.emplace_back(v[i], v[i + 1], v[i + 2], v[i + 3]);
-    return out;
+    return hostImage(input(inputs, name), {shape.image.x, shape.image.x});
   };
   const HostImage position = image("rsm_position"), normal = image("rsm_normal"),
                   flux = image("rsm_flux");
@@ -120,8 +126,26 @@ double cpuInjectionChecksum(bool withNormals, const GpuBenchShape& shape,
   return benchChecksum(grid) + (withNormals ? benchChecksum(normals) : 0.0);
 }
 
+// The CPU kernel's checksum of the same GV from the camera's surfels: the GV of a light grid at the
+// origin with cells 1 / resolution.x wide, the camera at (0.5, 0.5, -1) with a 60-degree vertical
+// field of view (as geometry_volume_gpubench.cpp sets them).
+double cpuGvChecksum(bool withAlbedo, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  const HostImage position = hostImage(input(inputs, "position"), shape.image),
+                  normal = hostImage(input(inputs, "normal"), shape.image),
+                  albedo = hostImage(input(inputs, "albedo"), shape.image);
+  const float cell = 1.0f / float(shape.resolution.x);
+  const GridGeometry gv{glm::vec3(-0.5f * cell), cell, shape.resolution + 1};
+  std::vector<float> blocking(4 * std::size_t(gv.cellCount()), 0.0f), sums(blocking.size(), 0.0f);
+  const float texelEdge = float(2.0 * std::tan(0.5 * M_PI / 3.0) / shape.image.y);
+  addCameraSurfelsCpu({&position, &normal, &albedo}, glm::vec3(0.5f, 0.5f, -1.0f), texelEdge,
+                      {.gv = gv, .blocking = blocking.data(),
+                       .albedo = withAlbedo ? sums.data() : nullptr});
+  return benchChecksum(blocking) + (withAlbedo ? benchChecksum(sums) : 0.0);
+}
+
 // The CPU backend's checksum of the same propagation (or rendering, or injection) from `inputs`.
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  if (k.strategy == "gv_camera") return cpuGvChecksum(k.bounces, shape, inputs);
   if (k.strategy == "rsm_vpl") return cpuInjectionChecksum(k.bounces, shape, inputs);
   if (k.strategy == "trilinear") return cpuRenderingChecksum(k, shape, inputs);
   toml::table table = test::iterationsTable(shape.iterations, k.method);
@@ -157,8 +181,9 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       const double cpu = cpuChecksum(knownCases().at(name), shape, bench->inputs());
       EXPECT_NEAR(gl, cpu, 1e-5 * std::abs(cpu)) << name << ", order " << order;
       // The propagation did something: the inputs' own checksum is far from it.
-      const bool fromZero = knownCases().at(name).strategy == "trilinear" ||
-                            knownCases().at(name).strategy == "rsm_vpl";
+      const std::string& strategy = knownCases().at(name).strategy;
+      const bool fromZero =
+          strategy == "trilinear" || strategy == "rsm_vpl" || strategy == "gv_camera";
       const double before =
           fromZero ? 0.0
                     : benchChecksum(input(bench->inputs(), "accumulated")) +
@@ -192,7 +217,8 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
     const GpuBenchResult here = runGpuBench(name, gpuBenchCases().at(name), shaders, shape, 0, 1);
     // Float atomics (scattering, injection) add in any order.
     const bool atomics = knownCases().at(name).method == "scatter" ||
-                         knownCases().at(name).strategy == "rsm_vpl";
+                         knownCases().at(name).strategy == "rsm_vpl" ||
+                         knownCases().at(name).strategy == "gv_camera";
     const double tolerance = atomics ? 1e-6 * std::abs(here.checksum) : 0.0;
     EXPECT_NEAR(row["checksum"].get<double>(), here.checksum, tolerance) << name;
     EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;

@@ -5,7 +5,6 @@
 // flux in [0, 1] per channel. The grid (and the normal grid) start at zero; the VPLs are added
 // with float atomics, in any order. The checksum is of the grid and the normal grid.
 
-#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,29 +13,10 @@
 #include "framework/gpubench/gpu_bench_case.h"
 #include "variants/injection/rsm_vpl_gl.h"
 #include "variants/propagation/propagation_gpubench.h"
+#include "variants/resources/gpubench_surfaces.h"
 
 namespace lpvlab {
 namespace {
-
-// RGBA32F texels of one view: positions in [0, extent] (w = 1: covered), unit normals, flux.
-GpuBenchInputs benchRsm(int side, const glm::vec3& extent) {
-  const std::size_t texels = std::size_t(side) * side;
-  const std::vector<float> p = benchValues(3 * texels, 20, 0.0f, 1.0f);
-  const std::vector<float> d = benchValues(2 * texels, 21, 0.0f, 1.0f);
-  const std::vector<float> f = benchValues(3 * texels, 22, 0.0f, 1.0f);
-  std::vector<float> position(4 * texels, 1.0f), normal(4 * texels, 0.0f), flux(4 * texels, 1.0f);
-  for (std::size_t i = 0; i < texels; ++i) {
-    const double z = 2.0 * d[2 * i] - 1.0, phi = 2.0 * M_PI * d[2 * i + 1];
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
-    for (int c = 0; c < 3; ++c) {
-      position[4 * i + c] = p[3 * i + c] * extent[c];
-      normal[4 * i + c] = float(n[c]);
-      flux[4 * i + c] = f[3 * i + c];
-    }
-  }
-  return {{"rsm_position", position}, {"rsm_normal", normal}, {"rsm_flux", flux}};
-}
 
 class RsmVplBench final : public GpuBenchCase {
 public:
@@ -47,7 +27,9 @@ public:
     coefficients_ = (shape.shOrder + 1) * (shape.shOrder + 1);
     kernel_ = RsmVplGlKernel(shaders, coefficients_, withNormals_, 1.0f);
     const int side = shape.image.x;
-    inputs_ = benchRsm(side, glm::vec3(shape.resolution) / float(shape.resolution.x));
+    // The RSM's normals' w is unused, its flux's w = 1: covered.
+    inputs_ = benchSurfaceTexels({side, side}, glm::vec3(shape.resolution) / float(shape.resolution.x),
+                                 {"rsm_position", "rsm_normal", "rsm_flux"}, 20);
     for (gl::Texture* t : {&position_, &normal_, &flux_})
       *t = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, side, side, 1, "gpubench RSM");
     const std::size_t cells = benchCells(shape.resolution);

@@ -42,7 +42,6 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/gl/dispatch.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/pipeline/dual_frame.h"
@@ -51,24 +50,11 @@
 #include "framework/pipeline/strategy.h"
 #include "framework/scene/scene.h"
 #include "variants/occlusion/geometry_volume_cpu.h"
+#include "variants/occlusion/geometry_volume_gl.h"
 #include "variants/resources/geometry_volume.h"
 
 namespace lpvlab {
 namespace {
-
-namespace surfel_kernel {
-#include "shaders/occlusion/gv_surfel_interface.glsl"
-}
-namespace camera_kernel {
-#include "shaders/occlusion/gv_camera_interface.glsl"
-}
-namespace rsm_kernel {
-#include "shaders/common/light_records_interface.glsl"
-#include "shaders/occlusion/gv_rsm_interface.glsl"
-}
-namespace merge_kernel {
-#include "shaders/occlusion/gv_merge_interface.glsl"
-}
 
 class GeometryVolumeOcclusion final : public OcclusionStrategy {
 public:
@@ -99,18 +85,17 @@ public:
   bool keepsStateBetweenFrames() const override { return keepHistory_; }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
 
-  // Per surfel (a covered G-buffer pixel or RSM texel): its position, normal and albedo source
-  // read (3 x 16 B), its area and lobe (about 20), 4 coefficients and, with the albedo, 4 sums.
-  // GL adds them atomically (read and write, 4 B each); the CPU writes and reads the surfel's cell
-  // and its place in the sort by cell (4 + 8 B, each twice), summing each cell in registers.
+  // Per surfel (a covered G-buffer pixel or RSM texel): geometry_volume_gl.h's count on GL; the
+  // CPU does the same arithmetic, and writes and reads the surfel's cell and its place in the sort
+  // by cell (4 + 8 B, each twice), summing each cell in registers.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     if (!requirements.has(kGeometryVolume)) return {};
-    const double sums = requirements.has(kSurfaceAlbedo) ? 8.0 : 4.0;
-    const double bytes = 3 * 16 + (runsOnCpu(requirements) ? 2 * (4 + 8) : 2 * 4 * sums);
+    StandardTransferWork w = gvSurfelGlWork(requirements.has(kSurfaceAlbedo));
+    if (runsOnCpu(requirements)) w.bytes = 3 * 16 + 2 * (4 + 8);
     const double surfels =
         ((fromLight_ ? shape.rsmTexels : 0.0) + (fromCamera_ ? shape.pixels : 0.0)) * shape.levels;
-    std::vector<WorkCount> counts = {{"surfel", surfels, 20 + sums, bytes}};
+    std::vector<WorkCount> counts = {{"surfel", surfels, w.multiplyAdds, w.bytes}};
     // The history's merge and copy: per GV cell (about a light-grid cell), the frame's and the
     // history's 4 coefficients (and albedo sums) read, one compare, the kept cell written to both
     // (4 B each).
@@ -136,13 +121,9 @@ public:
       if (withAlbedo_) hostAlbedo_.assign(gvCells * 4, 0.0f);
       return;
     }
-    const std::vector<SpecConstant> constants = {SpecConstant::b(0, withAlbedo_)};
-    if (fromCamera_) camera_ = shaders.compute("occlusion/gv_camera.comp", constants);
-    if (fromLight_) rsm_ = shaders.compute("occlusion/gv_rsm.comp", constants);
-    if (keepHistory_)
-      mergeHistory_ = shaders.compute("occlusion/gv_merge.comp", {SpecConstant::b(0, withAlbedo_)});
+    gl_ = GeometryVolumeGlKernels(shaders, fromCamera_, fromLight_, withAlbedo_,
+                                  keepHistory_ || (fromCamera_ && fromLight_));
     if (fromCamera_ && fromLight_) {
-      merge_ = shaders.compute("occlusion/gv_merge.comp");
       const GridGeometry gv = GeometryVolume::placementFor(grid);
       lightScratch_ = gl::Buffer(std::size_t(gv.cellCount()) * GeometryVolume::kCoefficients *
                                      sizeof(float),
@@ -161,13 +142,13 @@ public:
       lightScratch_.zero();
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       injectLightViews(frame, lightScratch_);
-      mergeOnGl(merge_, gv.blocking, lightScratch_, nullptr, nullptr);
+      gl_.merge(gv.blocking, lightScratch_, nullptr, nullptr);
     }
     if (keepHistory_) {
       History& history = historyOf(frame);
       SurfaceAlbedo* albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo) : nullptr;
       if (history.valid)
-        mergeOnGl(mergeHistory_, gv.blocking, history.blocking, albedo ? &albedo->albedo : nullptr,
+        gl_.merge(gv.blocking, history.blocking, albedo ? &albedo->albedo : nullptr,
                   &history.albedo);
       history.blocking.copyFrom(gv.blocking);
       if (albedo) history.albedo.copyFrom(albedo->albedo);
@@ -235,54 +216,18 @@ private:
     return history;
   }
 
-  // gv_merge.comp: `other` into `target` by the larger c0 (with the albedo buffers when given).
-  static void mergeOnGl(const Program& program, const gl::Buffer& target, const gl::Buffer& other,
-                        const gl::Buffer* targetAlbedo, const gl::Buffer* otherAlbedo) {
-    using namespace merge_kernel;
-    program.use();
-    target.bindStorage(BUFFER_TARGET);
-    other.bindStorage(BUFFER_OTHER);
-    if (targetAlbedo && otherAlbedo) {
-      targetAlbedo->bindStorage(BUFFER_TARGET_ALBEDO);
-      otherAlbedo->bindStorage(BUFFER_OTHER_ALBEDO);
-    }
-    const int cells = int(target.size() / (GeometryVolume::kCoefficients * sizeof(float)));
-    glUniform1i(LOCATION_CELLS, cells);
-    dispatchCovering({cells, 1, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
-  }
-
-  // What both injection kernels read first (gv_surfel_interface.glsl): the GV's placement, the
-  // blocking scale, the surfels' positions, normals and what gives their albedo, the GV they add
-  // to and, when it is used, the GV's albedo.
-  void useInjection(const Program& program, const Frame& frame, const gl::Texture& position,
-                    const gl::Texture& normal, const gl::Texture& albedoSource,
-                    const gl::Buffer& target) const {
-    using namespace surfel_kernel;
-    const GeometryVolume& gv = frame.get(kGeometryVolume);
-    program.use();
-    glUniform3fv(LOCATION_GV_ORIGIN, 1, &gv.geometry.origin[0]);
-    glUniform1f(LOCATION_CELL_SIZE, gv.geometry.cellSize);
-    glUniform3iv(LOCATION_GV_RESOLUTION, 1, &gv.geometry.resolution[0]);
-    glUniform1f(LOCATION_BLOCKING_SCALE, blockingScale_);
-    glBindTextureUnit(UNIT_SURFEL_POSITION, position.id());
-    glBindTextureUnit(UNIT_SURFEL_NORMAL, normal.id());
-    target.bindStorage(BUFFER_TARGET);
-    if (withAlbedo_) {
-      glBindTextureUnit(UNIT_SURFEL_ALBEDO, albedoSource.id());
-      frame.get(kSurfaceAlbedo).albedo.bindStorage(BUFFER_ALBEDO);
-    }
+  // Where this frame's surfels go on GL: `blocking`, and the frame's albedo sums when used.
+  GvGlTarget glTarget(const Frame& frame, const gl::Buffer& blocking) const {
+    return {.gv = frame.get(kGeometryVolume).geometry,
+            .blockingScale = blockingScale_,
+            .blocking = &blocking,
+            .albedo = withAlbedo_ ? &frame.get(kSurfaceAlbedo).albedo : nullptr};
   }
 
   void injectCamera(Frame& frame, const gl::Buffer& target) {
     const GBuffer& g = frame.gbuffer;
-    using namespace camera_kernel;
-    useInjection(camera_, frame, g.position, g.normal, g.albedo, target);
-    glUniform3fv(LOCATION_CAMERA_POSITION, 1, &frame.camera->position[0]);
-    glUniform1f(LOCATION_TEXEL_EDGE, cameraTexelEdge(frame));
-    glUniform2i(LOCATION_SIZE, g.width, g.height);
-    dispatchCovering({g.width, g.height, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
-                     GL_SHADER_STORAGE_BARRIER_BIT);
+    gl_.injectCamera({g.position.id(), g.normal.id(), g.albedo.id()}, g.width, g.height,
+                     frame.camera->position, cameraTexelEdge(frame), glTarget(frame, target));
   }
 
   // The edge of a G-buffer pixel at unit depth.
@@ -348,26 +293,20 @@ private:
 
   void injectLightViews(Frame& frame, const gl::Buffer& target) {
     const LightMaps& maps = frame.lightMaps;
-    using namespace rsm_kernel;
-    useInjection(rsm_, frame, maps.rsmPosition, maps.rsmNormal, maps.rsmFlux,
-                 target);
-    maps.lightRecords.bindStorage(BUFFER_LIGHTS);
-    maps.viewRecords.bindStorage(BUFFER_VIEWS);
-    glUniform1i(LOCATION_RSM_RESOLUTION, maps.rsmResolution);
-    dispatchCovering({maps.rsmResolution, maps.rsmResolution, maps.views},
-                     {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z}, GL_SHADER_STORAGE_BARRIER_BIT);
+    gl_.injectLightViews({maps.rsmPosition.id(), maps.rsmNormal.id(), maps.rsmFlux.id()},
+                         maps.rsmResolution, maps.views, maps.lightRecords, maps.viewRecords,
+                         glTarget(frame, target));
   }
 
   bool skipFirstIteration_;
   float blockingScale_;
   bool keepHistory_;
   std::vector<History> histories_;  // per cascade level, with `history`
-  Program mergeHistory_;
   bool fromLight_ = false, fromCamera_ = false;
   bool active_ = false;
   bool withAlbedo_ = false;
   bool onCpu_ = false;
-  Program camera_, rsm_, merge_;
+  GeometryVolumeGlKernels gl_;  // on GL
   gl::Buffer lightScratch_;
   std::vector<float> hostBlocking_, hostLight_, hostAlbedo_;  // on the CPU backend
 };

@@ -5,7 +5,6 @@
 // normals, albedo in [0, 1]; the grid's coefficients in [-1, 1]. The checksum is of the indirect
 // image's RGB.
 
-#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,31 +12,11 @@
 #include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
 #include "variants/propagation/propagation_gpubench.h"
+#include "variants/resources/gpubench_surfaces.h"
 #include "variants/rendering/trilinear_gl.h"
 
 namespace lpvlab {
 namespace {
-
-// RGBA32F texels: points in the box [0, extent] (w = 1: a surface), unit normals (w = 1),
-// albedos (w = 1).
-GpuBenchInputs benchGBuffer(const glm::ivec2& image, const glm::vec3& extent) {
-  const std::size_t pixels = std::size_t(image.x) * image.y;
-  const std::vector<float> p = benchValues(3 * pixels, 10, 0.0f, 1.0f);
-  const std::vector<float> d = benchValues(2 * pixels, 11, 0.0f, 1.0f);
-  const std::vector<float> a = benchValues(3 * pixels, 12, 0.0f, 1.0f);
-  std::vector<float> position(4 * pixels, 1.0f), normal(4 * pixels, 1.0f), albedo(4 * pixels, 1.0f);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const double z = 2.0 * d[2 * i] - 1.0, phi = 2.0 * M_PI * d[2 * i + 1];
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
-    for (int c = 0; c < 3; ++c) {
-      position[4 * i + c] = p[3 * i + c] * extent[c];
-      normal[4 * i + c] = float(n[c]);
-      albedo[4 * i + c] = a[3 * i + c];
-    }
-  }
-  return {{"position", position}, {"normal", normal}, {"albedo", albedo}};
-}
 
 class TrilinearBench final : public GpuBenchCase {
 public:
@@ -48,7 +27,8 @@ public:
     const int coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
     kernel_ = TrilinearGlKernel(shaders, options_, coefficients);
     coefficients_ = coefficients;
-    inputs_ = benchGBuffer(shape.image, glm::vec3(shape.resolution) / float(shape.resolution.x));
+    inputs_ = benchSurfaceTexels(shape.image, glm::vec3(shape.resolution) / float(shape.resolution.x),
+                                 {"position", "normal", "albedo"}, 10);
     const std::vector<float> grid = benchLightGrids(shape.resolution, coefficients)[1].second;
     inputs_.emplace_back("accumulated", grid);
     accumulated_ = DualBuffer(grid.size() * sizeof(float), "gpubench light grid (accumulated)");
