@@ -63,6 +63,7 @@ const std::map<std::string, Known>& knownCases() {
       {"rsm_vpl", {"", false, false, "rsm_vpl"}},
       {"gv_camera", {"", false, false, "gv_camera"}},
       {"gv_camera_albedo", {"", false, true, "gv_camera"}},  // bounces: here, the albedo sums
+      {"gv_light", {"", false, false, "gv_light"}},
       {"rsm_vpl_normals", {"", false, true, "rsm_vpl"}},  // bounces: here, the normal grid
       {"trilinear_leak_damping", {"", false, false, "trilinear", 1.0}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
@@ -143,8 +144,28 @@ double cpuGvChecksum(bool withAlbedo, const GpuBenchShape& shape, const GpuBench
   return benchChecksum(blocking) + (withAlbedo ? benchChecksum(sums) : 0.0);
 }
 
+// The same from a light view's RSM surfels: the view buildLightViews gives a directional light
+// along (-0.3, -1, -0.2) over the light grid's box (as geometry_volume_gpubench.cpp sets it).
+double cpuGvLightChecksum(const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  const glm::ivec2 side(shape.image.x);
+  const HostImage position = hostImage(input(inputs, "position"), side),
+                  normal = hostImage(input(inputs, "normal"), side),
+                  flux = hostImage(input(inputs, "albedo"), side);
+  const float cell = 1.0f / float(shape.resolution.x);
+  const GridGeometry gv{glm::vec3(-0.5f * cell), cell, shape.resolution + 1};
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+  const LightViews records =
+      buildLightViews({sun}, {glm::vec3(0.0f), glm::vec3(shape.resolution) * cell});
+  std::vector<float> blocking(4 * std::size_t(gv.cellCount()), 0.0f);
+  addRsmSurfelsCpu({&position, &normal, &flux}, records, {.gv = gv, .blocking = blocking.data()});
+  return benchChecksum(blocking);
+}
+
 // The CPU backend's checksum of the same propagation (or rendering, or injection) from `inputs`.
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  if (k.strategy == "gv_light") return cpuGvLightChecksum(shape, inputs);
   if (k.strategy == "gv_camera") return cpuGvChecksum(k.bounces, shape, inputs);
   if (k.strategy == "rsm_vpl") return cpuInjectionChecksum(k.bounces, shape, inputs);
   if (k.strategy == "trilinear") return cpuRenderingChecksum(k, shape, inputs);
@@ -182,8 +203,8 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       EXPECT_NEAR(gl, cpu, 1e-5 * std::abs(cpu)) << name << ", order " << order;
       // The propagation did something: the inputs' own checksum is far from it.
       const std::string& strategy = knownCases().at(name).strategy;
-      const bool fromZero =
-          strategy == "trilinear" || strategy == "rsm_vpl" || strategy == "gv_camera";
+      const bool fromZero = strategy == "trilinear" || strategy == "rsm_vpl" ||
+                            strategy == "gv_camera" || strategy == "gv_light";
       const double before =
           fromZero ? 0.0
                     : benchChecksum(input(bench->inputs(), "accumulated")) +
@@ -218,7 +239,7 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
     // Float atomics (scattering, injection) add in any order.
     const bool atomics = knownCases().at(name).method == "scatter" ||
                          knownCases().at(name).strategy == "rsm_vpl" ||
-                         knownCases().at(name).strategy == "gv_camera";
+                         knownCases().at(name).strategy.starts_with("gv_");
     const double tolerance = atomics ? 1e-6 * std::abs(here.checksum) : 0.0;
     EXPECT_NEAR(row["checksum"].get<double>(), here.checksum, tolerance) << name;
     EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;

@@ -1,11 +1,15 @@
-// lpvlab-gpubench's cases of the geometry volume (docs/gpu.md#gpubench): the camera's surfels
-// (gv_camera.comp) run by the strategy's own launcher (geometry_volume_gl.h) over a G-buffer of
-// shape.image pixels, every one covered, into the GV of a light grid at the origin with cells
+// lpvlab-gpubench's cases of the geometry volume (docs/gpu.md#gpubench), run by the strategy's own
+// launcher (geometry_volume_gl.h) into the GV of a light grid at the origin with cells
 // 1 / resolution.x wide (the GV: one more cell per axis, half a cell lower, as
-// GeometryVolume::placementFor places it), seen from (0.5, 0.5, -1) with a 60-degree vertical field
-// of view. The surfels (gpu_bench_inputs.h's hashed values): points uniform in the grid's box,
-// random unit normals, albedo in [0, 1]. Their coefficients (and albedo sums) are added with float
-// atomics, in any order. The checksum is of the GV (and its albedo sums).
+// GeometryVolume::placementFor places it):
+//   gv_camera: the camera's surfels (gv_camera.comp), a G-buffer of shape.image pixels, every one
+//     covered, seen from (0.5, 0.5, -1) with a 60-degree vertical field of view;
+//   gv_light: the light views' surfels (gv_rsm.comp), one view's RSM of shape.image.x texels
+//     square, the view that buildLightViews gives a directional light travelling along
+//     (-0.3, -1, -0.2) over the grid's box.
+// The surfels (gpubench_surfaces.h): points uniform in the grid's box, random unit normals,
+// albedo (or flux) in [0, 1]. Their coefficients (and albedo sums) are added with float atomics,
+// in any order. The checksum is of the GV (and its albedo sums).
 
 #include <cmath>
 #include <memory>
@@ -14,6 +18,7 @@
 
 #include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
+#include "framework/pipeline/light_views.h"
 #include "variants/occlusion/geometry_volume_gl.h"
 #include "variants/propagation/propagation_gpubench.h"
 #include "variants/resources/gpubench_surfaces.h"
@@ -21,17 +26,34 @@
 namespace lpvlab {
 namespace {
 
-class GvCameraBench final : public GpuBenchCase {
+// The light whose view gv_light's RSM is, over `box`: what buildLightViews makes of it.
+LightViews benchLightViews(const Bounds& box) {
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+  return buildLightViews({sun}, box);
+}
+
+class GvBench final : public GpuBenchCase {
 public:
-  explicit GvCameraBench(bool withAlbedo) : withAlbedo_(withAlbedo) {}
+  GvBench(bool fromLight, bool withAlbedo) : fromLight_(fromLight), withAlbedo_(withAlbedo) {}
 
   void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
     shape_ = shape;
-    kernels_ = GeometryVolumeGlKernels(shaders, true, false, withAlbedo_, false);
-    inputs_ = benchSurfaceTexels(shape.image, glm::vec3(shape.resolution) / float(shape.resolution.x),
-                                 {"position", "normal", "albedo"}, 30);
+    kernels_ = GeometryVolumeGlKernels(shaders, !fromLight_, fromLight_, withAlbedo_, false);
+    const glm::vec3 extent = glm::vec3(shape.resolution) / float(shape.resolution.x);
+    const glm::ivec2 image = fromLight_ ? glm::ivec2(shape.image.x) : shape.image;
+    inputs_ = benchSurfaceTexels(image, extent, {"position", "normal", "albedo"}, fromLight_ ? 40 : 30);
     for (gl::Texture* t : {&position_, &normal_, &albedoSource_})
-      *t = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, shape.image.x, shape.image.y, 1, "gpubench G-buffer");
+      *t = fromLight_ ? gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, image.x, image.y, 1, "gpubench RSM")
+                      : gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, image.x, image.y, 1, "gpubench G-buffer");
+    if (fromLight_) {
+      const LightViews records = benchLightViews({glm::vec3(0.0f), extent});
+      lightRecords_ = gl::Buffer(records.lights.size() * sizeof(GpuLight), "gpubench lights",
+                                 records.lights.data());
+      viewRecords_ = gl::Buffer(records.views.size() * sizeof(GpuView), "gpubench views",
+                                records.views.data());
+    }
     const std::size_t cells = benchCells(gvGeometry().resolution);
     blocking_ = gl::Buffer(4 * cells * sizeof(float), "gpubench GV");
     if (withAlbedo_) albedo_ = gl::Buffer(4 * cells * sizeof(float), "gpubench GV albedo");
@@ -39,19 +61,28 @@ public:
 
   void reset() override {
     for (auto [texture, name] : {std::pair{&position_, "position"}, {&normal_, "normal"},
-                                 {&albedoSource_, "albedo"}})
-      glTextureSubImage2D(texture->id(), 0, 0, 0, shape_.image.x, shape_.image.y, GL_RGBA, GL_FLOAT,
-                          benchInput(inputs_, name).data());
+                                 {&albedoSource_, "albedo"}}) {
+      const float* texels = benchInput(inputs_, name).data();
+      if (fromLight_)
+        glTextureSubImage3D(texture->id(), 0, 0, 0, 0, shape_.image.x, shape_.image.x, 1, GL_RGBA,
+                            GL_FLOAT, texels);
+      else
+        glTextureSubImage2D(texture->id(), 0, 0, 0, shape_.image.x, shape_.image.y, GL_RGBA,
+                            GL_FLOAT, texels);
+    }
     blocking_.zero();
     if (withAlbedo_) albedo_.zero();
     glFinish();  // the uploads are not the kernel's time
   }
 
   void run() override {
-    kernels_.injectCamera({position_.id(), normal_.id(), albedoSource_.id()}, shape_.image.x,
-                          shape_.image.y, kCamera, texelEdge(),
-                          {.gv = gvGeometry(), .blocking = &blocking_,
-                           .albedo = withAlbedo_ ? &albedo_ : nullptr});
+    const GvGlSurfels surfels{position_.id(), normal_.id(), albedoSource_.id()};
+    const GvGlTarget target{.gv = gvGeometry(), .blocking = &blocking_,
+                            .albedo = withAlbedo_ ? &albedo_ : nullptr};
+    if (fromLight_)
+      kernels_.injectLightViews(surfels, shape_.image.x, 1, lightRecords_, viewRecords_, target);
+    else
+      kernels_.injectCamera(surfels, shape_.image.x, shape_.image.y, kCamera, texelEdge(), target);
   }
 
   double checksum() const override {
@@ -67,7 +98,8 @@ public:
 
   GpuBenchWork work() const override {
     const StandardTransferWork w = gvSurfelGlWork(withAlbedo_);
-    return {"surfel", double(shape_.image.x) * shape_.image.y, w.multiplyAdds, w.bytes};
+    return {"surfel", double(shape_.image.x) * (fromLight_ ? shape_.image.x : shape_.image.y),
+            w.multiplyAdds, w.bytes};
   }
 
   const GpuBenchInputs& inputs() const override { return inputs_; }
@@ -85,22 +117,25 @@ private:
     return float(2.0 * std::tan(0.5 * kVerticalFovDeg * M_PI / 180.0) / shape_.image.y);
   }
 
-  bool withAlbedo_;
+  bool fromLight_, withAlbedo_;
   GpuBenchShape shape_;
   GeometryVolumeGlKernels kernels_;
   gl::Texture position_, normal_, albedoSource_;
-  gl::Buffer blocking_, albedo_;
+  gl::Buffer blocking_, albedo_, lightRecords_, viewRecords_;
   GpuBenchInputs inputs_;
 };
 
 LPVLAB_REGISTER_GPU_BENCH("gv_camera", "the geometry volume from the camera's G-buffer surfels",
                           "[occlusion] type = \"geometry_volume\", sources = [\"camera\"]",
-                          std::make_unique<GvCameraBench>(false));
+                          std::make_unique<GvBench>(false, false));
 LPVLAB_REGISTER_GPU_BENCH("gv_camera_albedo",
                           "the camera's surfels with the GV's albedo (for bounces)",
                           "[occlusion] type = \"geometry_volume\", sources = [\"camera\"]; "
                           "[propagation] bounces = true",
-                          std::make_unique<GvCameraBench>(true));
+                          std::make_unique<GvBench>(false, true));
+LPVLAB_REGISTER_GPU_BENCH("gv_light", "the geometry volume from a light view's RSM surfels",
+                          "[occlusion] type = \"geometry_volume\", sources = [\"light\"]",
+                          std::make_unique<GvBench>(true, false));
 
 }  // namespace
 }  // namespace lpvlab
