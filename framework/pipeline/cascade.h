@@ -40,6 +40,17 @@ void setCascadeBlendUniforms(const Frame& frame, int level);
 // Replaces the injected light (`current`) of `parent` inside `child` by the child's, summed over
 // each parent cell's 2x2x2 children (shaders/cascade/restrict.glsl), on GL (restrict.comp) or, on
 // the CPU backend, on both grids' host sides.
+// The GL carry's work per parent cell written (the parent cells inside the child: half the child's
+// cells along each axis), with N coefficients per channel: 8 child cells' 3N floats read and 3N
+// written; 8 adds per coefficient.
+struct CascadeCarryWork {
+  double multiplyAdds = 0.0, bytes = 0.0;
+};
+inline CascadeCarryWork cascadeCarryGlWork(int coefficients) {
+  const double n = coefficients;
+  return {8 * 3 * n, 4 * (8 * 3 * n + 3 * n)};
+}
+
 class CascadeCarry {
 public:
   CascadeCarry(ShaderCompiler& shaders, int shOrder, bool onCpu);
