@@ -14,7 +14,9 @@ set(LPVLAB_EXPORTED
     lpvlab_core lpvlab_math lpvlab_scene lpvlab_animation lpvlab_io lpvlab_metrics lpvlab_gl
     lpvlab_pipeline lpvlab_reference lpvlab_particles lpvlab_experiment lpvlab_fit
     lpvlab_many_lights lpvlab_radiosity lpvlab_gl_kernels lpvlab_variants lpvlab_glad lpvlab_gl_headers lpvlab_cli)
-install(TARGETS lpvlab lpvlab-gpubench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS lpvlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# lpvlab-gpubench and its SPIR-V when they were built (the README's run command builds lpvlab alone).
+install(TARGETS lpvlab-gpubench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} OPTIONAL)
 install(TARGETS ${LPVLAB_EXPORTED} EXPORT lpvlabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}/lpvlab
         OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/lpvlab/objects)
@@ -23,7 +25,7 @@ install(DIRECTORY "${CMAKE_SOURCE_DIR}/framework" "${CMAKE_SOURCE_DIR}/variants"
 install(DIRECTORY "${LPVLAB_GLAD_DIR}/include/" DESTINATION include/lpvlab)
 install(DIRECTORY "${CMAKE_SOURCE_DIR}/shaders" "${CMAKE_SOURCE_DIR}/experiments"
         DESTINATION share/lpvlab)
-install(DIRECTORY "${CMAKE_BINARY_DIR}/spirv/" DESTINATION share/lpvlab/spirv
+install(DIRECTORY "${CMAKE_BINARY_DIR}/spirv/" DESTINATION share/lpvlab/spirv OPTIONAL
         FILES_MATCHING PATTERN "*.spv")
 install(FILES "${CMAKE_SOURCE_DIR}/analysis/report.py" "${CMAKE_SOURCE_DIR}/analysis/pyproject.toml"
         DESTINATION share/lpvlab/analysis)
