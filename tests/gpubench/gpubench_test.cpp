@@ -67,6 +67,7 @@ const std::map<std::string, Known>& knownCases() {
       {"gv_camera_albedo", {"", false, true, "gv_camera"}},  // bounces: here, the albedo sums
       {"gv_light", {"", false, false, "gv_light"}},
       {"cascade_carry", {"", false, false, "cascade_carry"}},
+      {"gv_merge", {"", false, false, "gv_merge"}},
       {"rsm_vpl_normals", {"", false, true, "rsm_vpl"}},  // bounces: here, the normal grid
       {"trilinear_leak_damping", {"", false, false, "trilinear", 1.0}},
       {"tetrahedral_gv", {"", true, false, "tetrahedral"}}};
@@ -181,8 +182,17 @@ double cpuCarryChecksum(const GpuBenchShape& shape, const GpuBenchInputs& inputs
   return benchChecksum(parent.current.hostRead());
 }
 
+// The CPU merge's checksum of the same two GVs with their albedo sums.
+double cpuMergeChecksum(const GpuBenchInputs& inputs) {
+  std::vector<float> target = input(inputs, "target"), albedo = input(inputs, "target_albedo");
+  mergeGeometryVolumesCpu(target.data(), input(inputs, "other").data(), int(target.size() / 4),
+                          albedo.data(), input(inputs, "other_albedo").data());
+  return benchChecksum(target) + benchChecksum(albedo);
+}
+
 // The CPU backend's checksum of the same propagation (or rendering, or injection) from `inputs`.
 double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
+  if (k.strategy == "gv_merge") return cpuMergeChecksum(inputs);
   if (k.strategy == "cascade_carry") return cpuCarryChecksum(shape, inputs);
   if (k.strategy == "gv_light") return cpuGvLightChecksum(shape, inputs);
   if (k.strategy == "gv_camera") return cpuGvChecksum(k.bounces, shape, inputs);
@@ -227,6 +237,8 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       const GpuBenchInputs& in = bench->inputs();
       const double before =
           strategy == "cascade_carry" ? benchChecksum(input(in, "parent"))
+          : strategy == "gv_merge"
+              ? benchChecksum(input(in, "target")) + benchChecksum(input(in, "target_albedo"))
           : strategy == "trilinear" || strategy == "rsm_vpl" || strategy.starts_with("gv_")
               ? 0.0
               : benchChecksum(input(in, "accumulated")) + benchChecksum(input(in, "current"));
@@ -266,6 +278,7 @@ TEST(GpuBench, TheExecutableOnPrecompiledSpirvGivesTheseChecksums) {
     EXPECT_GT(row["units_per_s"].get<double>(), 0.0) << name;
     const double units = row["unit"] == "cell-iteration" ? 1000.0 * 3
                          : row["unit"] == "parent-cell" ? 4.0 * 4 * 4  // half of 8^3
+                         : row["unit"] == "gv-cell"     ? 11.0 * 11 * 11
                                                         : 16.0 * 16;
     EXPECT_EQ(row["units"].get<double>(), units) << name;
     EXPECT_NE(r.out.find(name), std::string::npos) << "no row for " << name;

@@ -7,6 +7,9 @@
 //   gv_light: the light views' surfels (gv_rsm.comp), one view's RSM of shape.image.x texels
 //     square, the view that buildLightViews gives a directional light travelling along
 //     (-0.3, -1, -0.2) over the grid's box.
+//   gv_merge: two such GVs (hashed coefficients, c0 in [0, 1.5], with albedo sums) merged cell by
+//     cell by the larger c0 (gv_merge.comp), as the camera's and the lights' GVs are and a
+//     history is.
 // The surfels (gpubench_surfaces.h): points uniform in the grid's box, random unit normals,
 // albedo (or flux) in [0, 1]. Their coefficients (and albedo sums) are added with float atomics,
 // in any order. The checksum is of the GV (and its albedo sums).
@@ -125,6 +128,54 @@ private:
   GpuBenchInputs inputs_;
 };
 
+// gv_merge: `other` into `target` by the larger c0, with their albedo sums.
+class GvMergeBench final : public GpuBenchCase {
+public:
+  void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
+    kernels_ = GeometryVolumeGlKernels(shaders, false, false, true, true);
+    cells_ = benchCells(shape.resolution + 1);
+    std::vector<float> target = benchValues(4 * cells_, 60, -1.0f, 1.0f);
+    std::vector<float> other = benchValues(4 * cells_, 61, -1.0f, 1.0f);
+    for (std::size_t i = 0; i < cells_; ++i) {  // c0 >= 0, as a GV's
+      target[i] = 0.75f * (target[i] + 1.0f);
+      other[i] = 0.75f * (other[i] + 1.0f);
+    }
+    inputs_ = {{"target", target}, {"other", other},
+               {"target_albedo", benchValues(4 * cells_, 62, 0.0f, 1.0f)},
+               {"other_albedo", benchValues(4 * cells_, 63, 0.0f, 1.0f)}};
+    for (gl::Buffer* b : {&target_, &other_, &targetAlbedo_, &otherAlbedo_})
+      *b = gl::Buffer(4 * cells_ * sizeof(float), "gpubench GV");
+  }
+
+  void reset() override {
+    gl::Buffer* buffers[] = {&target_, &other_, &targetAlbedo_, &otherAlbedo_};
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+      buffers[i]->upload(inputs_[i].second.data(), inputs_[i].second.size() * sizeof(float));
+    glFinish();  // the uploads are not the kernel's time
+  }
+
+  void run() override { kernels_.merge(target_, other_, &targetAlbedo_, &otherAlbedo_); }
+
+  double checksum() const override {
+    std::vector<float> values(4 * cells_);
+    target_.download(values.data(), values.size() * sizeof(float));
+    double sum = benchChecksum(values);
+    targetAlbedo_.download(values.data(), values.size() * sizeof(float));
+    return sum + benchChecksum(values);
+  }
+
+  // Per GV cell: both GVs' 4 coefficients and 4 albedo sums read, one compare, the kept 8 written.
+  GpuBenchWork work() const override { return {"gv-cell", double(cells_), 1, 4 * 8 * 3}; }
+
+  const GpuBenchInputs& inputs() const override { return inputs_; }
+
+private:
+  GeometryVolumeGlKernels kernels_;
+  std::size_t cells_ = 0;
+  gl::Buffer target_, other_, targetAlbedo_, otherAlbedo_;
+  GpuBenchInputs inputs_;
+};
+
 LPVLAB_REGISTER_GPU_BENCH("gv_camera", "the geometry volume from the camera's G-buffer surfels",
                           "[occlusion] type = \"geometry_volume\", sources = [\"camera\"]",
                           std::make_unique<GvBench>(false, false));
@@ -136,6 +187,9 @@ LPVLAB_REGISTER_GPU_BENCH("gv_camera_albedo",
 LPVLAB_REGISTER_GPU_BENCH("gv_light", "the geometry volume from a light view's RSM surfels",
                           "[occlusion] type = \"geometry_volume\", sources = [\"light\"]",
                           std::make_unique<GvBench>(true, false));
+LPVLAB_REGISTER_GPU_BENCH("gv_merge", "two geometry volumes merged by the larger c0, with albedo",
+                          "[occlusion] type = \"geometry_volume\", history = true",
+                          std::make_unique<GvMergeBench>());
 
 }  // namespace
 }  // namespace lpvlab
