@@ -2,6 +2,7 @@
 // The subcommands behind lpvlab's CLI; each returns the process exit code.
 
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -24,7 +25,10 @@ struct Options {
   std::vector<int> tracerWidths;          // bench --tracer: query widths (0: native)
   int jobs = 1;                           // sweep: configurations run in parallel
   std::string emit;                       // sweep: "slurm" = write a job-array script, run nothing
-  SlurmResources slurm;                   // sweep --emit slurm: what each job asks for
+  SlurmOptions slurm;                     // sweep --emit slurm: what each job asks for
+  std::optional<int> refCpus;             // sweep --emit slurm: the references' (default: the
+  std::optional<std::string> refMem;      //   tasks' --cpus-per-task, --mem, --time)
+  std::optional<std::string> refTime;
   std::string metric;                     // report: the error metric of the speed/accuracy plot
   std::string reportTime;                 // report: the speed axis, "method" or "total" ("": method)
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report

@@ -93,11 +93,25 @@ Command addSweep(CLI::App& app, Options& o) {
                    "slurm: write DIR/sweep.slurm (a job array), DIR/submit.sh and the "
                    "configurations; run nothing")
       ->check(CLI::IsMember({"slurm"}));
-  sweep->add_option("--cpus-per-task", o.slurm.cpusPerTask,
+  sweep->add_option("--cpus-per-task", o.slurm.tasks.cpusPerTask,
                     "With --emit slurm: CPUs of each job (default 2)");
-  sweep->add_option("--mem", o.slurm.memory, "With --emit slurm: memory of each job (default 4G)");
-  sweep->add_option("--time", o.slurm.time,
+  sweep->add_option("--mem", o.slurm.tasks.memory,
+                    "With --emit slurm: memory of each job (default 4G)");
+  sweep->add_option("--time", o.slurm.tasks.time,
                     "With --emit slurm: time limit of each job (default 01:00:00)");
+  sweep->add_option("--ref-cpus-per-task", o.refCpus,
+                    "With --emit slurm: CPUs of each reference's job (default: --cpus-per-task)");
+  sweep->add_option("--ref-mem", o.refMem,
+                    "With --emit slurm: memory of each reference's job (default: --mem)");
+  sweep->add_option("--ref-time", o.refTime,
+                    "With --emit slurm: time limit of each reference's job (default: --time)");
+  sweep->add_flag("--exclusive", o.slurm.exclusive,
+                  "With --emit slurm: each task on nodes of its own (for timing sweeps)");
+  sweep->add_option("--gres", o.slurm.gres,
+                    "With --emit slurm: generic resources of each task, e.g. gpu:1; the runs "
+                    "then use GL through EGL (gl.backend = \"egl\")");
+  sweep->add_option("--array-throttle", o.slurm.throttle,
+                    "With --emit slurm: at most this many tasks at once (default 0: no cap)");
   return {sweep, [&o] { return cli::sweepCommand(o); }};
 }
 

@@ -160,13 +160,44 @@ void emitSlurm(const fs::path& dir, const std::string& exe, const std::string& s
                const std::vector<std::string>& referenceKeys, const Options& options) {
   writeSlurmScripts(dir, exe, stem, configs, referenceKeys, options.slurm);
   const bool references = fs::exists(dir / "references.slurm");
-  std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size() << " tasks), "
+  std::cout << "wrote " << (dir / "sweep.slurm").string() << " (" << configs.size() << " tasks"
+            << (options.slurm.exclusive ? ", each on nodes of its own" : "")
+            << (options.slurm.gres.empty() ? "" : ", each with " + options.slurm.gres +
+                                                      " and gl.backend = \"egl\"")
+            << "), "
             << (references ? (dir / "references.slurm").string() + " (renders the references first), "
                            : "")
             << (dir / "submit.sh").string() << " and " << (dir / "configs").string()
             << "/<id>.toml\n"
             << "submit: " << (dir / "submit.sh").string() << " [sbatch options]\n"
             << "then:   lpvlab summary " << dir.string() << "\n";
+  if (!options.slurm.exclusive)
+    std::cout << "note: tasks may share a node, which spoils timings; for a timing sweep emit "
+                 "with --exclusive (as --jobs 1 does locally)\n";
+}
+
+// The sweep's options with --emit slurm's resolved: the references' resources default to the
+// tasks', and with --gres every configuration runs GL through EGL (gl.backend = "egl"; another
+// gl.backend given with -s is an error).
+Options resolvedSlurmOptions(Options options) {
+  if (options.emit != "slurm") return options;
+  SlurmResources& refs = options.slurm.references;
+  refs = options.slurm.tasks;
+  if (options.refCpus) refs.cpusPerTask = *options.refCpus;
+  if (options.refMem) refs.memory = *options.refMem;
+  if (options.refTime) refs.time = *options.refTime;
+  checkSlurmOptions(options.slurm);
+  if (!options.slurm.gres.empty()) {
+    for (const std::string& o : options.overrides) {
+      std::string value = o.rfind("gl.backend=", 0) == 0 ? o.substr(11) : "egl";
+      std::erase_if(value, [](char c) { return c == '"' || c == '\'' || c == ' '; });
+      if (value != "egl")
+        throw Error("--gres " + options.slurm.gres + ": the runs use the GPU through EGL, but -s " +
+                    o + " asks for another GL backend");
+    }
+    options.overrides.push_back("gl.backend=\"egl\"");
+  }
+  return options;
 }
 
 // Whether the child that ran configuration `c` into DIR/<id>/ succeeded; if not, says why (its
@@ -233,7 +264,8 @@ void checkDirectory(const fs::path& dir, const Options& options) {
 
 }  // namespace
 
-int sweepCommand(const Options& options) {
+int sweepCommand(const Options& given) {
+  const Options options = resolvedSlurmOptions(given);
   const std::string file = options.experiment;
   const std::string stem = fs::path(file).stem().string();
   const fs::path dir = options.out.empty() ? fs::path("runs") / (stem + "-sweep") : fs::path(options.out);
@@ -245,7 +277,6 @@ int sweepCommand(const Options& options) {
   // Nothing is written before every configuration loads: an unknown swept key or a bad swept
   // value is reported against the user's file and its [sweep] table.
   checkDirectory(dir, options);
-  if (options.emit == "slurm") checkSlurmResources(options.slurm);
   const std::vector<std::string> referenceKeys = checkConfigurations(root, file, configs);
   const std::string hash = sweepHash(root, file);
   resumeOnlyTheSameSweep(dir, hash, file, options);

@@ -39,19 +39,22 @@ class EntryLock {
     if (fd_ < 0)
       throw Error(path + ": cannot open the reference's lock file: " + std::strerror(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+    if (errno != EWOULDBLOCK) fail(path);  // no locks here (e.g. Lustre without -o flock)
     std::cerr << "lpvlab: reference " << key << ": another process is rendering it; waiting\n";
-    while (::flock(fd_, LOCK_EX) != 0) {
-      if (errno == EINTR) continue;
-      const std::string why = std::strerror(errno);
-      ::close(fd_);
-      throw Error(path + ": cannot lock the reference: " + why);
-    }
+    while (::flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) fail(path);
   }
   ~EntryLock() { ::close(fd_); }
   EntryLock(const EntryLock&) = delete;
   EntryLock& operator=(const EntryLock&) = delete;
 
  private:
+  [[noreturn]] void fail(const std::string& path) {
+    const std::string why = std::strerror(errno);
+    ::close(fd_);
+    throw Error(path + ": cannot lock the reference: " + why +
+                " (the cache needs flock(2) across the processes that share it; docs/experiments.md)");
+  }
   int fd_ = -1;
 };
 

@@ -2,8 +2,10 @@
 
 Usage: slurm_sweep_test.py LPVLAB_EXECUTABLE
 Starts munged, slurmctld and slurmd on localhost (local_slurm.py), submits emitted sweeps and
-checks with `lpvlab summary` that every configuration ran exactly once, and that a sweep whose
-configurations compare with a path-traced reference renders that reference once. Exits 77
+checks with `lpvlab summary` that every configuration ran exactly once, that a sweep whose
+configurations compare with path-traced references renders each once (a task of the references'
+array per reference, with resources of its own), and that the options for timing and GPU studies
+(--exclusive, --gres, --array-throttle) reach the scripts and run. Exits 77
 (skipped, for ctest) with the reason when Slurm cannot start here, except under CI (env CI
 set), where that fails.
 """
@@ -125,6 +127,50 @@ class SlurmSweep(unittest.TestCase):
         for i, m in manifests.items():
             self.assertTrue(m["reference"]["reused"], f"{i} rendered the reference again")
         self.assertEqual(len({m["reference"]["key"] for m in manifests.values()}), 1)
+        self.assertEqual(len(self.summary(out)), 4)
+
+    def test_timing_and_gpu_options_reach_the_scripts(self):
+        out = self.emit('[reference]\ncompare = true\nsamples = 4\n'
+                        '[sweep]\nproduct = { "propagation.iterations" = [1, 2, 3] }\n',
+                        "--exclusive", "--gres", "gpu:2", "--array-throttle", "2",
+                        "--ref-cpus-per-task", "1", "--ref-mem", "256M", "--ref-time", "00:20:00")
+        with open(os.path.join(out, "sweep.slurm")) as f:
+            sweep = f.read()
+        for line in ("#SBATCH --array=0-2%2", "#SBATCH --exclusive", "#SBATCH --gres=gpu:2",
+                     "#SBATCH --cpus-per-task=2", "#SBATCH --mem=4G"):
+            self.assertIn(line, sweep)
+        with open(os.path.join(out, "references.slurm")) as f:
+            references = f.read()
+        for line in ("#SBATCH --array=0-0%2", "#SBATCH --cpus-per-task=1", "#SBATCH --mem=256M",
+                     "#SBATCH --time=00:20:00"):
+            self.assertIn(line, references)
+        # The references need no GPU and are not timed: neither option reaches them.
+        self.assertNotIn("--gres", references)
+        self.assertNotIn("--exclusive", references)
+        # With --gres the runs use GL through EGL: every configuration says so.
+        for config in glob.glob(os.path.join(out, "configs", "*.toml")):
+            with open(config) as f:
+                self.assertIn("backend = 'egl'", f.read(), config)
+
+    def test_exclusive_throttled_sweep_renders_each_reference_in_its_own_task(self):
+        # Two references (two image widths), each a task of the references' array; the sweep's
+        # tasks each on the node alone, one at a time.
+        out = self.emit('[reference]\ncompare = true\nsamples = 4\n'
+                        '[sweep]\nproduct = { "propagation.iterations" = [1, 2], '
+                        '"output.width" = [32, 40] }\n',
+                        "--cpus-per-task", "1", "--mem", "512M", "--exclusive",
+                        "--array-throttle", "1", "--ref-cpus-per-task", "1", "--ref-mem", "512M")
+        self.submit(os.path.join(out, "submit.sh"))
+        references = glob.glob(os.path.join(out, "logs", "*_references.out"))
+        self.assertEqual(len(references), 2, references)
+        for log in references:
+            with open(log) as f:
+                self.assertIn("rendered reference", f.read(), log)
+        manifests = self.manifests(out)
+        self.assertEqual(len(manifests), 4)
+        for i, m in manifests.items():
+            self.assertTrue(m["reference"]["reused"], f"{i} rendered its reference again")
+        self.assertEqual(len({m["reference"]["key"] for m in manifests.values()}), 2)
         self.assertEqual(len(self.summary(out)), 4)
 
     def test_tasks_started_together_render_a_missing_reference_once(self):
