@@ -9,6 +9,7 @@
 // image metrics (metrics.h: RMSE, relative MSE, FLIP, SSIM, block nRMSE) and the ratio of the
 // means. --threshold gates scripts: exit code 3 when a figure exceeds its bound.
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -111,6 +112,30 @@ std::vector<NamedImage> differenceLayers(const std::string& name, const Image& t
   return {{name + "_signed", std::move(signedDifference)}, {name + "_relative", std::move(relative)}};
 }
 
+struct RelativePng {
+  std::string path;
+  double top = 1.0;  // the value the ramp's top (pale yellow) stands for
+  std::string topIs; // which: "the 99th percentile", "the largest value", "1 (no difference)"
+};
+
+// <aov>_relative.png in `dir`: each pixel's largest relative difference over its channels through
+// the magma ramp from 0 (black) to the comparison's 99th percentile (pale yellow; the largest
+// value where that is 0, 1 where both are), with its colour bar; background mid grey.
+RelativePng writeRelativePng(const std::string& dir, const std::string& aov,
+                                                const NamedImage& relative, const Image* mask,
+                                                const RelativeDifference& summary) {
+  const Image& rgb = relative.image;
+  Image largest(rgb.width, rgb.height, 1);
+  for (std::size_t p = 0; p < largest.pixels.size(); ++p)
+    largest.pixels[p] = std::max({rgb.pixels[p * 3], rgb.pixels[p * 3 + 1], rgb.pixels[p * 3 + 2]});
+  RelativePng png{(std::filesystem::path(dir) / (aov + "_relative.png")).string(), 1.0,
+                  "1 (no difference)"};
+  if (summary.p99 > 0.0) png = {png.path, summary.p99, "the 99th percentile"};
+  else if (summary.max > 0.0) png = {png.path, summary.max, "the largest value"};
+  writePng(png.path, withColourBar(falseColour(largest, 0.0f, float(png.top), mask)), 0.0f, false);
+  return png;
+}
+
 void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs) {
   std::cout << "compare " << out["test"].get<std::string>() << " against "
             << out["reference"].get<std::string>() << " over " << out["mask"].get<std::string>()
@@ -166,6 +191,10 @@ int compareCommand(const Options& options) {
                         {"mean_ratio", meanReference != 0.0 ? meanOf(*t, covered) / meanReference : 0.0}};
     if (!options.out.empty()) {
       std::vector<NamedImage> layer = differenceLayers(mine, *t, *r, covered, relative.epsilon);
+      std::filesystem::create_directories(options.out);
+      const RelativePng png = writeRelativePng(options.out, mine, layer[1], covered, relative);
+      out["aovs"][aov]["relative_png"] = {
+          {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
       differences.insert(differences.end(), layer.begin(), layer.end());
     }
   }
@@ -193,9 +222,18 @@ int compareCommand(const Options& options) {
     std::cout << out.dump(2) << "\n";
   } else {
     printTable(out, aovs);
-    if (!options.out.empty())
+    if (!options.out.empty()) {
       std::cout << "wrote " << out["difference_exr"].get<std::string>()
                 << " (per AOV <aov>_signed: t - r; <aov>_relative: |t - r| / (|r| + eps))\n";
+      for (const std::string& aov : aovs) {
+        const nlohmann::json& png = out["aovs"][aov]["relative_png"];
+        std::cout << "wrote " << png["path"].get<std::string>()
+                  << " (the largest channel's relative difference; colour bar from 0 at the bottom "
+                     "to "
+                  << png["range"][1].get<double>() << ", " << png["top_is"].get<std::string>()
+                  << ", at the top)\n";
+      }
+    }
   }
   for (const nlohmann::json& e : exceeded)
     std::cerr << "lpvlab: compare: " << e["aov"].get<std::string>() << " " << e["figure"].get<std::string>()

@@ -1,10 +1,13 @@
-// errorHeatMap: the FLIP map through a false-colour ramp.
+// errorHeatMap: the FLIP map through a false-colour ramp; falseColour and withColourBar, the ramp
+// for any scalar image and its key.
 
 #include "framework/metrics/metrics.h"
 
 #include <algorithm>
 #include <array>
+#include <string>
 
+#include "framework/core/error.h"
 #include "framework/metrics/display.h"
 
 namespace lpvlab {
@@ -38,25 +41,55 @@ constexpr float kBackgroundSrgb = 0.5f;
 
 }  // namespace
 
+namespace {
+
+// The magma colour at t in [0, 1] (clamped), as linear values for writePng.
+std::array<float, 3> magmaLinear(float t) {
+  t = std::clamp(t, 0.0f, 1.0f) * float(kMagma.size() - 1);
+  const std::size_t i = std::min(std::size_t(t), kMagma.size() - 2);
+  const float f = t - float(i);
+  std::array<float, 3> linear;
+  for (int c = 0; c < 3; ++c) linear[c] = decodeSrgb(kMagma[i][c] + f * (kMagma[i + 1][c] - kMagma[i][c]));
+  return linear;
+}
+
+}  // namespace
+
+Image falseColour(const Image& values, float low, float high, const Image* mask) {
+  if (values.channels != 1) throw Error("falseColour: the image has " + std::to_string(values.channels) + " channels, not 1");
+  if (!(high > low)) throw Error("falseColour: the range [" + std::to_string(low) + ", " + std::to_string(high) + "] is empty");
+  Image out(values.width, values.height, 3);
+  const float background = decodeSrgb(kBackgroundSrgb);
+  for (std::size_t p = 0; p < values.pixels.size(); ++p) {
+    std::array<float, 3> linear;
+    if (!mask || mask->pixels[p] != 0.0f)
+      linear = magmaLinear((values.pixels[p] - low) / (high - low));
+    else
+      linear.fill(background);
+    for (int c = 0; c < 3; ++c) out.pixels[p * 3 + c] = linear[c];
+  }
+  return out;
+}
+
+Image withColourBar(const Image& heat) {
+  const int bar = std::max(8, heat.width / 24), gap = std::max(2, bar / 4);
+  Image out(heat.width + gap + bar, heat.height, 3, decodeSrgb(kBackgroundSrgb));
+  for (int y = 0; y < heat.height; ++y) {
+    for (int x = 0; x < heat.width; ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = heat.at(x, y, c);
+    // Top row first: the top of the bar is the range's high end.
+    const std::array<float, 3> linear =
+        magmaLinear(heat.height > 1 ? 1.0f - float(y) / float(heat.height - 1) : 1.0f);
+    for (int x = heat.width + gap; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = linear[c];
+  }
+  return out;
+}
+
 Image errorHeatMap(const Image& test, const Image& reference, const Image* mask,
                    const MetricOptions& options) {
-  const Image flip = flipErrorMap(test, reference, mask, options);  // checks the inputs
-  Image heat(flip.width, flip.height, 3);
-  for (std::size_t p = 0; p < flip.pixels.size(); ++p) {
-    std::array<float, 3> srgb;
-    if (!mask || mask->pixels[p] != 0.0f) {
-      // FLIP is in [0, 1]; the clamp only keeps a rounding excess from reading past the table.
-      const float t = std::clamp(flip.pixels[p], 0.0f, 1.0f) * float(kMagma.size() - 1);
-      const std::size_t i = std::min(std::size_t(t), kMagma.size() - 2);
-      const float f = t - float(i);
-      for (int c = 0; c < 3; ++c) srgb[c] = kMagma[i][c] + f * (kMagma[i + 1][c] - kMagma[i][c]);
-    } else {
-      srgb.fill(kBackgroundSrgb);
-    }
-    // Linear values, so that writePng's sRGB encoding stores the colour map's own values.
-    for (int c = 0; c < 3; ++c) heat.pixels[p * 3 + c] = decodeSrgb(srgb[c]);
-  }
-  return heat;
+  // FLIP is in [0, 1]; the clamp keeps a rounding excess on the ramp.
+  return falseColour(flipErrorMap(test, reference, mask, options), 0.0f, 1.0f, mask);
 }
 
 }  // namespace lpvlab

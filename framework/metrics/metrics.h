@@ -81,4 +81,12 @@ Image flipErrorMap(const Image& test, const Image& reference, const Image* mask 
 Image errorHeatMap(const Image& test, const Image& reference, const Image* mask = nullptr,
                    const MetricOptions& options = {});
 
+// A one-channel image through the same magma ramp, `low` black to `high` pale yellow (values
+// outside clamped to the ends), background pixels (mask 0) mid grey; linear values for writePng.
+Image falseColour(const Image& values, float low, float high, const Image* mask = nullptr);
+
+// `heat` with its colour bar: a strip along its right edge, after a gap of background grey, whose
+// rows run through the ramp from its low end at the bottom to its high end at the top.
+Image withColourBar(const Image& heat);
+
 }  // namespace lpvlab

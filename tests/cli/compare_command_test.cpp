@@ -1,10 +1,14 @@
 // `lpvlab compare` on images whose differences are known: a test 0.1 brighter than a reference of
 // 0.5 on every covered pixel (depth > 0; one background column left out) has RMSE 0.1, block
 // nRMSE 0.2, a ratio of means 1.2 and a relative difference 0.1 / (0.5 + 5e-4); --threshold gates
-// on them with exit code 3; --out writes the signed and relative differences; --aov A=B compares
+// on them with exit code 3; --out writes the signed and relative differences and a PNG of the
+// relative one with its colour bar; --aov A=B compares
 // a run's layer with a reference's of another name.
 
 #include <filesystem>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
 
 #include <gtest/gtest.h>
 
@@ -98,6 +102,25 @@ TEST(CompareCommand, OutWritesTheDifferencesAndLayersPairUp) {
   EXPECT_EQ(twice.exitCode, 1);
   EXPECT_NE(twice.err.find("twice"), std::string::npos) << twice.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("diff2/difference.exr")));
+  // The PNG of the relative difference, with its colour bar: every covered pixel has the 99th
+  // percentile's value, so the ramp's top (magma's pale yellow, sRGB 252 253 191); the background
+  // column mid grey; the bar (after a 2-pixel gap, 8 wide) pale yellow at the top, black at the
+  // bottom.
+  auto in = OIIO::ImageInput::open(dir.file("diff/indirect_relative.png"));
+  ASSERT_TRUE(in) << OIIO::geterror();
+  const OIIO::ImageSpec& spec = in->spec();
+  ASSERT_EQ(spec.width, kSize + 2 + 8);
+  ASSERT_EQ(spec.height, kSize);
+  std::vector<unsigned char> png(std::size_t(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, png.data()));
+  auto pixel = [&](int x, int y, int c) { return int(png[(std::size_t(y) * spec.width + x) * spec.nchannels + c]); };
+  const int paleYellow[3] = {252, 253, 191};
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(pixel(5, 5, c), paleYellow[c], 1) << c;
+    EXPECT_NEAR(pixel(0, 5, c), 128, 1) << "background, channel " << c;
+    EXPECT_NEAR(pixel(spec.width - 1, 0, c), paleYellow[c], 1) << "bar top, channel " << c;
+    EXPECT_LE(pixel(spec.width - 1, kSize - 1, c), 4) << "bar bottom, channel " << c;
+  }
   // A layer the reference lacks is named.
   const test::LpvlabResult missing =
       test::runLpvlab("compare test.exr reference.exr --aov indirect=indirect2", dir.path(), dir.path());

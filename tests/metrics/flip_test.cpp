@@ -229,5 +229,28 @@ TEST(HeatMap, MagmaForErrorsGreyForBackground) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(test::srgb(heat.at(0, 0, c)), 0.5, 1e-4);
 }
 
+TEST(HeatMap, FalseColourMapsItsRangeOntoTheRampAndTheBarRunsBottomToTop) {
+  Image values(4, 1, 1);
+  values.pixels = {-1.0f, 2.0f, 6.0f, 9.0f};  // below, at, above the range [2, 6]; and masked
+  Image mask(4, 1, 1, 1.0f);
+  mask.pixels[3] = 0.0f;
+  const Image heat = falseColour(values, 2.0f, 6.0f, &mask);
+  EXPECT_NEAR(test::srgb(heat.at(0, 0, 2)), 0.0139, 2e-3);  // clamped to the low end: black
+  EXPECT_NEAR(test::srgb(heat.at(1, 0, 2)), 0.0139, 2e-3);
+  EXPECT_NEAR(test::srgb(heat.at(2, 0, 0)), 0.9871, 2e-3);  // the high end: pale yellow
+  EXPECT_NEAR(test::srgb(heat.at(2, 0, 2)), 0.7495, 2e-3);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(test::srgb(heat.at(3, 0, c)), 0.5, 1e-4);
+  // The bar: after the image and a gap, the top row the ramp's top, the bottom row its bottom.
+  const Image tall = falseColour(Image(10, 30, 1, 4.0f), 2.0f, 6.0f);
+  const Image keyed = withColourBar(tall);
+  ASSERT_GT(keyed.width, tall.width + 2);
+  EXPECT_NEAR(test::srgb(keyed.at(keyed.width - 1, 0, 0)), 0.9871, 2e-3);
+  EXPECT_NEAR(test::srgb(keyed.at(keyed.width - 1, 29, 2)), 0.0139, 2e-3);
+  EXPECT_NEAR(keyed.at(4, 7, 1), tall.at(4, 7, 1), 0.0f);  // the image itself unchanged
+  // Bad input: more than one channel, an empty range.
+  EXPECT_THROW(falseColour(Image(2, 2, 3), 0.0f, 1.0f), Error);
+  EXPECT_THROW(falseColour(values, 1.0f, 1.0f), Error);
+}
+
 }  // namespace
 }  // namespace lpvlab
