@@ -1,4 +1,4 @@
-// The interface of cascade_blend.glsl, shared with its C++ side (framework/pipeline/cascade.cpp):
+// The interface of cascade_blend.glsl, shared with its C++ side (framework/pipeline/cascade_blend.cpp):
 // its binding points and uniform locations (and a kernel's work-group size), defined here once. Plain
 // `const int`s, valid GLSL and C++ (C++ includes this inside a namespace of its own).
 const int CASCADE_MAX_LEVELS = 8;              // levels a rendering kernel can blend

@@ -1,4 +1,4 @@
-// The interface of gv_rsm.comp, shared with its C++ side (variants/occlusion/geometry_volume.cpp):
+// The interface of gv_rsm.comp, shared with its C++ side (variants/occlusion/geometry_volume_gl.cpp):
 // its binding points and uniform locations (and a kernel's work-group size), defined here once. Plain
 // `const int`s, valid GLSL and C++ (C++ includes this inside a namespace of its own).
 const int GROUP_SIZE_X = 8;             // work-group size

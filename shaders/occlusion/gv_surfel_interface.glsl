@@ -1,4 +1,4 @@
-// The interface of gv_surfel.glsl, shared with its C++ side (variants/occlusion/geometry_volume.cpp):
+// The interface of gv_surfel.glsl, shared with its C++ side (variants/occlusion/geometry_volume_gl.cpp):
 // its binding points and uniform locations (and a kernel's work-group size), defined here once. Plain
 // `const int`s, valid GLSL and C++ (C++ includes this inside a namespace of its own).
 // The surfels' textures, bound alike by both injection kernels (gv_camera.comp: the G-buffer;

@@ -1,4 +1,4 @@
-// The interface of standard_gather.comp and standard_scatter.comp, shared with their C++ side (variants/propagation/standard.cpp):
+// The interface of standard_gather.comp, standard_gather_tiled.comp and standard_scatter.comp, shared with their C++ side (variants/propagation/standard_gl.cpp):
 // its binding points and uniform locations (and a kernel's work-group size), defined here once. Plain
 // `const int`s, valid GLSL and C++ (C++ includes this inside a namespace of its own).
 const int GROUP_SIZE_X = 4;                       // work-group size

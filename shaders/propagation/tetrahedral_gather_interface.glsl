@@ -1,4 +1,4 @@
-// The interface of tetrahedral_gather.comp, shared with its C++ side (variants/propagation/tetrahedral.cpp):
+// The interface of tetrahedral_gather.comp, shared with its C++ side (variants/propagation/tetrahedral_gl.cpp):
 // its binding points and uniform locations (and a kernel's work-group size), defined here once. Plain
 // `const int`s, valid GLSL and C++ (C++ includes this inside a namespace of its own).
 const int GROUP_SIZE_X = 4;            // work-group size
