@@ -414,13 +414,15 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     else:
         body.append("<p class='note'>Reference (path-traced indirect1) and result (the run's indirect) are tone-mapped "
                     "from the EXRs with the same exposure, set by the reference.</p>")
-    for _, row in agg.iterrows():
+    # In the order of their swept parameters' values, each with links to its run's files.
+    for _, row in S.ordered_by_swept(agg).iterrows():
         trio, _, run_dir = imgs[row["config_id"]]
+        links = "".join(f"; <a href='{_rel(run_dir, out_dir)}/{name}'>{label}</a>"
+                        for name, label in (("images.exr", "EXR"), ("manifest.json", "manifest"))
+                        if os.path.isfile(os.path.join(run_dir, name)))
         body.append(f"<h3>{html.escape(str(row['config_name']))} <span class='note'>"
                     f"{html.escape(str(row['variant']))}; {html.escape(str(row['label']))}"
-                    + (f"; <a href='{_rel(run_dir, out_dir)}/manifest.json'>manifest</a>"
-                       if os.path.isfile(os.path.join(run_dir, 'manifest.json')) else "")
-                    + "</span></h3>")
+                    + links + "</span></h3>")
         figs = []
         for cap, src in trio:
             inner = f"<img src='{html.escape(src)}' alt='{html.escape(cap)}'>" if src else "<p class='note'>(not available)</p>"

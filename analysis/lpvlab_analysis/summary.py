@@ -188,6 +188,20 @@ def is_numeric_param(df, col):
     return pd.api.types.is_numeric_dtype(df[col])
 
 
+def ordered_by_swept(df):
+    """df's rows ordered by their swept parameters' values, the parameters in column order:
+    numbers numerically (so 4 before 16), anything else as text; ties by config_name. Stable."""
+    keys = swept_params(df) + (["config_name"] if "config_name" in df.columns else [])
+    if not keys:
+        return df
+
+    def key(col):
+        if col.name != "config_name" and is_numeric_param(df, col.name):
+            return pd.to_numeric(col, errors="coerce")
+        return col.astype(str)
+    return df.sort_values(keys, key=key, kind="mergesort", na_position="last")
+
+
 def variant_label(row, categorical_swept):
     """Label of the algorithm variant of a configuration.
 

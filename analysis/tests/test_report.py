@@ -56,6 +56,34 @@ class ReportTest(unittest.TestCase):
         self.assertIn("each stage by its own clock: GL stages on llvmpipe (LLVM 15.0.6, 256 bits), "
                       "CPU stages on Test CPU 9000", page)
 
+    def test_configurations_appear_in_the_order_of_their_swept_values(self):
+        # Config ids that say nothing of the order (reversed), iterations 1, 4, 16 (numbers, not
+        # text: 16 is not before 4), propagation types as text.
+        import csv
+        path = os.path.join(self.dir, "summary.csv")
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
+        ids = sorted({r["config_id"] for r in rows})
+        rename = dict(zip(ids, reversed(ids)))
+        for old in ids:
+            os.rename(os.path.join(self.dir, old), os.path.join(self.dir, "tmp-" + old))
+        for old in ids:
+            os.rename(os.path.join(self.dir, "tmp-" + old), os.path.join(self.dir, rename[old]))
+        for r in rows:
+            r["config_id"] = r["run_dir"] = rename[r["config_id"]]
+        with open(path, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+        page = self._check(report.build_report(self.dir))
+        section = page[page.index("Images per configuration"):]
+        names = re.findall(r"<h3>([a-z_0-9]+) <span", section)
+        self.assertEqual(names, ["occlusion_it1", "occlusion_it4", "occlusion_it16",
+                                 "standard_it1", "standard_it4", "standard_it16"])
+        # Each links to its run's EXR and manifest (_check: every link exists).
+        self.assertEqual(section.count(">EXR</a>"), 6 if images.have_oiio() else 0)
+        self.assertEqual(section.count(">manifest</a>"), 6)
+
     def test_several_sweeps_in_one_report(self):
         other = make_sweep(os.path.join(self.tmp.name, "second"))
         out = os.path.join(self.tmp.name, "both")
