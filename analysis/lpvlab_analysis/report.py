@@ -36,12 +36,47 @@ from . import summary as S
 from . import tables
 from . import thesis_tables as T
 
+# Every table's columns sort by a click on their header (numbers numerically, then text; a second
+# click reverses), dependency-free. The header is the table's <thead> row, else its first row.
+SORTABLE_TABLES_JS = """
+document.querySelectorAll('table').forEach(function (table) {
+  var head = table.tHead ? table.tHead.rows[0] : table.rows[0];
+  if (!head) return;
+  Array.prototype.forEach.call(head.cells, function (th, col) {
+    th.classList.add('sortable');
+    th.addEventListener('click', function () {
+      var rows = Array.prototype.filter.call(table.rows, function (r) {
+        return r !== head && r.parentNode.tagName !== 'THEAD';
+      });
+      var up = th.getAttribute('aria-sort') !== 'ascending';
+      function key(r) {
+        var t = r.cells[col] ? r.cells[col].textContent.trim() : '';
+        var n = /^[-+]?(\\d|\\.\\d)/.test(t) ? parseFloat(t) : NaN;
+        return [isNaN(n) ? null : n, t];
+      }
+      rows.sort(function (a, b) {
+        var ka = key(a), kb = key(b), c;
+        if (ka[0] !== null && kb[0] !== null) c = ka[0] - kb[0];
+        else if (ka[0] !== null) c = -1;
+        else if (kb[0] !== null) c = 1;
+        else c = ka[1].localeCompare(kb[1]);
+        return up ? c : -c;
+      });
+      rows.forEach(function (r) { r.parentNode.appendChild(r); });
+      Array.prototype.forEach.call(head.cells, function (h) { h.removeAttribute('aria-sort'); });
+      th.setAttribute('aria-sort', up ? 'ascending' : 'descending');
+    });
+  });
+});
+"""
+
 CSS = """
 body{font-family:sans-serif;margin:1.5em;max-width:1400px;color:#222}
 table{border-collapse:collapse;font-size:13px;margin:.5em 0}
 th,td{border:1px solid #ccc;padding:3px 6px}th{background:#f0f0f0}
 td.num{text-align:right;font-variant-numeric:tabular-nums}
 img.plot{max-width:100%;border:1px solid #ddd;margin:4px}
+th.sortable{cursor:pointer}th[aria-sort=ascending]::after{content:" \\25B2"}th[aria-sort=descending]::after{content:" \\25BC"}
 .trio{display:flex;gap:8px;flex-wrap:wrap}.trio figure{margin:0}
 .trio img{width:256px;image-rendering:pixelated;border:1px solid #ddd}
 figcaption{font-size:12px;color:#555}.note{font-size:12px;color:#666}
@@ -430,7 +465,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         body.append("<div class='trio'>" + "".join(figs) + "</div>")
 
     page = ("<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>lpvlab sweep report</title>"
-            f"<style>{CSS}</style></head><body>\n" + _scrolling_tables("\n".join(body)) + "\n</body></html>\n")
+            f"<style>{CSS}</style></head><body>\n" + _scrolling_tables("\n".join(body)) +
+            f"\n<script>{SORTABLE_TABLES_JS}</script>\n</body></html>\n")
     index = os.path.join(out_dir, "index.html")
     fsutil.write_text(index, page)
     _log(f"wrote {index}")

@@ -115,6 +115,25 @@ class ReportInBrowser(unittest.TestCase):
             "return [document.documentElement.scrollWidth, document.documentElement.clientWidth];")
         self.assertLessEqual(page, window, "the page is wider than the window")
 
+    def test_a_header_click_sorts_its_column_and_a_second_reverses_it(self):
+        # The ablation table's third column (a metric: numbers), as the page shows it.
+        column = '''
+            var t = document.querySelector('table.ablation');
+            return [...t.tBodies[0].rows].map(r => r.cells[2].textContent.trim());'''
+        header = self.driver.execute_script(
+            "return document.querySelector('table.ablation').tHead.rows[0].cells[2];")
+        before = self.driver.execute_script(column)
+        numbers = [float(v) for v in before if v not in ("", "inf")]
+        self.assertGreater(len(set(numbers)), 1, before)  # something to sort
+        header.click()
+        ascending = [float(v) for v in self.driver.execute_script(column) if v not in ("", "inf")]
+        self.assertEqual(ascending, sorted(numbers))
+        self.assertEqual(header.get_attribute("aria-sort"), "ascending")
+        header.click()
+        descending = [float(v) for v in self.driver.execute_script(column) if v not in ("", "inf")]
+        self.assertEqual(descending, sorted(numbers, reverse=True))
+        self.assertEqual(header.get_attribute("aria-sort"), "descending")
+
     def test_console_shows_no_error(self):
         errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
         self.assertEqual(errors, [])
