@@ -70,13 +70,35 @@ document.querySelectorAll('table').forEach(function (table) {
 });
 """
 
+# The images of a configuration: a click on the result flips it with the reference (same
+# exposure), a double click zooms any image 4x with its pixels as squares (in its own scroll box).
+IMAGE_CONTROLS_JS = """
+document.querySelectorAll('img.flip').forEach(function (img) {
+  var caption = img.parentNode.querySelector('figcaption');
+  var own = [img.getAttribute('src'), caption.textContent];
+  var other = [img.dataset.flip, img.dataset.flipCaption + ' (click: back to the result)'];
+  img.addEventListener('click', function () {
+    var to = img.getAttribute('src') === own[0] ? other : own;
+    img.setAttribute('src', to[0]);
+    caption.textContent = to[1];
+  });
+});
+document.querySelectorAll('.trio img').forEach(function (img) {
+  img.addEventListener('dblclick', function () {
+    var zoomed = img.classList.toggle('zoomed');
+    img.style.width = zoomed ? (4 * img.naturalWidth) + 'px' : '';
+  });
+});
+"""
+
 CSS = """
 body{font-family:sans-serif;margin:1.5em;max-width:1400px;color:#222}
 table{border-collapse:collapse;font-size:13px;margin:.5em 0}
 th,td{border:1px solid #ccc;padding:3px 6px}th{background:#f0f0f0}
 td.num{text-align:right;font-variant-numeric:tabular-nums}
 img.plot{max-width:100%;border:1px solid #ddd;margin:4px}
-th.sortable{cursor:pointer}th[aria-sort=ascending]::after{content:" \\25B2"}th[aria-sort=descending]::after{content:" \\25BC"}
+.trio figure{max-width:100%;overflow:auto}img.zoomed{image-rendering:pixelated;max-width:none}
+img.flip{cursor:pointer}th.sortable{cursor:pointer}th[aria-sort=ascending]::after{content:" \\25B2"}th[aria-sort=descending]::after{content:" \\25BC"}
 .trio{display:flex;gap:8px;flex-wrap:wrap}.trio figure{margin:0}
 .trio img{width:256px;image-rendering:pixelated;border:1px solid #ddd}
 figcaption{font-size:12px;color:#555}.note{font-size:12px;color:#666}
@@ -159,6 +181,25 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
         trio.append(("error map (FLIP, indirect)", _rel(err, out_dir) if os.path.isfile(err) else None))
         result[row["config_id"]] = (trio, done, run_dir)
     return result
+
+
+def _figures(trio, flips):
+    """The <figure>s of a configuration's images. With `flips` (a tone-mapped reference and result
+    of the same exposure, trio[0] and trio[1]), a click on the result shows the reference in its
+    place and back (IMAGE_CONTROLS_JS); a double click on any image zooms it 4x with its pixels
+    drawn as squares."""
+    figs = []
+    for k, (cap, src) in enumerate(trio):
+        if not src:
+            inner = "<p class='note'>(not available)</p>"
+        elif flips and k == 1:
+            inner = (f"<img class='flip' src='{html.escape(src)}' alt='{html.escape(cap)}' "
+                     f"data-flip='{html.escape(trio[0][1])}' data-flip-caption='{html.escape(trio[0][0])}' "
+                     "title='click: the reference in its place; double click: zoom'>")
+        else:
+            inner = f"<img src='{html.escape(src)}' alt='{html.escape(cap)}' title='double click: zoom'>"
+        figs.append(f"<figure>{inner}<figcaption>{html.escape(cap)}</figcaption></figure>")
+    return figs
 
 
 _BASIS_MARK = {"measured": "", "every measured GPU": "†"}
@@ -451,22 +492,18 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
                     "from the EXRs with the same exposure, set by the reference.</p>")
     # In the order of their swept parameters' values, each with links to its run's files.
     for _, row in S.ordered_by_swept(agg).iterrows():
-        trio, _, run_dir = imgs[row["config_id"]]
+        trio, done, run_dir = imgs[row["config_id"]]
         links = "".join(f"; <a href='{_rel(run_dir, out_dir)}/{name}'>{label}</a>"
                         for name, label in (("images.exr", "EXR"), ("manifest.json", "manifest"))
                         if os.path.isfile(os.path.join(run_dir, name)))
         body.append(f"<h3>{html.escape(str(row['config_name']))} <span class='note'>"
                     f"{html.escape(str(row['variant']))}; {html.escape(str(row['label']))}"
                     + links + "</span></h3>")
-        figs = []
-        for cap, src in trio:
-            inner = f"<img src='{html.escape(src)}' alt='{html.escape(cap)}'>" if src else "<p class='note'>(not available)</p>"
-            figs.append(f"<figure>{inner}<figcaption>{html.escape(cap)}</figcaption></figure>")
-        body.append("<div class='trio'>" + "".join(figs) + "</div>")
+        body.append("<div class='trio'>" + "".join(_figures(trio, done)) + "</div>")
 
     page = ("<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>lpvlab sweep report</title>"
             f"<style>{CSS}</style></head><body>\n" + _scrolling_tables("\n".join(body)) +
-            f"\n<script>{SORTABLE_TABLES_JS}</script>\n</body></html>\n")
+            f"\n<script>{SORTABLE_TABLES_JS}{IMAGE_CONTROLS_JS}</script>\n</body></html>\n")
     index = os.path.join(out_dir, "index.html")
     fsutil.write_text(index, page)
     _log(f"wrote {index}")

@@ -134,6 +134,31 @@ class ReportInBrowser(unittest.TestCase):
         self.assertEqual(descending, sorted(numbers, reverse=True))
         self.assertEqual(header.get_attribute("aria-sort"), "descending")
 
+    def test_a_click_flips_the_result_with_its_reference_and_a_double_click_zooms(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        flips = self.driver.find_elements("css selector", "img.flip")
+        self.assertEqual(len(flips), self.configurations)  # every configuration has a reference
+        img = flips[0]
+        own, reference = img.get_attribute("src"), img.get_attribute("data-flip")
+        self.driver.execute_script("arguments[0].scrollIntoView();", img)
+        img.click()
+        self.assertTrue(img.get_attribute("src").endswith(reference.lstrip("./")), img.get_attribute("src"))
+        caption = img.find_element("xpath", "../figcaption").text
+        self.assertIn("reference", caption)
+        img.click()
+        self.assertEqual(img.get_attribute("src"), own)
+        natural = self.driver.execute_script("return arguments[0].naturalWidth;", img)
+        ActionChains(self.driver).double_click(img).perform()
+        width = self.driver.execute_script("return arguments[0].getBoundingClientRect().width;", img)
+        self.assertAlmostEqual(width, 4 * natural, delta=2)
+        self.assertEqual(self.driver.execute_script(
+            "return getComputedStyle(arguments[0]).imageRendering;", img), "pixelated")
+        ActionChains(self.driver).double_click(img).perform()  # back
+        # Zoomed or not, the page itself never scrolls sideways (the figure scrolls).
+        page, window = self.driver.execute_script(
+            "return [document.documentElement.scrollWidth, document.documentElement.clientWidth];")
+        self.assertLessEqual(page, window)
+
     def test_console_shows_no_error(self):
         errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
         self.assertEqual(errors, [])
