@@ -37,7 +37,8 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=None):
     """The speed axis's median time (summary.with_speed: by default the indirect method's own
     stages; by the clocks that timed it, S.timed_on) vs an image metric, one colour per variant;
     the Pareto front (fast and accurate; for PSNR/SSIM 'accurate' = high) is drawn as a step line
-    and its points are ringed. Infinite metric values (PSNR of identical images) are drawn at the
+    and its points are ringed. Every point is labelled with its configuration's name (up to 24
+    points; beyond, the front's alone, which then stay readable). Infinite metric values (PSNR of identical images) are drawn at the
     top edge with a marker. `time_col`: another time column instead."""
     time_col = time_col or S.speed_col(agg)
     if metric not in agg.columns or time_col not in agg.columns:
@@ -62,9 +63,11 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=None):
         fy = [ed[i] for i in front]
         ax.step(fx, fy, where="post", color="k", lw=1, ls="--", zorder=2, label="Pareto front")
         ax.scatter(fx, fy, s=120, facecolors="none", edgecolors="k", lw=1.2, zorder=4)
-        for i in front:
-            ax.annotate(str(agg["config_name"].iloc[i]), (t[i], ed[i]), fontsize=7,
-                        xytext=(4, 4), textcoords="offset points")
+    labelled = [i for i in range(len(t)) if ok[i]] if ok.sum() <= 24 else list(front)
+    for i in labelled:
+        ax.annotate(str(agg["config_name"].iloc[i]), (t[i], ed[i]), fontsize=6,
+                    xytext=(4, 4), textcoords="offset points",
+                    fontweight="bold" if i in front else "normal")
     if np.isinf(e[ok]).any():
         ax.axhline(top, color="0.7", lw=0.8)
         ax.text(ax.get_xlim()[0], top, " inf", va="bottom", fontsize=7, color="0.4")
@@ -72,7 +75,7 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=None):
         ax.set_xlabel(f"{S.speed_words(agg)}: ms, median; {S.timed_on(agg, S.speed_stage(agg))}", fontsize=8)
     else:
         ax.set_xlabel(f"{time_col} (ms, median)", fontsize=8)
-    ax.set_ylabel(metric[len("metric."):] + (" (higher is better)" if hib else " (lower is better)"))
+    ax.set_ylabel(S.metric_axis_label(metric), fontsize=8)
     ax.set_title("Speed vs accuracy")
     ax.grid(alpha=0.3)
     # Below the axes: variant labels are long, and inside they covered the points.
@@ -112,22 +115,32 @@ def stage_times(agg, param, path):
     return _save(fig, path)
 
 
+ERROR_PANELS_PER_ROW = 3
+
+
 def error_vs_param(agg, param, path, metrics=None):
     """Image metric(s) against one swept numeric parameter (e.g.
     propagation.iterations, grid.resolution), one line per variant, other
-    swept numeric parameters held at their most common value."""
+    swept numeric parameters held at their most common value. A panel per metric, at most
+    ERROR_PANELS_PER_ROW to a row (one strip of 14 panels was unreadable at page width), each
+    with its metric and unit on its y axis."""
     metrics = [m for m in (metrics or S.metric_columns(agg)) if m in agg.columns and agg[m].notna().any()]
     sl = S.one_at_a_time(agg, param)
     if not metrics or param not in sl.columns or sl[param].nunique() < 2:
         return None
-    fig, axes = plt.subplots(1, len(metrics), figsize=(4.5 * len(metrics), 3.6), squeeze=False)
+    cols = min(ERROR_PANELS_PER_ROW, len(metrics))
+    rows = (len(metrics) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.6 * cols, 3.4 * rows), squeeze=False)
+    for ax in axes.flat[len(metrics):]:
+        ax.set_visible(False)
     colours = _colours(set(sl["variant"]))
-    for ax, m in zip(axes[0], metrics):
+    for ax, m in zip(axes.flat, metrics):
         for v, c in colours.items():
             g = sl[sl["variant"] == v].groupby(param)[m].median().sort_index()
             y = g.values.astype(float)
             ax.plot(g.index.values, np.where(np.isinf(y), np.nan, y), "o-", color=c, label=v, ms=4)
-        ax.set_xlabel(_pname(param))
+        ax.set_xlabel(_pname(param), fontsize=8)
+        ax.set_ylabel(S.metric_axis_label(m), fontsize=7)
         ax.set_title(m[len("metric."):], fontsize=9)
         x = sl[param].astype(float)
         if x.min() > 0 and x.max() / x.min() >= 8:
@@ -135,6 +148,7 @@ def error_vs_param(agg, param, path, metrics=None):
         ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7)
     fig.suptitle(f"Error vs {_pname(param)}")
+    fig.tight_layout()
     return _save(fig, path)
 
 

@@ -174,6 +174,28 @@ def metric_name(col):
     return col.rsplit(".", 1)[-1]
 
 
+# What each image metric is measured in (framework/metrics/metrics.h), for axis labels.
+METRIC_UNITS = {
+    "mae": "radiance, W/(m² sr)",
+    "rmse": "radiance, W/(m² sr)",
+    "rel_mse": "relative: (t − r)² / (r² + ε)",
+    "psnr": "dB",
+    "ssim": "0–1, of the display images",
+    "flip": "0–1, of the display images",
+    "block_nrmse": "8×8 blocks, over the reference's mean",
+}
+
+
+def metric_axis_label(col):
+    """'indirect_vs_indirect1 rmse (radiance, W/(m² sr); lower is better)' for a metric column."""
+    parts = col.split(".")
+    pair = parts[1] if len(parts) > 2 else ""
+    name = metric_name(col)
+    unit = METRIC_UNITS.get(name)
+    better = "higher is better" if higher_is_better(col) else "lower is better"
+    return f"{pair} {name}".strip() + f" ({unit + '; ' if unit else ''}{better})"
+
+
 def higher_is_better(col):
     """PSNR and SSIM grow with quality; every other metric is an error."""
     return metric_name(col) in HIGHER_IS_BETTER
