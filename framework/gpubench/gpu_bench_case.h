@@ -39,6 +39,9 @@ struct GpuBenchWork {
 // A named input array as reset() uploads it: a test gives a CPU kernel the same.
 using GpuBenchInputs = std::vector<std::pair<std::string, std::vector<float>>>;
 
+// The input named `name`; an Error when there is none.
+const std::vector<float>& benchInput(const GpuBenchInputs& inputs, const std::string& name);
+
 class GpuBenchCase {
 public:
   virtual ~GpuBenchCase() = default;

@@ -17,4 +17,12 @@ std::vector<float> benchValues(std::size_t n, std::uint64_t stream, float low, f
 
 double benchChecksum(const std::vector<float>& values);
 
+// The checksum of a GL buffer's floats: a DualBuffer or a gl::Buffer (size() in bytes, download()).
+template <class Buffer>
+double benchChecksumOf(const Buffer& buffer) {
+  std::vector<float> values(buffer.size() / sizeof(float));
+  buffer.download(values.data(), values.size() * sizeof(float));
+  return benchChecksum(values);
+}
+
 }  // namespace lpvlab

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/kernel_work.h"
 #include "framework/pipeline/light_grid.h"
 
 namespace lpvlab {
@@ -43,10 +44,7 @@ void setCascadeBlendUniforms(const Frame& frame, int level);
 // The GL carry's work per parent cell written (the parent cells inside the child: half the child's
 // cells along each axis), with N coefficients per channel: 8 child cells' 3N floats read and 3N
 // written; 8 adds per coefficient.
-struct CascadeCarryWork {
-  double multiplyAdds = 0.0, bytes = 0.0;
-};
-inline CascadeCarryWork cascadeCarryGlWork(int coefficients) {
+inline KernelWork cascadeCarryGlWork(int coefficients) {
   const double n = coefficients;
   return {8 * 3 * n, 4 * (8 * 3 * n + 3 * n)};
 }

@@ -38,14 +38,10 @@ public:
 
   void run() override { carry_->carry(child_, parent_); }
 
-  double checksum() const override {
-    std::vector<float> values(parent_.floatsPerGrid());
-    parent_.current.download(values.data(), values.size() * sizeof(float));
-    return benchChecksum(values);
-  }
+  double checksum() const override { return benchChecksumOf(parent_.current); }
 
   GpuBenchWork work() const override {
-    const CascadeCarryWork w = cascadeCarryGlWork(coefficients_);
+    const KernelWork w = cascadeCarryGlWork(coefficients_);
     const glm::dvec3 half(parent_.geometry.resolution / 2);
     return {"parent-cell", half.x * half.y * half.z, w.multiplyAdds, w.bytes};
   }

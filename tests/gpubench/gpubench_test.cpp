@@ -74,11 +74,6 @@ const std::map<std::string, Known>& knownCases() {
   return cases;
 }
 
-const std::vector<float>& input(const GpuBenchInputs& inputs, const std::string& name) {
-  for (const auto& [n, values] : inputs)
-    if (n == name) return values;
-  throw std::runtime_error("no input " + name);
-}
 
 // The CPU backend's checksum of the same rendering from `inputs`: the G-buffer's pixels in a row
 // (the kernel is per pixel), the grid at the origin with cells 1 / resolution.x wide (as
@@ -86,10 +81,10 @@ const std::vector<float>& input(const GpuBenchInputs& inputs, const std::string&
 double cpuRenderingChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
   test::HandGrid grid({glm::vec3(0.0f), 1.0f / float(shape.resolution.x), shape.resolution},
                       shape.shOrder);
-  grid.data = input(inputs, "accumulated");
-  const std::vector<float>& p = input(inputs, "position");
-  const std::vector<float>& n = input(inputs, "normal");
-  const std::vector<float>& a = input(inputs, "albedo");
+  grid.data = benchInput(inputs, "accumulated");
+  const std::vector<float>& p = benchInput(inputs, "position");
+  const std::vector<float>& n = benchInput(inputs, "normal");
+  const std::vector<float>& a = benchInput(inputs, "albedo");
   std::vector<test::SurfacePixel> pixels;
   for (std::size_t i = 0; i < p.size() / 4; ++i)
     pixels.push_back({{p[4 * i], p[4 * i + 1], p[4 * i + 2]},
@@ -118,7 +113,7 @@ HostImage hostImage(const std::vector<float>& rgba, const glm::ivec2& size) {
 double cpuInjectionChecksum(bool withNormals, const GpuBenchShape& shape,
                             const GpuBenchInputs& inputs) {
   auto image = [&](const char* name) {
-    return hostImage(input(inputs, name), {shape.image.x, shape.image.x});
+    return hostImage(benchInput(inputs, name), {shape.image.x, shape.image.x});
   };
   const HostImage position = image("rsm_position"), normal = image("rsm_normal"),
                   flux = image("rsm_flux");
@@ -135,9 +130,9 @@ double cpuInjectionChecksum(bool withNormals, const GpuBenchShape& shape,
 // origin with cells 1 / resolution.x wide, the camera at (0.5, 0.5, -1) with a 60-degree vertical
 // field of view (as geometry_volume_gpubench.cpp sets them).
 double cpuGvChecksum(bool withAlbedo, const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
-  const HostImage position = hostImage(input(inputs, "position"), shape.image),
-                  normal = hostImage(input(inputs, "normal"), shape.image),
-                  albedo = hostImage(input(inputs, "albedo"), shape.image);
+  const HostImage position = hostImage(benchInput(inputs, "position"), shape.image),
+                  normal = hostImage(benchInput(inputs, "normal"), shape.image),
+                  albedo = hostImage(benchInput(inputs, "albedo"), shape.image);
   const float cell = 1.0f / float(shape.resolution.x);
   const GridGeometry gv{glm::vec3(-0.5f * cell), cell, shape.resolution + 1};
   std::vector<float> blocking(4 * std::size_t(gv.cellCount()), 0.0f), sums(blocking.size(), 0.0f);
@@ -152,9 +147,9 @@ double cpuGvChecksum(bool withAlbedo, const GpuBenchShape& shape, const GpuBench
 // along (-0.3, -1, -0.2) over the light grid's box (as geometry_volume_gpubench.cpp sets it).
 double cpuGvLightChecksum(const GpuBenchShape& shape, const GpuBenchInputs& inputs) {
   const glm::ivec2 side(shape.image.x);
-  const HostImage position = hostImage(input(inputs, "position"), side),
-                  normal = hostImage(input(inputs, "normal"), side),
-                  flux = hostImage(input(inputs, "albedo"), side);
+  const HostImage position = hostImage(benchInput(inputs, "position"), side),
+                  normal = hostImage(benchInput(inputs, "normal"), side),
+                  flux = hostImage(benchInput(inputs, "albedo"), side);
   const float cell = 1.0f / float(shape.resolution.x);
   const GridGeometry gv{glm::vec3(-0.5f * cell), cell, shape.resolution + 1};
   Light sun;
@@ -175,8 +170,8 @@ double cpuCarryChecksum(const GpuBenchShape& shape, const GpuBenchInputs& inputs
   const float cell = 1.0f / float(shape.resolution.x);
   LightGrid parent(GridGeometry{glm::vec3(0.0f), cell, res}, shape.shOrder);
   LightGrid child(GridGeometry{glm::vec3(res / 4) * cell, 0.5f * cell, res}, shape.shOrder);
-  parent.current.host() = input(inputs, "parent");
-  child.current.host() = input(inputs, "child");
+  parent.current.host() = benchInput(inputs, "parent");
+  child.current.host() = benchInput(inputs, "child");
   ShaderCompiler shaders;
   CascadeCarry(shaders, shape.shOrder, true).carry(child, parent);
   return benchChecksum(parent.current.hostRead());
@@ -184,9 +179,9 @@ double cpuCarryChecksum(const GpuBenchShape& shape, const GpuBenchInputs& inputs
 
 // The CPU merge's checksum of the same two GVs with their albedo sums.
 double cpuMergeChecksum(const GpuBenchInputs& inputs) {
-  std::vector<float> target = input(inputs, "target"), albedo = input(inputs, "target_albedo");
-  mergeGeometryVolumesCpu(target.data(), input(inputs, "other").data(), int(target.size() / 4),
-                          albedo.data(), input(inputs, "other_albedo").data());
+  std::vector<float> target = benchInput(inputs, "target"), albedo = benchInput(inputs, "target_albedo");
+  mergeGeometryVolumesCpu(target.data(), benchInput(inputs, "other").data(), int(target.size() / 4),
+                          albedo.data(), benchInput(inputs, "other_albedo").data());
   return benchChecksum(target) + benchChecksum(albedo);
 }
 
@@ -202,10 +197,10 @@ double cpuChecksum(const Known& k, const GpuBenchShape& shape, const GpuBenchInp
   if (k.bounces) table.insert("bounces", true);
   test::PropagationRig rig(k.strategy, shape.resolution, table, shape.shOrder, k.withGv,
                            ComputeBackend::Cpu);
-  rig.load(input(inputs, "current"), input(inputs, "accumulated"));
-  if (k.withGv) rig.loadGv(input(inputs, "gv"), 1);
-  if (k.bounces) rig.loadAlbedo(input(inputs, "albedo"));
-  if (k.strategy == "directed") rig.loadNormals(input(inputs, "normals"));
+  rig.load(benchInput(inputs, "current"), benchInput(inputs, "accumulated"));
+  if (k.withGv) rig.loadGv(benchInput(inputs, "gv"), 1);
+  if (k.bounces) rig.loadAlbedo(benchInput(inputs, "albedo"));
+  if (k.strategy == "directed") rig.loadNormals(benchInput(inputs, "normals"));
   rig.propagate();
   return benchChecksum(rig.accumulated()) + benchChecksum(rig.current());
 }
@@ -236,12 +231,12 @@ TEST(GpuBench, EveryCaseComputesWhatTheCpuKernelsCompute) {
       const std::string& strategy = knownCases().at(name).strategy;
       const GpuBenchInputs& in = bench->inputs();
       const double before =
-          strategy == "cascade_carry" ? benchChecksum(input(in, "parent"))
+          strategy == "cascade_carry" ? benchChecksum(benchInput(in, "parent"))
           : strategy == "gv_merge"
-              ? benchChecksum(input(in, "target")) + benchChecksum(input(in, "target_albedo"))
+              ? benchChecksum(benchInput(in, "target")) + benchChecksum(benchInput(in, "target_albedo"))
           : strategy == "trilinear" || strategy == "rsm_vpl" || strategy.starts_with("gv_")
               ? 0.0
-              : benchChecksum(input(in, "accumulated")) + benchChecksum(input(in, "current"));
+              : benchChecksum(benchInput(in, "accumulated")) + benchChecksum(benchInput(in, "current"));
       EXPECT_GT(std::abs(gl - before), 1e-3 * std::max(std::abs(before), 1.0))
           << name << ", order " << order;
     }

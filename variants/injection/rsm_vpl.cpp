@@ -44,7 +44,7 @@ public:
   // each twice) and sums in registers, each cell's total stored once (not counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    StandardTransferWork w = rsmVplGlWork(shape.coefficients, requirements.has(kNormalGrid));
+    KernelWork w = rsmVplGlWork(shape.coefficients, requirements.has(kNormalGrid));
     if (runsOnCpu(requirements)) w.bytes = 3 * 16 + 2 * (4 + 8);
     return {{"VPL", shape.rsmTexels * shape.levels, w.multiplyAdds, w.bytes}};
   }

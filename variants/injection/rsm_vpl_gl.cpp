@@ -9,7 +9,7 @@ namespace kernel {
 }
 }  // namespace
 
-StandardTransferWork rsmVplGlWork(int coefficients, bool withNormals) {
+KernelWork rsmVplGlWork(int coefficients, bool withNormals) {
   const double n = coefficients, normals = withNormals ? 4.0 : 0.0;
   return {4 * n + 10 + normals, 3 * 16 + 8 * (3 * n + normals)};
 }

@@ -10,7 +10,7 @@
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
-#include "variants/propagation/standard_gl.h"
+#include "framework/pipeline/kernel_work.h"
 
 namespace lpvlab {
 
@@ -24,7 +24,7 @@ struct RsmVplGlMaps {
 // Per VPL (RSM texel), with N coefficients per channel: 3 texel fetches (16 B each); the lobe (N,
 // about a multiply-add each) and 3N products; the cell from the shifted position (about 10); with
 // the normal grid 4 more sums. Each product is added atomically (read and write, 8 B each).
-StandardTransferWork rsmVplGlWork(int coefficients, bool withNormals);
+KernelWork rsmVplGlWork(int coefficients, bool withNormals);
 
 class RsmVplGlKernel {
 public:

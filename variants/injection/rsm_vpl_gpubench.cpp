@@ -11,6 +11,7 @@
 
 #include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
+#include "framework/math/shared.h"
 #include "variants/injection/rsm_vpl_gl.h"
 #include "variants/propagation/propagation_gpubench.h"
 #include "variants/resources/gpubench_surfaces.h"
@@ -28,47 +29,34 @@ public:
     kernel_ = RsmVplGlKernel(shaders, coefficients_, withNormals_, 1.0f);
     const int side = shape.image.x;
     // The RSM's normals' w is unused, its flux's w = 1: covered.
-    inputs_ = benchSurfaceTexels({side, side}, glm::vec3(shape.resolution) / float(shape.resolution.x),
-                                 {"rsm_position", "rsm_normal", "rsm_flux"}, 20);
-    for (gl::Texture* t : {&position_, &normal_, &flux_})
-      *t = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, side, side, 1, "gpubench RSM");
-    const std::size_t cells = benchCells(shape.resolution);
+    inputs_.clear();
+    rsm_.prepare(inputs_, {side, side}, glm::vec3(shape.resolution) / float(shape.resolution.x),
+                 {"rsm_position", "rsm_normal", "rsm_flux"}, 20, true);
+    const std::size_t cells = std::size_t(shared::cellCount(shape.resolution));
     grid_ = DualBuffer(3 * coefficients_ * cells * sizeof(float), "gpubench light grid");
     if (withNormals_) normals_ = gl::Buffer(4 * cells * sizeof(float), "gpubench normal grid");
   }
 
   void reset() override {
-    const int side = shape_.image.x;
-    for (auto [texture, name] : {std::pair{&position_, "rsm_position"}, {&normal_, "rsm_normal"},
-                                 {&flux_, "rsm_flux"}})
-      glTextureSubImage3D(texture->id(), 0, 0, 0, 0, side, side, 1, GL_RGBA, GL_FLOAT,
-                          benchInput(inputs_, name).data());
+    rsm_.upload(inputs_);
     grid_.zero();
     if (withNormals_) normals_.zero();
     glFinish();  // the uploads are not the kernel's time
   }
 
   void run() override {
-    kernel_.inject({.position = position_.id(), .normal = normal_.id(), .flux = flux_.id(),
+    kernel_.inject({.position = rsm_.position(), .normal = rsm_.normal(), .flux = rsm_.colour(),
                     .resolution = shape_.image.x, .views = 1},
                    {glm::vec3(0.0f), 1.0f / float(shape_.resolution.x), shape_.resolution}, grid_,
                    &normals_);
   }
 
   double checksum() const override {
-    std::vector<float> values(grid_.size() / sizeof(float));
-    grid_.download(values.data(), grid_.size());
-    double sum = benchChecksum(values);
-    if (withNormals_) {
-      values.resize(normals_.size() / sizeof(float));
-      normals_.download(values.data(), normals_.size());
-      sum += benchChecksum(values);
-    }
-    return sum;
+    return benchChecksumOf(grid_) + (withNormals_ ? benchChecksumOf(normals_) : 0.0);
   }
 
   GpuBenchWork work() const override {
-    const StandardTransferWork w = rsmVplGlWork(coefficients_, withNormals_);
+    const KernelWork w = rsmVplGlWork(coefficients_, withNormals_);
     return {"VPL", double(shape_.image.x) * shape_.image.x, w.multiplyAdds, w.bytes};
   }
 
@@ -79,7 +67,7 @@ private:
   GpuBenchShape shape_;
   int coefficients_ = 4;
   RsmVplGlKernel kernel_;
-  gl::Texture position_, normal_, flux_;
+  BenchSurfaces rsm_;
   DualBuffer grid_;
   gl::Buffer normals_;
   GpuBenchInputs inputs_;

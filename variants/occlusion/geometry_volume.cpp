@@ -91,7 +91,7 @@ public:
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     if (!requirements.has(kGeometryVolume)) return {};
-    StandardTransferWork w = gvSurfelGlWork(requirements.has(kSurfaceAlbedo));
+    KernelWork w = gvSurfelGlWork(requirements.has(kSurfaceAlbedo));
     if (runsOnCpu(requirements)) w.bytes = 3 * 16 + 2 * (4 + 8);
     const double surfels =
         ((fromLight_ ? shape.rsmTexels : 0.0) + (fromCamera_ ? shape.pixels : 0.0)) * shape.levels;

@@ -20,7 +20,7 @@ namespace merge_kernel {
 }
 }  // namespace
 
-StandardTransferWork gvSurfelGlWork(bool withAlbedo) {
+KernelWork gvSurfelGlWork(bool withAlbedo) {
   const double sums = withAlbedo ? 8.0 : 4.0;
   return {20 + sums, 3 * 16 + 2 * 4 * sums};
 }

@@ -11,7 +11,7 @@
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/math/grid_geometry.h"
-#include "variants/propagation/standard_gl.h"
+#include "framework/pipeline/kernel_work.h"
 
 namespace lpvlab {
 
@@ -32,7 +32,7 @@ struct GvGlSurfels {
 
 // Per surfel: its position, normal and albedo source read (3 x 16 B), its area and lobe (about
 // 20), 4 coefficients and, with the albedo, 4 sums, each added atomically (read and write, 4 B).
-StandardTransferWork gvSurfelGlWork(bool withAlbedo);
+KernelWork gvSurfelGlWork(bool withAlbedo);
 
 class GeometryVolumeGlKernels {
 public:

@@ -22,6 +22,7 @@
 #include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
 #include "framework/pipeline/light_views.h"
+#include "framework/math/shared.h"
 #include "variants/occlusion/geometry_volume_gl.h"
 #include "variants/propagation/propagation_gpubench.h"
 #include "variants/resources/gpubench_surfaces.h"
@@ -46,10 +47,9 @@ public:
     kernels_ = GeometryVolumeGlKernels(shaders, !fromLight_, fromLight_, withAlbedo_, false);
     const glm::vec3 extent = glm::vec3(shape.resolution) / float(shape.resolution.x);
     const glm::ivec2 image = fromLight_ ? glm::ivec2(shape.image.x) : shape.image;
-    inputs_ = benchSurfaceTexels(image, extent, {"position", "normal", "albedo"}, fromLight_ ? 40 : 30);
-    for (gl::Texture* t : {&position_, &normal_, &albedoSource_})
-      *t = fromLight_ ? gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, image.x, image.y, 1, "gpubench RSM")
-                      : gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, image.x, image.y, 1, "gpubench G-buffer");
+    inputs_.clear();
+    surfels_.prepare(inputs_, image, extent, {"position", "normal", "albedo"}, fromLight_ ? 40 : 30,
+                     fromLight_);
     if (fromLight_) {
       const LightViews records = benchLightViews({glm::vec3(0.0f), extent});
       lightRecords_ = gl::Buffer(records.lights.size() * sizeof(GpuLight), "gpubench lights",
@@ -57,29 +57,20 @@ public:
       viewRecords_ = gl::Buffer(records.views.size() * sizeof(GpuView), "gpubench views",
                                 records.views.data());
     }
-    const std::size_t cells = benchCells(gvGeometry().resolution);
+    const std::size_t cells = std::size_t(shared::cellCount(gvGeometry().resolution));
     blocking_ = gl::Buffer(4 * cells * sizeof(float), "gpubench GV");
     if (withAlbedo_) albedo_ = gl::Buffer(4 * cells * sizeof(float), "gpubench GV albedo");
   }
 
   void reset() override {
-    for (auto [texture, name] : {std::pair{&position_, "position"}, {&normal_, "normal"},
-                                 {&albedoSource_, "albedo"}}) {
-      const float* texels = benchInput(inputs_, name).data();
-      if (fromLight_)
-        glTextureSubImage3D(texture->id(), 0, 0, 0, 0, shape_.image.x, shape_.image.x, 1, GL_RGBA,
-                            GL_FLOAT, texels);
-      else
-        glTextureSubImage2D(texture->id(), 0, 0, 0, shape_.image.x, shape_.image.y, GL_RGBA,
-                            GL_FLOAT, texels);
-    }
+    surfels_.upload(inputs_);
     blocking_.zero();
     if (withAlbedo_) albedo_.zero();
     glFinish();  // the uploads are not the kernel's time
   }
 
   void run() override {
-    const GvGlSurfels surfels{position_.id(), normal_.id(), albedoSource_.id()};
+    const GvGlSurfels surfels{surfels_.position(), surfels_.normal(), surfels_.colour()};
     const GvGlTarget target{.gv = gvGeometry(), .blocking = &blocking_,
                             .albedo = withAlbedo_ ? &albedo_ : nullptr};
     if (fromLight_)
@@ -89,18 +80,11 @@ public:
   }
 
   double checksum() const override {
-    std::vector<float> values(blocking_.size() / sizeof(float));
-    blocking_.download(values.data(), blocking_.size());
-    double sum = benchChecksum(values);
-    if (withAlbedo_) {
-      albedo_.download(values.data(), albedo_.size());
-      sum += benchChecksum(values);
-    }
-    return sum;
+    return benchChecksumOf(blocking_) + (withAlbedo_ ? benchChecksumOf(albedo_) : 0.0);
   }
 
   GpuBenchWork work() const override {
-    const StandardTransferWork w = gvSurfelGlWork(withAlbedo_);
+    const KernelWork w = gvSurfelGlWork(withAlbedo_);
     return {"surfel", double(shape_.image.x) * (fromLight_ ? shape_.image.x : shape_.image.y),
             w.multiplyAdds, w.bytes};
   }
@@ -123,7 +107,7 @@ private:
   bool fromLight_, withAlbedo_;
   GpuBenchShape shape_;
   GeometryVolumeGlKernels kernels_;
-  gl::Texture position_, normal_, albedoSource_;
+  BenchSurfaces surfels_;
   gl::Buffer blocking_, albedo_, lightRecords_, viewRecords_;
   GpuBenchInputs inputs_;
 };
@@ -133,7 +117,7 @@ class GvMergeBench final : public GpuBenchCase {
 public:
   void prepare(ShaderCompiler& shaders, const GpuBenchShape& shape) override {
     kernels_ = GeometryVolumeGlKernels(shaders, false, false, true, true);
-    cells_ = benchCells(shape.resolution + 1);
+    cells_ = std::size_t(shared::cellCount(shape.resolution + 1));
     std::vector<float> target = benchValues(4 * cells_, 60, -1.0f, 1.0f);
     std::vector<float> other = benchValues(4 * cells_, 61, -1.0f, 1.0f);
     for (std::size_t i = 0; i < cells_; ++i) {  // c0 >= 0, as a GV's
@@ -157,11 +141,7 @@ public:
   void run() override { kernels_.merge(target_, other_, &targetAlbedo_, &otherAlbedo_); }
 
   double checksum() const override {
-    std::vector<float> values(4 * cells_);
-    target_.download(values.data(), values.size() * sizeof(float));
-    double sum = benchChecksum(values);
-    targetAlbedo_.download(values.data(), values.size() * sizeof(float));
-    return sum + benchChecksum(values);
+    return benchChecksumOf(target_) + benchChecksumOf(targetAlbedo_);
   }
 
   // Per GV cell: both GVs' 4 coefficients and 4 albedo sums read, one compare, the kept 8 written.

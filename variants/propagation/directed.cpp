@@ -105,7 +105,7 @@ public:
   // release: the cell's attached and free light read and written.
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    StandardTransferWork w = directedGlWork(glSettings(requirements));
+    KernelWork w = directedGlWork(glSettings(requirements));
     if (runsOnCpu(requirements)) {
       const double n = shape.coefficients, lobe = std::min(n, 9.0);
       const bool withGv = requirements.has(kGeometryVolume);
@@ -113,7 +113,7 @@ public:
       w.multiplyAdds += 3 * (6 + lobe);
       w.bytes += 4 * (1 + 6 + lobe);
       if (release_) {
-        const StandardTransferWork free = standardTransferWork(shape.coefficients, true, false, withGv);
+        const KernelWork free = standardTransferWork(shape.coefficients, true, false, withGv);
         w.multiplyAdds += free.multiplyAdds;
         w.bytes += free.bytes + 4 * 4 * 3 * n;
       }

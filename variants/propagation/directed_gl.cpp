@@ -5,6 +5,7 @@
 
 #include "framework/gl/dispatch.h"
 #include "framework/math/solid_angle.h"
+#include "framework/math/shared.h"
 #include "variants/propagation/tiled_walk.h"
 
 namespace lpvlab {
@@ -19,18 +20,16 @@ namespace release_kernel {
 #include "shaders/propagation/directed_release_interface.glsl"
 }
 
-std::size_t cellsOf(const glm::ivec3& r) { return std::size_t(r.x) * r.y * r.z; }
-
 }  // namespace
 
-StandardTransferWork directedGlWork(const DirectedGlSettings& settings) {
+KernelWork directedGlWork(const DirectedGlSettings& settings) {
   const double n = settings.coefficients;
-  StandardTransferWork w = standardGlTransferWork(settings.coefficients, false, settings.withGv);
+  KernelWork w = standardGlTransferWork(settings.coefficients, false, settings.withGv);
   w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
   w.bytes += 16 * ((settings.dilation ? 7 : 0) + 1);
   if (settings.tiled) w.bytes -= tiledWalkBytesSaved(settings.coefficients);
   if (settings.release) {
-    const StandardTransferWork free = standardGlKernelWork(
+    const KernelWork free = standardGlKernelWork(
         {.coefficients = settings.coefficients, .withGv = settings.withGv, .tiled = settings.tiled});
     w.multiplyAdds += free.multiplyAdds;
     w.bytes += free.bytes + 4 * 4 * 3 * n + 16 * 7;
@@ -55,7 +54,8 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
                                            : "propagation/directed_gather.comp",
                             spec);
   dilate_ = shaders.compute("propagation/directed_dilate.comp");
-  const std::size_t gridBytes = 3 * std::size_t(coefficients) * cellsOf(resolution) * sizeof(float);
+  const std::size_t cells = std::size_t(shared::cellCount(resolution));
+  const std::size_t gridBytes = 3 * std::size_t(coefficients) * cells * sizeof(float);
   scratch_ = DualBuffer(gridBytes, "light grid (propagation scratch)");
   if (settings.release) {
     release_ = shaders.compute(
@@ -70,7 +70,7 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
       b = DualBuffer(gridBytes, "light grid (directed propagation's free light)");
   }
   if (settings.dilation) {
-    const std::size_t normalBytes = 4 * cellsOf(resolution) * sizeof(float);
+    const std::size_t normalBytes = 4 * cells * sizeof(float);
     for (gl::Buffer& b : normals_) b = gl::Buffer(normalBytes, "dilated normals");
   }
 }

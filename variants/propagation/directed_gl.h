@@ -30,7 +30,7 @@ struct DirectedGlSettings {
 // (the free light) and the release: the cell's attached and free light read and written, and the
 // seven normals it compares. The tiled gathers read each source cell once and their tiles' halos
 // again (tiled_walk.h).
-StandardTransferWork directedGlWork(const DirectedGlSettings& settings);
+KernelWork directedGlWork(const DirectedGlSettings& settings);
 
 class DirectedGlKernel {
 public:

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/gpubench/gpu_bench_case.h"
+#include "framework/math/shared.h"
 #include "variants/propagation/directed_gl.h"
 #include "variants/propagation/propagation_gpubench.h"
 
@@ -19,7 +20,7 @@ namespace {
 
 // vec4 per cell: sum of flux times normal, and flux; zero where no VPL landed.
 std::vector<float> benchNormals(const glm::ivec3& resolution) {
-  const std::size_t cells = benchCells(resolution);
+  const std::size_t cells = std::size_t(shared::cellCount(resolution));
   const std::vector<float> landed = benchValues(cells, 6, 0.0f, 1.0f);
   const std::vector<float> flux = benchValues(cells, 7, 0.1f, 1.0f);
   const std::vector<float> direction = benchValues(2 * cells, 8, 0.0f, 1.0f);
@@ -57,7 +58,7 @@ public:
   }
 
   GpuBenchWork work() const override {
-    const StandardTransferWork w = directedGlWork(settings_);
+    const KernelWork w = directedGlWork(settings_);
     return {"cell-iteration", cellIterations(), w.multiplyAdds, w.bytes};
   }
 

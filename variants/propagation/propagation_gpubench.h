@@ -17,28 +17,27 @@
 #include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
 #include "framework/gpubench/gpu_bench_inputs.h"
+#include "framework/math/shared.h"
 
 namespace lpvlab {
 
-inline std::size_t benchCells(const glm::ivec3& r) { return std::size_t(r.x) * r.y * r.z; }
-
 // "current" and "accumulated": 3 x coefficients floats per cell of `resolution`.
 inline GpuBenchInputs benchLightGrids(const glm::ivec3& resolution, int coefficients) {
-  const std::size_t floats = 3 * std::size_t(coefficients) * benchCells(resolution);
+  const std::size_t floats = 3 * std::size_t(coefficients) * std::size_t(shared::cellCount(resolution));
   return {{"current", benchValues(floats, 1, -1.0f, 1.0f)},
           {"accumulated", benchValues(floats, 2, -1.0f, 1.0f)}};
 }
 
 // The GV of a light grid of `resolution` (one more cell per axis), coefficient-major.
 inline std::vector<float> benchGvBlocking(const glm::ivec3& resolution) {
-  const std::size_t cells = benchCells(resolution + 1);
+  const std::size_t cells = std::size_t(shared::cellCount(resolution + 1));
   std::vector<float> gv = benchValues(4 * cells, 3, -1.0f, 1.0f);
   for (std::size_t i = 0; i < cells; ++i) gv[i] = 0.75f * (gv[i] + 1.0f);  // c0 >= 0
   return gv;
 }
 
 inline std::vector<float> benchGvAlbedo(const glm::ivec3& resolution) {
-  const std::size_t cells = benchCells(resolution + 1);
+  const std::size_t cells = std::size_t(shared::cellCount(resolution + 1));
   const std::vector<float> area = benchValues(cells, 4, 0.1f, 1.0f);
   const std::vector<float> rho = benchValues(3 * cells, 5, 0.0f, 1.0f);
   std::vector<float> out(4 * cells);
@@ -51,18 +50,7 @@ inline std::vector<float> benchGvAlbedo(const glm::ivec3& resolution) {
 
 // What a propagation case's checksum covers: the accumulated grid and the last step's light.
 inline double benchGridChecksum(const DualBuffer& accumulated, const DualBuffer& current) {
-  std::vector<float> values(current.size() / sizeof(float));
-  accumulated.download(values.data(), current.size());
-  const double sum = benchChecksum(values);
-  current.download(values.data(), current.size());
-  return sum + benchChecksum(values);
-}
-
-// The named input, which the case put there itself.
-inline const std::vector<float>& benchInput(const GpuBenchInputs& inputs, const char* name) {
-  for (const auto& [n, values] : inputs)
-    if (n == name) return values;
-  return inputs.front().second;  // not reached: every case names what it uploads
+  return benchChecksumOf(accumulated) + benchChecksumOf(current);
 }
 
 // What every propagation case has: its inputs, each uploaded by reset() into the buffer
@@ -71,7 +59,7 @@ inline const std::vector<float>& benchInput(const GpuBenchInputs& inputs, const 
 class PropagationBench : public GpuBenchCase {
 public:
   void reset() override {
-    for (const auto& [name, upload] : uploads_) upload(benchInput(inputs_, name.c_str()));
+    for (const auto& [name, upload] : uploads_) upload(benchInput(inputs_, name));
     glFinish();  // the uploads are not the kernel's time
   }
   double checksum() const override { return benchGridChecksum(accumulated_, current_); }
@@ -96,7 +84,7 @@ protected:
     });
   }
   double cellIterations() const {
-    return double(benchCells(shape_.resolution)) * shape_.iterations;
+    return double(shared::cellCount(shape_.resolution)) * shape_.iterations;
   }
 
   GpuBenchShape shape_;

@@ -134,7 +134,7 @@ public:
   // counted).
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
-    const StandardTransferWork w =
+    const KernelWork w =
         runsOnCpu(requirements) ? standardTransferWork(shape.coefficients, true, scatter_,
                                                        requirements.has(kGeometryVolume))
                                 : standardGlKernelWork(glSettings(requirements));

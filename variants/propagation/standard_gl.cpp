@@ -69,8 +69,8 @@ void StandardGlKernel::dispatch(const glm::ivec3& resolution) const {
   dispatchTiledWalk(resolution, tile_);
 }
 
-StandardTransferWork standardGlKernelWork(const StandardGlSettings& settings) {
-  StandardTransferWork w =
+KernelWork standardGlKernelWork(const StandardGlSettings& settings) {
+  KernelWork w =
       standardGlTransferWork(settings.coefficients, settings.scatter, settings.withGv);
   if (settings.bounces) w.multiplyAdds *= 2;
   if (settings.tiled) w.bytes -= tiledWalkBytesSaved(settings.coefficients);

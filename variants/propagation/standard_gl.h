@@ -10,14 +10,10 @@
 
 #include "framework/gl/resources.h"
 #include "framework/gl/shader_compiler.h"
+#include "framework/pipeline/kernel_work.h"
 #include "framework/gl/dual_buffer.h"
 
 namespace lpvlab {
-
-struct StandardTransferWork {
-  double multiplyAdds = 0.0;
-  double bytes = 0.0;
-};
 
 // One cell-iteration of the GL kernels (docs/variants/standard.md#operations-per-cell-per-iteration),
 // with N = coefficients per channel and 3 channels. Reads: the six neighbours' 3N floats; writes:
@@ -25,9 +21,9 @@ struct StandardTransferWork {
 // neighbours atomically (6 x 3N read-modify-writes instead of 3N writes). Multiply-adds: 30 faces
 // x 2N per channel (the SH evaluations per face not counted). The GV: its 8 corners (vec4) read
 // per cell, 8 x 4 interpolated per face.
-inline StandardTransferWork standardGlTransferWork(int coefficients, bool scatter, bool withGv) {
+inline KernelWork standardGlTransferWork(int coefficients, bool scatter, bool withGv) {
   const double n = coefficients;
-  StandardTransferWork w;
+  KernelWork w;
   w.multiplyAdds = 3 * 30 * 2 * n;
   w.bytes = 4 * (6 * 3 * n + (scatter ? 2 * 6 * 3 * n : 3 * n) + 2 * 3 * n);
   if (withGv) {
@@ -57,7 +53,7 @@ struct StandardGlOcclusion {
 
 // Per cell-iteration, as the kernel of `settings` runs: bounces run every face twice; the tiled
 // layout reads each source cell once and its tile's halo again (tiled_walk.h).
-StandardTransferWork standardGlKernelWork(const StandardGlSettings& settings);
+KernelWork standardGlKernelWork(const StandardGlSettings& settings);
 
 class StandardGlKernel {
 public:

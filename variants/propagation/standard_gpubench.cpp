@@ -44,7 +44,7 @@ public:
   }
 
   GpuBenchWork work() const override {
-    const StandardTransferWork w = standardGlKernelWork(settings_);
+    const KernelWork w = standardGlKernelWork(settings_);
     return {"cell-iteration", cellIterations(), w.multiplyAdds, w.bytes};
   }
 

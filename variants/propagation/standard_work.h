@@ -19,10 +19,10 @@
 namespace lpvlab {
 
 // On GL, the kernels' count (standard_gl.h); on the CPU, the CPU kernels'.
-inline StandardTransferWork standardTransferWork(int coefficients, bool onCpu, bool scatter,
+inline KernelWork standardTransferWork(int coefficients, bool onCpu, bool scatter,
                                                  bool withGv) {
   if (!onCpu) return standardGlTransferWork(coefficients, scatter, withGv);
-  StandardTransferWork w;
+  KernelWork w;
   w.multiplyAdds = 3.0 * (scatter ? standardScatterMultiplyAdds(coefficients)
                                   : standardGatherMultiplyAdds(coefficients));
   w.bytes = 4.0 * coefficients * (6 * 3 + (scatter ? 2 * 6 * 3 : 3) + 2 * 3);

@@ -30,7 +30,7 @@ struct TetrahedralGlSettings {
 // interpolates 8 x 4. `frame`: per cube and frame, the split (24 cell values of 3N from two
 // cubes) and the merge (24 cells' two grids into one cube's), 2 multiply-adds each.
 struct TetrahedralGlWork {
-  StandardTransferWork step, frame;
+  KernelWork step, frame;
 };
 TetrahedralGlWork tetrahedralGlWork(const TetrahedralGlSettings& settings);
 

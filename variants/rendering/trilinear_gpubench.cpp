@@ -27,22 +27,20 @@ public:
     const int coefficients = (shape.shOrder + 1) * (shape.shOrder + 1);
     kernel_ = TrilinearGlKernel(shaders, options_, coefficients);
     coefficients_ = coefficients;
-    inputs_ = benchSurfaceTexels(shape.image, glm::vec3(shape.resolution) / float(shape.resolution.x),
-                                 {"position", "normal", "albedo"}, 10);
+    inputs_.clear();
+    gbuffer_.prepare(inputs_, shape.image, glm::vec3(shape.resolution) / float(shape.resolution.x),
+                     {"position", "normal", "albedo"}, 10, false);
     const std::vector<float> grid = benchLightGrids(shape.resolution, coefficients)[1].second;
     inputs_.emplace_back("accumulated", grid);
     accumulated_ = DualBuffer(grid.size() * sizeof(float), "gpubench light grid (accumulated)");
-    for (gl::Texture* t : {&position_, &normal_, &albedo_, &indirect_})
-      *t = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, shape.image.x, shape.image.y, 1, "gpubench image");
+    indirect_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, shape.image.x, shape.image.y, 1,
+                            "gpubench indirect");
   }
 
   void reset() override {
     const std::vector<float>& grid = benchInput(inputs_, "accumulated");
     accumulated_.upload(grid.data(), grid.size() * sizeof(float));
-    for (auto [texture, name] : {std::pair{&position_, "position"}, {&normal_, "normal"},
-                                 {&albedo_, "albedo"}})
-      glTextureSubImage2D(texture->id(), 0, 0, 0, shape_.image.x, shape_.image.y, GL_RGBA, GL_FLOAT,
-                          benchInput(inputs_, name).data());
+    gbuffer_.upload(inputs_);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(indirect_.id(), 0, GL_RGBA, GL_FLOAT, zero);
     glFinish();  // the uploads are not the kernel's time
@@ -50,7 +48,7 @@ public:
 
   void run() override {
     const TrilinearGlLevel level{&accumulated_, gridGeometry()};
-    kernel_.render({.position = position_.id(), .normal = normal_.id(), .albedo = albedo_.id(),
+    kernel_.render({.position = gbuffer_.position(), .normal = gbuffer_.normal(), .albedo = gbuffer_.colour(),
                     .indirect = indirect_.id(), .width = shape_.image.x, .height = shape_.image.y},
                    {&level, 1}, 0.0f, glm::vec3(0.5f, 0.5f, -1.0f));
   }
@@ -82,7 +80,8 @@ public:
   int coefficients_ = 4;
   TrilinearGlKernel kernel_;
   DualBuffer accumulated_;
-  gl::Texture position_, normal_, albedo_, indirect_;
+  BenchSurfaces gbuffer_;
+  gl::Texture indirect_;
   GpuBenchInputs inputs_;
 };
 

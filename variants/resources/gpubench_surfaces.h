@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <glad/gl.h>
 #include <glm/glm.hpp>
 
+#include "framework/gl/resources.h"
 #include "framework/gpubench/gpu_bench_case.h"
 #include "framework/gpubench/gpu_bench_inputs.h"
 
@@ -36,5 +39,45 @@ inline GpuBenchInputs benchSurfaceTexels(const glm::ivec2& image, const glm::vec
   }
   return {{names[0], position}, {names[1], normal}, {names[2], colour}};
 }
+
+// Such surfaces as a case's inputs and RGBA32F textures: prepare() makes both, upload() fills the
+// textures again before each run.
+class BenchSurfaces {
+public:
+  // Appends benchSurfaceTexels' three inputs to `inputs` and allocates their textures: 2D, or
+  // (layered) 2D arrays of one layer, as a light view's RSM.
+  void prepare(GpuBenchInputs& inputs, const glm::ivec2& image, const glm::vec3& extent,
+               const std::string (&names)[3], std::uint64_t stream, bool layered) {
+    image_ = image;
+    layered_ = layered;
+    for (auto& [name, values] : benchSurfaceTexels(image, extent, names, stream))
+      inputs.emplace_back(name, std::move(values));
+    for (int i = 0; i < 3; ++i) {
+      names_[i] = names[i];
+      textures_[i] = gl::Texture(layered ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, GL_RGBA32F, image.x,
+                                 image.y, 1, "gpubench " + names[i]);
+    }
+  }
+  void upload(const GpuBenchInputs& inputs) const {
+    for (int i = 0; i < 3; ++i) {
+      const float* texels = benchInput(inputs, names_[i]).data();
+      if (layered_)
+        glTextureSubImage3D(textures_[i].id(), 0, 0, 0, 0, image_.x, image_.y, 1, GL_RGBA, GL_FLOAT,
+                            texels);
+      else
+        glTextureSubImage2D(textures_[i].id(), 0, 0, 0, image_.x, image_.y, GL_RGBA, GL_FLOAT,
+                            texels);
+    }
+  }
+  GLuint position() const { return textures_[0].id(); }
+  GLuint normal() const { return textures_[1].id(); }
+  GLuint colour() const { return textures_[2].id(); }
+
+private:
+  glm::ivec2 image_{0};
+  bool layered_ = false;
+  std::string names_[3];
+  gl::Texture textures_[3];
+};
 
 }  // namespace lpvlab
