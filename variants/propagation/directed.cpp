@@ -109,11 +109,11 @@ public:
     if (runsOnCpu(requirements)) {
       const double n = shape.coefficients, lobe = std::min(n, 9.0);
       const bool withGv = requirements.has(kGeometryVolume);
-      w = standardTransferWork(shape.coefficients, true, false, withGv);
+      w = standardCpuTransferWork(shape.coefficients, false, withGv);
       w.multiplyAdds += 3 * (6 + lobe);
       w.bytes += 4 * (1 + 6 + lobe);
       if (release_) {
-        const KernelWork free = standardTransferWork(shape.coefficients, true, false, withGv);
+        const KernelWork free = standardCpuTransferWork(shape.coefficients, false, withGv);
         w.multiplyAdds += free.multiplyAdds;
         w.bytes += free.bytes + 4 * 4 * 3 * n;
       }

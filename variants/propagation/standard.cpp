@@ -135,9 +135,9 @@ public:
   std::vector<WorkCount> work(const FrameShape& shape,
                               const Requirements& requirements) const override {
     const KernelWork w =
-        runsOnCpu(requirements) ? standardTransferWork(shape.coefficients, true, scatter_,
-                                                       requirements.has(kGeometryVolume))
-                                : standardGlKernelWork(glSettings(requirements));
+        runsOnCpu(requirements)
+            ? standardCpuTransferWork(shape.coefficients, scatter_, requirements.has(kGeometryVolume))
+            : standardGlKernelWork(glSettings(requirements));
     return {{"cell-iteration", shape.cells * shape.levels * iterations_, w.multiplyAdds, w.bytes}};
   }
 

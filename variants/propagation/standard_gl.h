@@ -3,8 +3,8 @@
 // (shaders/propagation/standard_gather.comp, or its tiled layout standard_gather_tiled.comp) and
 // scattering (standard_scatter.comp). The strategy (standard.cpp) and lpvlab-gpubench
 // (standard_gpubench.cpp) both run them through this class, so the benchmark times what a frame
-// runs. Also the GL kernels' work model per cell-iteration, which standard_work.h gives the
-// strategies built on the standard transfer.
+// runs. Also the GL kernels' work model per cell-iteration, which directed propagation's builds
+// on (directed_gl.h); the CPU kernels' is standard_work.h.
 
 #include <glm/glm.hpp>
 
