@@ -174,6 +174,7 @@ int compareCommand(const Options& options) {
                         {"mask", depth ? "the reference's depth > 0" : "every pixel"},
                         {"aovs", nlohmann::json::object()}};
   std::vector<NamedImage> differences;
+  std::vector<std::pair<std::string, RelativeDifference>> relatives;  // per AOV, for its PNG
   std::set<std::string> written;  // the test layers --out names its difference layers after
   for (const std::string& aov : aovs) {
     if (!options.out.empty() && !written.insert(layers(aov).first).second)
@@ -191,15 +192,20 @@ int compareCommand(const Options& options) {
                         {"mean_ratio", meanReference != 0.0 ? meanOf(*t, covered) / meanReference : 0.0}};
     if (!options.out.empty()) {
       std::vector<NamedImage> layer = differenceLayers(mine, *t, *r, covered, relative.epsilon);
-      std::filesystem::create_directories(options.out);
-      const RelativePng png = writeRelativePng(options.out, mine, layer[1], covered, relative);
-      out["aovs"][aov]["relative_png"] = {
-          {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
       differences.insert(differences.end(), layer.begin(), layer.end());
+      relatives.emplace_back(aov, relative);
     }
   }
+  // Written once every AOV was compared: an error above leaves nothing behind.
   if (!options.out.empty()) {
     std::filesystem::create_directories(options.out);
+    for (std::size_t i = 0; i < relatives.size(); ++i) {
+      const auto& [aov, relative] = relatives[i];
+      const RelativePng png = writeRelativePng(options.out, layers(aov).first,
+                                               differences[2 * i + 1], covered, relative);
+      out["aovs"][aov]["relative_png"] = {
+          {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
+    }
     const std::string path = (std::filesystem::path(options.out) / "difference.exr").string();
     // An earlier comparison's differences are replaced, and said to be.
     const bool replaced = std::filesystem::exists(path);
