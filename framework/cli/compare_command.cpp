@@ -136,6 +136,30 @@ RelativePng writeRelativePng(const std::string& dir, const std::string& aov,
   return png;
 }
 
+// --out: DIR/<aov>_relative.png per compared AOV (`relatives`, whose layers are `differences`'
+// pairs in order) and DIR/difference.exr; what was written goes into `out`.
+void writeDifferences(const std::string& dir,
+                      const std::vector<std::pair<std::string, RelativeDifference>>& relatives,
+                      const std::vector<NamedImage>& differences, const Image* covered,
+                      nlohmann::json& out) {
+  std::filesystem::create_directories(dir);
+  for (std::size_t i = 0; i < relatives.size(); ++i) {
+    const auto& [aov, relative] = relatives[i];
+    const RelativePng png =
+        writeRelativePng(dir, layers(aov).first, differences[2 * i + 1], covered, relative);
+    out["aovs"][aov]["relative_png"] = {
+        {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
+  }
+  const std::string path = (std::filesystem::path(dir) / "difference.exr").string();
+  // An earlier comparison's differences are replaced, and said to be.
+  const bool replaced = std::filesystem::exists(path);
+  writeExr(path, differences, {{"lpvlab:test", out["test"].get<std::string>()},
+                               {"lpvlab:reference", out["reference"].get<std::string>()}});
+  out["difference_exr"] = path;
+  out["replaced_an_earlier_difference_exr"] = replaced;
+  if (replaced) std::cerr << "lpvlab: warning: " << path << ": replaced an earlier comparison's differences\n";
+}
+
 void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs) {
   std::cout << "compare " << out["test"].get<std::string>() << " against "
             << out["reference"].get<std::string>() << " over " << out["mask"].get<std::string>()
@@ -197,23 +221,7 @@ int compareCommand(const Options& options) {
     }
   }
   // Written once every AOV was compared: an error above leaves nothing behind.
-  if (!options.out.empty()) {
-    std::filesystem::create_directories(options.out);
-    for (std::size_t i = 0; i < relatives.size(); ++i) {
-      const auto& [aov, relative] = relatives[i];
-      const RelativePng png = writeRelativePng(options.out, layers(aov).first,
-                                               differences[2 * i + 1], covered, relative);
-      out["aovs"][aov]["relative_png"] = {
-          {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
-    }
-    const std::string path = (std::filesystem::path(options.out) / "difference.exr").string();
-    // An earlier comparison's differences are replaced, and said to be.
-    const bool replaced = std::filesystem::exists(path);
-    writeExr(path, differences, {{"lpvlab:test", testPath}, {"lpvlab:reference", referencePath}});
-    out["difference_exr"] = path;
-    out["replaced_an_earlier_difference_exr"] = replaced;
-    if (replaced) std::cerr << "lpvlab: warning: " << path << ": replaced an earlier comparison's differences\n";
-  }
+  if (!options.out.empty()) writeDifferences(options.out, relatives, differences, covered, out);
   // Every figure beyond its bound, named (an infinite block nRMSE, written "inf", exceeds any).
   nlohmann::json exceeded = nlohmann::json::array();
   for (const auto& [name, bound] : bounds)
