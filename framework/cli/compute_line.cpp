@@ -11,8 +11,17 @@ std::string computeLine(const nlohmann::json& compute) {
   std::string onCpu = compute.value("direct", std::string()) == "cpu" ? "direct" : "";
   for (const auto& [table, where] : strategies.items())
     if (where == "cpu") onCpu += (onCpu.empty() ? "" : ", ") + table;
-  return "compute: " + compute.value("backend", std::string("?")) +
-         (onCpu.empty() ? "; every strategy on GL" : "; on the CPU: " + onCpu);
+  std::string line = "compute: " + compute.value("backend", std::string("?")) +
+                     (onCpu.empty() ? "; every strategy on GL" : "; on the CPU: " + onCpu);
+  // Where the raster passes ran ([compute] raster) and how direct light is shadowed.
+  std::string rayCast;
+  const nlohmann::json raster = compute.value("raster", nlohmann::json::object());
+  const nlohmann::json passes = raster.value("passes", nlohmann::json::object());  // kept: items() refers into it
+  for (const auto& [pass, where] : passes.items())
+    if (where == "embree") rayCast += (rayCast.empty() ? "" : ", ") + pass;
+  if (!rayCast.empty()) line += "; raster passes by ray casting (Embree): " + rayCast;
+  if (compute.value("shadows", std::string()) == "rays") line += "; shadows by rays";
+  return line;
 }
 
 std::string clockLabel(const std::string& clock) {

@@ -264,6 +264,8 @@ void readImages(Params& params, Experiment& e) {
   e.settings.shadow.normalOffsetTexels =
       lightMaps.get<float>("shadow_normal_offset", 1.5f, {.min = 0.0f, .max = 100.0f});
   e.settings.shadow.depthBias = lightMaps.get<float>("shadow_depth_bias", 2e-5f, {.min = 0.0f, .max = 0.1f});
+  // Direct light's shadows: the shadow maps, or exact rays (framework/raster/raster_choice.h).
+  e.settings.shadow.rays = lightMaps.getChoice("shadows", "map", {"map", "rays"}) == "rays";
   // A directional light's view: around the whole scene, or a box following the camera (thesis
   // 6.2), snapped to whole texels unless asked not to.
   const bool follows = lightMaps.getChoice("directional", "scene", {"scene", "camera"}) == "camera";
@@ -312,6 +314,13 @@ void readTimingAndBackends(Params& params, Experiment& e) {
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
   e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
   e.settings.backend = params.table("compute").getChoice("backend", "auto", {"auto", "gl", "cpu"});
+  e.settings.raster = params.table("compute").getChoice("raster", "auto", {"auto", "gl", "embree"});
+  // Shadow rays are traced on the CPU, where direct light must then run: refused here, before any
+  // GL, when the backend is GL by name ("auto" on a GPU is refused by raster_choice.h).
+  if (e.settings.shadow.rays && e.settings.backend == "gl")
+    throw Error(params.table("light_maps").where("shadows") +
+                ": \"rays\" are traced on the CPU, where direct light must then run; "
+                "[compute] backend = \"gl\" runs it on GL (use \"cpu\", or \"auto\" on a software GL renderer)");
 }
 
 // [sky] and [reference]: what the path tracer renders and how long.

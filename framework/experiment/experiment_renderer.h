@@ -9,6 +9,11 @@
 
 namespace lpvlab {
 
+// Where the experiment's raster passes run ([compute] raster, [light_maps] shadows) on the current
+// GL context: framework/raster/raster_choice.h, told the light views and whether a particle
+// system is drawn as a light field.
+RasterPlan chooseExperimentRaster(const Experiment& experiment);
+
 class ExperimentRenderer {
 public:
   // The pipeline of `experiment` (its strategies are moved into it) on the current GL context,

@@ -10,6 +10,7 @@
 #include "framework/math/dual.h"
 #include "framework/experiment/experiment.h"
 #include "framework/metrics/metrics.h"
+#include "framework/experiment/experiment_renderer.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/reference_cache.h"
 #include "framework/scene/scene_loader.h"
@@ -94,7 +95,9 @@ std::unique_ptr<Pipeline> FitEvaluator::pipeline(const FitView& view, const std:
   // The residuals compare the indirect light alone: no shadow maps, no direct light (their
   // read-back for the CPU's direct light was most of a rendering's time).
   e.settings.directLight = false;
-  return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.method), shaders_);
+  RasterPlan raster = chooseExperimentRaster(e);
+  return std::make_unique<Pipeline>(e.scene, e.camera, e.settings, std::move(e.method), shaders_,
+                                    std::move(raster));
 }
 
 // The last frame's indirect image and coverage; an Error for NaN or Inf.

@@ -10,6 +10,11 @@ struct DirectLightKernel {
   const GpuView* views;
   const float* depths;  // layer `view`, row y, texel x at (view * resolution + y) * resolution + x
   int resolution;
+  // Exact shadow rays' results ([light_maps] shadows = "rays"): rayVisibility[pixel * lightCount
+  // + light], for the pixel being shaded; null: the shadow maps.
+  const float* rayVisibility = nullptr;
+  int lightCount = 0;
+  std::size_t pixel = 0;
   GpuLight directLight(int i) { return lights[i]; }
   GpuView directView(int v) { return views[v]; }
   real shadowDepth(int view, ivec2 texel) {
@@ -19,6 +24,12 @@ struct DirectLightKernel {
   real shadowTaps3x3(int view, vec2 uv, real reference) {
     return shadowTaps3x3Bilinear(view, uv, reference, resolution);
   }
+  real lightVisibility(int light, int view, vec3 p, vec3 n, real offset, int resolution, real depthBias) {
+    if (rayVisibility) return real(rayVisibility[pixel * std::size_t(lightCount) + std::size_t(light)]);
+    return shadowVisibility(view, p + n * offset, resolution, depthBias);
+  }
 #include "shaders/lighting/shadow_tap.glsl"
+#define LPVLAB_DIRECT_LIGHT_VISIBILITY 1
 #include "shaders/lighting/direct_light.glsl"
+#undef LPVLAB_DIRECT_LIGHT_VISIBILITY
 };

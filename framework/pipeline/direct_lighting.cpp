@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "framework/core/error.h"
 #include "framework/gl/dispatch.h"
 #include "framework/pipeline/direct_lighting_cpu.h"
 
@@ -12,8 +13,12 @@ namespace direct_kernel {
 #include "shaders/lighting/direct_interface.glsl"
 }
 
-DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings, bool onCpu)
-    : settings_(settings), onCpu_(onCpu) {
+DirectLighting::DirectLighting(ShaderCompiler& shaders, ShadowSettings settings, bool onCpu,
+                               HostRaster* shadowRays)
+    : settings_(settings), onCpu_(onCpu), shadowRays_(shadowRays) {
+  if (settings_.rays && (!onCpu_ || !shadowRays_))
+    throw Error("key 'light_maps.shadows': \"rays\" are traced on the CPU, where direct light must "
+                "then run: [compute] backend = \"cpu\", or \"auto\" on a software GL renderer");
   if (!onCpu_) program_ = shaders.compute("lighting/direct.comp");
 }
 
@@ -43,11 +48,15 @@ void DirectLighting::render(const GBuffer& gbuffer, const LightMaps& maps, DualI
 // as one pass of 16 comparisons with separable weights (about 24) from 16 texels (4 B each);
 // the light's falloff and cosine (about 15). Plus, per pixel, the G-buffer's four texels read and
 // the result written (80 B), counted against each light.
+//
+// With shadow rays, per pixel and light one ray (its traversal is not multiply-adds: not counted)
+// and the falloff and cosine; the G-buffer and the result as above.
 WorkCount DirectLighting::work(double pixels, int lights, bool glKernel) const {
+  const double perPixelBytes = 80.0 / std::max(1, lights);
+  if (settings_.rays && !glKernel) return {"pixel-light", pixels * lights, 15.0, 4.0 + perPixelBytes};
   const bool cpu = onCpu_ && !glKernel;
   const double taps = cpu ? 24.0 : 9.0 * 7.0;
   const double texels = cpu ? 16.0 : 36.0;
-  const double perPixelBytes = 80.0 / std::max(1, lights);
   return {"pixel-light", pixels * lights, 16.0 + taps + 15.0, texels * 4.0 + perPixelBytes};
 }
 
@@ -57,11 +66,15 @@ WorkCount DirectLighting::work(double pixels, int lights, bool glKernel) const {
 void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                                  HostReadback& host) {
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the raster passes, before reading them back
-  directLightingCpu({.position = &host.image(gbuffer.position),
-                     .normal = &host.image(gbuffer.normal),
+  const HostImage& position = host.image(gbuffer.position);
+  const HostImage& normal = host.image(gbuffer.normal);
+  if (settings_.rays) shadowRays_->shadowRays(position, normal, maps.records, visibility_);
+  directLightingCpu({.position = &position,
+                     .normal = &normal,
                      .albedo = &host.image(gbuffer.albedo),
                      .emission = gbuffer.emissive ? &host.image(gbuffer.emission) : nullptr,
-                     .shadowDepth = &host.depth(maps.shadowDepth),
+                     .shadowDepth = settings_.rays ? nullptr : &host.depth(maps.shadowDepth),
+                     .visibility = settings_.rays ? &visibility_ : nullptr,
                      .records = &maps.records,
                      .normalOffsetTexels = settings_.normalOffsetTexels,
                      .depthBias = settings_.depthBias},

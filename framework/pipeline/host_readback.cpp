@@ -59,6 +59,69 @@ void uploadImage(const HostImage& image, gl::Texture& texture) {
   checkGl("uploading an image from the CPU backend");
 }
 
+namespace {
+
+// Checks that `image` has the texture's size and layers before an upload.
+template <class Image>
+void checkUploadSize(const Image& image, const gl::Texture& texture) {
+  if (image.width != texture.width() || image.height != texture.height() ||
+      image.layers != std::max(1, texture.depth()))
+    throw Error("ray-cast raster: a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                "x" + std::to_string(image.layers) + " image cannot fill a " +
+                std::to_string(texture.width()) + "x" + std::to_string(texture.height()) + "x" +
+                std::to_string(std::max(1, texture.depth())) + " texture");
+}
+
+template <class Image>
+void sizeLike(const gl::Texture& texture, Image& image, std::size_t& count) {
+  image.width = texture.width();
+  image.height = texture.height();
+  image.layers = std::max(1, texture.depth());
+  count = std::size_t(image.width) * image.height * image.layers;
+}
+
+}  // namespace
+
+void uploadLayers(const HostImage& image, const gl::Texture& texture) {
+  checkUploadSize(image, texture);
+  if (texture.target() == GL_TEXTURE_2D_ARRAY)
+    glTextureSubImage3D(texture.id(), 0, 0, 0, 0, image.width, image.height, image.layers, GL_RGBA,
+                        GL_FLOAT, image.texels.data());
+  else
+    glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,
+                        image.texels.data());
+  checkGl("uploading a host-made raster image");
+}
+
+void uploadDepth(const HostDepthImage& depths, const gl::Texture& texture) {
+  checkUploadSize(depths, texture);
+  if (texture.target() == GL_TEXTURE_2D_ARRAY)
+    glTextureSubImage3D(texture.id(), 0, 0, 0, 0, depths.width, depths.height, depths.layers,
+                        GL_DEPTH_COMPONENT, GL_FLOAT, depths.depths.data());
+  else
+    glTextureSubImage2D(texture.id(), 0, 0, 0, depths.width, depths.height, GL_DEPTH_COMPONENT,
+                        GL_FLOAT, depths.depths.data());
+  checkGl("uploading a host-made depth image");
+}
+
+HostImage& HostReadback::written(const gl::Texture& texture) {
+  Copy<HostImage>& copy = images_[texture.id()];
+  std::size_t count = 0;
+  sizeLike(texture, copy.image, count);
+  copy.image.texels.resize(count);
+  copy.current = true;
+  return copy.image;
+}
+
+HostDepthImage& HostReadback::writtenDepth(const gl::Texture& texture) {
+  Copy<HostDepthImage>& copy = depths_[texture.id()];
+  std::size_t count = 0;
+  sizeLike(texture, copy.image, count);
+  copy.image.depths.resize(count);
+  copy.current = true;
+  return copy.image;
+}
+
 void HostReadback::newFrame() {
   for (auto& [id, copy] : images_) copy.current = false;
   for (auto& [id, copy] : depths_) copy.current = false;

@@ -1,7 +1,8 @@
 #pragma once
-// Images of a frame read back from GL to the CPU for strategies on the CPU backend: the raster
-// passes always run on GL, and each of their images is read at most once per frame, the first
-// time a CPU strategy asks for it. Texels are RGBA floats, bottom row first, as GL stores them.
+// Images of a frame on the CPU for strategies on the CPU backend: read back from GL at most once
+// per frame, the first time a CPU strategy asks for one, or made on the host by the ray-cast raster
+// passes (host_raster.h), which write them here instead. Texels are RGBA floats, bottom row
+// first, as GL stores them.
 
 #include <map>
 #include <vector>
@@ -43,6 +44,10 @@ void downloadImage(const gl::Texture& texture, HostImage& image);  // reusing im
 // Level 0 of a depth texture, reusing image's storage.
 void downloadDepth(const gl::Texture& texture, HostDepthImage& image);
 void uploadImage(const HostImage& image, gl::Texture& texture);
+// Every layer of `image` into a 2D or 2D-array RGBA32F texture of its size, and of `depths` into a
+// depth texture's: host-made raster images for GL strategies.
+void uploadLayers(const HostImage& image, const gl::Texture& texture);
+void uploadDepth(const HostDepthImage& depths, const gl::Texture& texture);
 
 class HostReadback {
 public:
@@ -53,6 +58,11 @@ public:
   const HostImage& image(const gl::Texture& texture);
   // The same for a depth texture.
   const HostDepthImage& depth(const gl::Texture& texture);
+  // The texture's image for this frame made on the host (host_raster.h), sized as the texture
+  // (every layer): the caller fills it, and image() / depth() return it this frame without
+  // reading GL.
+  HostImage& written(const gl::Texture& texture);
+  HostDepthImage& writtenDepth(const gl::Texture& texture);
 
 private:
   template <class Image>

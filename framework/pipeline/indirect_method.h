@@ -78,6 +78,10 @@ public:
   virtual std::set<std::string> consumes() const = 0;
   // Whether its kernels run on the CPU.
   virtual bool runsOnCpu() const { return true; }
+  // Whether, after prepare, a kernel of it reads the raster passes' images as GL textures (not
+  // through MethodFrame::host): then images the ray-cast raster passes make on the host are
+  // uploaded to GL each frame (host_raster.h). By default when it does not run on the CPU.
+  virtual bool readsRasterImagesOnGl() const { return !runsOnCpu(); }
   // The stages whose work runs on the CPU after prepare (their time is then wall time, which
   // GL timestamps do not see). By default every stage if runsOnCpu().
   virtual std::set<std::string> cpuStages() const;

@@ -23,11 +23,6 @@ Image toImage(const HostImage& rgba, int channels, int firstChannel = 0) {
   return image;
 }
 
-// A float texture's level 0, the same way.
-Image readTexture(const gl::Texture& texture, int channels, int firstChannel = 0) {
-  return toImage(downloadImage(texture), channels, firstChannel);
-}
-
 }  // namespace
 
 const std::vector<std::string>& Pipeline::stageNames() {
@@ -36,13 +31,14 @@ const std::vector<std::string>& Pipeline::stageNames() {
 }
 
 Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
-                   std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders)
+                   std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders, RasterPlan raster)
     : settings_(settings),
       camera_(camera),
       lights_(scene.lights),
       sceneBounds_(scene.bounds()),
       method_(std::move(method)),
-      consumed_(method_->consumes()) {
+      consumed_(method_->consumes()),
+      raster_(std::move(raster)) {
   for (const std::string& name : method_->stageNames())
     if (name == kMethodTime || name == kSharedTime || name == kTotalTime ||
         std::find(stageNames().begin(), stageNames().end(), name) != stageNames().end())
@@ -60,7 +56,8 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
   lightMapsPass_ = std::make_unique<LightMapsPass>(shaders, lightViews(), settings.rsmResolution,
                                                    settings.shadowResolution);
   // Direct light has a CPU kernel for every composition: it follows the backend.
-  direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow, backend_ != ComputeBackend::Gl);
+  direct_ = std::make_unique<DirectLighting>(shaders, settings.shadow, backend_ != ComputeBackend::Gl,
+                                             raster_.host.get());
   if (direct_->onCpu()) cpuStages_.insert("direct");
   directImage_ = DualImage(settings.width, settings.height, "direct");
   indirectImage_ = DualImage(settings.width, settings.height, "indirect");
@@ -72,12 +69,24 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
                                .lightMaps = lightMapsPass_->lightMaps(),
                                .camera = camera_});
   for (const std::string& stage : method_->cpuStages()) cpuStages_.insert(stage);
+  for (const std::string& pass : raster_.hostPasses) cpuStages_.insert(pass);
+  uploadRasterImages_ = !raster_.hostPasses.empty() &&
+                        ((settings.directLight && !direct_->onCpu()) || method_->readsRasterImagesOnGl());
   checkGl("pipeline setup");
+}
+
+void Pipeline::addExtraGeometry(const ExtraGeometry* extra) {
+  if (raster_.host)
+    throw Error("key 'compute.raster': the raster passes or shadow rays on the CPU (" +
+                raster_.host->name() + ") see the scene's meshes alone, not light-field billboards; "
+                "use raster = \"gl\" and shadows = \"map\"");
+  extras_.push_back(extra);
 }
 
 bool Pipeline::renders(std::string_view rasterInput) const {
   if (rasterInput == raster::kGBuffer.name) return true;  // the run's AOVs
-  if (rasterInput == raster::kShadowMaps.name && settings_.directLight) return true;
+  if (rasterInput == raster::kShadowMaps.name && settings_.directLight && !settings_.shadow.rays)
+    return true;
   return consumed_.count(std::string(rasterInput)) > 0;
 }
 
@@ -104,6 +113,7 @@ void Pipeline::setCamera(const Camera& camera) {
 
 void Pipeline::moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved) {
   if (geometryMoved) scene_->updateGeometry(scene);
+  if (geometryMoved && raster_.host) raster_.host->moveGeometry(scene);
   method_->moveScene(scene, lightsMoved, geometryMoved);
   if (!lightsMoved && !geometryMoved) return;
   lights_ = scene.lights;
@@ -134,11 +144,9 @@ LightViews Pipeline::lightViews() const {
 FrameTimes Pipeline::renderFrame() {
   FrameTimes times;
   hostReadback_.newFrame();
-  if (renders(raster::kShadowMaps.name))
-    stage("shadow_maps", times, [&] { lightMapsPass_->renderShadowMaps(*scene_, extras_); });
-  if (renders(raster::kReflectiveShadowMaps.name))
-    stage("rsm", times, [&] { lightMapsPass_->renderRsms(*scene_, extras_); });
-  stage("gbuffer", times, [&] { gbufferPass_->render(*scene_, camera_, extras_); });
+  if (renders(raster::kShadowMaps.name)) stage("shadow_maps", times, [&] { renderShadowMaps(); });
+  if (renders(raster::kReflectiveShadowMaps.name)) stage("rsm", times, [&] { renderRsms(); });
+  stage("gbuffer", times, [&] { renderGBuffer(); });
   if (settings_.directLight)
     stage("direct", times, [&] {
       direct_->render(gbufferPass_->gbuffer(), lightMapsPass_->lightMaps(), directImage_,
@@ -168,6 +176,42 @@ FrameTimes Pipeline::renderFrame() {
   return times;
 }
 
+void Pipeline::renderShadowMaps() {
+  if (!raster_.hostPasses.count(kShadowMapPass)) return lightMapsPass_->renderShadowMaps(*scene_, extras_);
+  const LightMaps& maps = lightMapsPass_->lightMaps();
+  HostDepthImage& depths = hostReadback_.writtenDepth(maps.shadowDepth);
+  raster_.host->renderShadowMaps(maps.records, maps.shadowResolution, depths);
+  if (uploadRasterImages_) uploadDepth(depths, maps.shadowDepth);
+}
+
+void Pipeline::renderRsms() {
+  if (!raster_.hostPasses.count(kRsmPass)) return lightMapsPass_->renderRsms(*scene_, extras_);
+  const LightMaps& maps = lightMapsPass_->lightMaps();
+  const HostRsmTargets out{.position = &hostReadback_.written(maps.rsmPosition),
+                           .normal = &hostReadback_.written(maps.rsmNormal),
+                           .flux = &hostReadback_.written(maps.rsmFlux)};
+  raster_.host->renderRsms(maps.records, maps.rsmResolution, out);
+  if (uploadRasterImages_) {
+    uploadLayers(*out.position, maps.rsmPosition);
+    uploadLayers(*out.normal, maps.rsmNormal);
+    uploadLayers(*out.flux, maps.rsmFlux);
+  }
+}
+
+void Pipeline::renderGBuffer() {
+  if (!raster_.hostPasses.count(kGBufferPass)) return gbufferPass_->render(*scene_, camera_, extras_);
+  const GBuffer& g = gbufferPass_->gbuffer();
+  const HostGBufferTargets out{.position = &hostReadback_.written(g.position),
+                               .normal = &hostReadback_.written(g.normal),
+                               .albedo = &hostReadback_.written(g.albedo),
+                               .emission = g.emissive ? &hostReadback_.written(g.emission) : nullptr};
+  raster_.host->renderGBuffer(camera_, gbufferPass_->clipFromWorld(camera_), out);
+  if (uploadRasterImages_)
+    for (const auto& [image, texture] : {std::pair{out.position, &g.position}, {out.normal, &g.normal},
+                                         {out.albedo, &g.albedo}, {out.emission, &g.emission}})
+      if (image) uploadLayers(*image, *texture);
+}
+
 std::vector<NamedImage> Pipeline::readOutputs() const {
   const GBuffer& g = gbufferPass_->gbuffer();
   // From the side that wrote them last (read back only if that was GL).
@@ -178,17 +222,22 @@ std::vector<NamedImage> Pipeline::readOutputs() const {
   return {{"direct", std::move(direct)},
           {"indirect", std::move(indirect)},
           {"combined", std::move(combined)},
-          {"albedo", readTexture(g.albedo, 3)},
-          {"normal", readTexture(g.normal, 3)},
-          {"depth", readTexture(g.normal, 1, 3)}};
+          {"albedo", toImage(hostReadback_.image(g.albedo), 3)},
+          {"normal", toImage(hostReadback_.image(g.normal), 3)},
+          {"depth", toImage(hostReadback_.image(g.normal), 1, 3)}};
 }
 
 const LightMaps& Pipeline::lightMaps() const { return lightMapsPass_->lightMaps(); }
 
 nlohmann::json Pipeline::computeReport() const {
   nlohmann::json report = {{"backend", backendName(backend_)},
-                           {"raster_passes", "gl"},
+                           {"raster", raster_.record},
+                           {"shadows", settings_.shadow.rays ? "rays" : "map"},
                            {"direct", direct_->onCpu() ? "cpu" : "gl"}};
+  for (const char* pass : {kShadowMapPass, kRsmPass, kGBufferPass})
+    report["raster"]["passes"][pass] = raster_.hostPasses.count(pass) ? "embree" : "gl";
+  if (raster_.host) report["raster"]["embree"] = raster_.host->report();
+  report["raster"]["uploaded_to_gl"] = uploadRasterImages_;
   report.update(method_->computeReport());
   return report;
 }
@@ -198,7 +247,7 @@ nlohmann::json Pipeline::workReport(bool glKernels) const {
   const double pixels = double(settings_.width) * settings_.height;
   nlohmann::json report = nlohmann::json::object();
   const double shadowTexels = double(maps.views) * maps.shadowResolution * maps.shadowResolution;
-  report["shadow_maps"] = {workCountJson({"texel", shadowTexels})};
+  if (renders(raster::kShadowMaps.name)) report["shadow_maps"] = {workCountJson({"texel", shadowTexels})};
   if (renders(raster::kReflectiveShadowMaps.name))
     report["rsm"] = {workCountJson({"texel", double(maps.views) * maps.rsmResolution * maps.rsmResolution})};
   report["gbuffer"] = {workCountJson({"pixel", pixels})};
@@ -213,6 +262,7 @@ nlohmann::json Pipeline::memoryReport() const {
       {"gbuffer", gbufferPass_->gbuffer().memoryBytes()},
       {"light_maps", lightMapsPass_->lightMaps().memoryBytes()},
       {"output_images", directImage_.memoryBytes() + indirectImage_.memoryBytes()}};
+  if (raster_.host) bytes["raster_scene"] = raster_.host->memoryBytes();
   const nlohmann::json method = method_->memoryReport();  // kept: items() refers into it
   for (const auto& [name, value] : method.items())
     bytes[name] = bytes.value(name, std::size_t(0)) + value.get<std::size_t>();

@@ -21,6 +21,7 @@
 #include "framework/pipeline/raster_passes.h"
 #include "framework/pipeline/cascade.h"
 #include "framework/pipeline/composition.h"
+#include "framework/pipeline/host_raster.h"
 #include "framework/pipeline/host_readback.h"
 #include "framework/pipeline/indirect_method.h"
 
@@ -46,6 +47,9 @@ struct PipelineSettings {
   ShadowSettings shadow;
   DirectionalViewSettings directional;
   std::string backend = "auto"; // [compute] backend: "auto", "gl" or "cpu" (strategy.h)
+  // [compute] raster: "auto", "gl" or "embree" (framework/raster/raster_choice.h, which makes the
+  // HostRaster the pipeline is given; recorded in the compute report).
+  std::string raster = "auto";
   // false: no shadow maps and no direct light (the direct image stays black), for callers that
   // use the indirect light alone (lpvlab fit, whose residuals compare indirect).
   bool directLight = true;
@@ -82,8 +86,10 @@ public:
   // The pipeline's own stages, in the order a frame runs those it needs (the method's follow).
   static const std::vector<std::string>& stageNames();
 
+  // `raster`: where the raster passes run (settings.raster, framework/raster/raster_choice.h);
+  // by default every pass on GL. Shadow rays (settings.shadow.rays) need its host raster.
   Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
-           std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders);
+           std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders, RasterPlan raster = {});
   ~Pipeline();
 
   FrameTimes renderFrame();
@@ -101,8 +107,9 @@ public:
   void moveScene(const Scene& scene, bool lightsMoved, bool geometryMoved);
   // Geometry the raster passes draw beside the scene's meshes (extra_geometry.h: particles'
   // light-field billboards), from the next frame on; the caller keeps it alive as long as it
-  // renders frames.
-  void addExtraGeometry(const ExtraGeometry* extra) { extras_.push_back(extra); }
+  // renders frames. An Error with a raster pass or shadow rays on the host, which see the scene's
+  // meshes alone.
+  void addExtraGeometry(const ExtraGeometry* extra);
 
   // The run's indirect method (LPV's levels and grid read-back are its own:
   // variants/methods/lpv/light_propagation_volumes.h).
@@ -113,7 +120,8 @@ public:
   // Whether the frame renders a raster input (raster_inputs.h).
   bool renders(std::string_view rasterInput) const;
   // The backend the run resolved ([compute] backend) and where each stage's kernels run:
-  // {"backend": ..., "raster_passes": "gl", "direct": ..., and the method's computeReport()}.
+  // {"backend": ..., "raster": the plan's record (where each pass ran and why) with the host
+  // raster's report, "shadows": "map" or "rays", "direct": ..., and the method's computeReport()}.
   nlohmann::json computeReport() const;
   // What each stage does per frame (strategy.h's WorkCount), by stage name: a list of
   // {unit, units, multiply_adds_per_unit, bytes_per_unit, multiply_adds, bytes}; the raster
@@ -138,6 +146,10 @@ private:
   void stage(const std::string& name, FrameTimes& times, F&& work);
   // The light views for the current camera, lights and scene bounds.
   LightViews lightViews() const;
+  // The raster passes of a frame, on GL or by the host raster into hostReadback_.
+  void renderShadowMaps();
+  void renderRsms();
+  void renderGBuffer();
 
   PipelineSettings settings_;
   Camera camera_;
@@ -154,7 +166,11 @@ private:
   DualImage directImage_, indirectImage_;  // the frame's outputs, on the side that wrote them
   GpuTimer gpuTimer_;
   std::set<std::string> cpuStages_;  // stages whose work runs on the CPU backend
-  HostReadback hostReadback_;        // this frame's images read back for them
+  // This frame's images on the host: read back for CPU kernels, or made there by raster_.host
+  // (mutable: readOutputs reads through it).
+  mutable HostReadback hostReadback_;
+  RasterPlan raster_;                // where each raster pass runs (host_raster.h)
+  bool uploadRasterImages_ = false;  // host-made raster images go to GL too: a GL kernel reads them
 };
 
 }  // namespace lpvlab

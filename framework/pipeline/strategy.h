@@ -29,7 +29,7 @@ struct GridGeometry;
 struct LightMaps;
 
 // Where the strategies' kernels run ([compute] backend). The raster passes (shadow maps, RSMs,
-// G-buffer) always run on GL.
+// G-buffer) run on GL or by ray casting on the CPU ([compute] raster, host_raster.h).
 //   Gl                every strategy on GL
 //   Cpu               every strategy on the CPU: one without a CPU kernel for the composition is
 //                     refused, saying so

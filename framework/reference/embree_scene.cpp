@@ -12,23 +12,34 @@ namespace lpvlab {
 
 namespace {
 
-// A vertex attribute at barycentrics (u, v) of the triangle with these corners.
-template <class T>
-T atBarycentrics(const T* values, const std::uint32_t* corner, float u, float v) {
-  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
-}
+// What every query of an EmbreeScene hands Embree: its context, and the alpha lookup the alpha
+// masks' filter reads (null: the texture's level 0). Embree passes the context to filters as
+// given, so the filter can read the member after it (standard layout, context first).
+struct QueryContext {
+  RTCIntersectContext embree;
+  const AlphaLookup* alpha;
+};
+static_assert(std::is_standard_layout_v<QueryContext>);
 
 // Intersection and occlusion filter of alpha-masked geometry: rejects each candidate hit whose
 // interpolated uv falls where the base colour texture's alpha is below the material's cutoff.
 void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
   const auto& record = *static_cast<const GeometryRecord*>(args->geometryUserPtr);
+  const AlphaLookup* lookup = reinterpret_cast<const QueryContext*>(args->context)->alpha;
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
     const float u = RTCHitN_u(args->hit, args->N, i);
     const float v = RTCHitN_v(args->hit, args->N, i);
-    const std::uint32_t* corner =
-        record.indices + 3 * std::size_t(RTCHitN_primID(args->hit, args->N, i));
-    if (cutOut(*record.material, atBarycentrics(record.uvs, corner, u, v))) args->valid[i] = 0;
+    const unsigned primID = RTCHitN_primID(args->hit, args->N, i);
+    bool cut;
+    if (lookup) {
+      cut = lookup->alpha(record, primID, u, v, RTCRayN_id(args->ray, args->N, i)) <
+            record.material->alphaCutoff;
+    } else {
+      const std::uint32_t* corner = record.indices + 3 * std::size_t(primID);
+      cut = cutOut(*record.material, atBarycentrics(record.uvs, corner, u, v));
+    }
+    if (cut) args->valid[i] = 0;
   }
 }
 
@@ -84,14 +95,17 @@ void throwOnDeviceError(RTCDevice device, const char* step) {
 }  // namespace
 
 EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
-                         const RayEngineSettings& engine)
+                         const RayEngineSettings& engine,
+                         const std::function<bool(const Mesh&)>& include)
     : device_(makeEmbreeDevice(engine)) {
-  if (scene.triangleCount() == 0)
-    throw Error("path tracer: scene '" + scene.source + "' has no triangles");
+  std::size_t triangles = 0;
+  for (const Mesh& mesh : scene.meshes)
+    if (!include || include(mesh)) triangles += mesh.indices.size() / 3;
+  if (triangles == 0) throw Error("Embree: scene '" + scene.source + "' has no triangles to trace");
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
     checkMesh(mesh, materials.size());
-    if (mesh.indices.empty()) continue;
+    if (mesh.indices.empty() || (include && !include(mesh))) continue;
     triangles_.push_back(triangleFrames(mesh));
     records_.push_back({mesh.normals.data(), mesh.uvs.data(),
                         mesh.colors.empty() ? nullptr : mesh.colors.data(), mesh.indices.data(), triangles_.back().data(), &materials[mesh.material],
@@ -222,9 +236,11 @@ void occludedSlices(RTCScene scene, RTCIntersectContext* context, ShadowPacket& 
 
 }  // namespace
 
-void EmbreeScene::intersect(RayPacket& packet, bool coherent) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+void EmbreeScene::intersect(RayPacket& packet, bool coherent, const AlphaLookup* alpha) const {
+  QueryContext query;
+  rtcInitIntersectContext(&query.embree);
+  query.alpha = alpha;
+  RTCIntersectContext& context = query.embree;
   if (coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   switch (device_.packetWidth) {
     case 16: rtcIntersect16(packet.valid, scene_.get(), &context, &packet.query); break;
@@ -234,9 +250,11 @@ void EmbreeScene::intersect(RayPacket& packet, bool coherent) const {
   }
 }
 
-void EmbreeScene::occluded(ShadowPacket& packet) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+void EmbreeScene::occluded(ShadowPacket& packet, const AlphaLookup* alpha) const {
+  QueryContext query;
+  rtcInitIntersectContext(&query.embree);
+  query.alpha = alpha;
+  RTCIntersectContext& context = query.embree;
   switch (device_.packetWidth) {
     case 16: rtcOccluded16(packet.valid, scene_.get(), &context, &packet.query); break;
     case 8: occludedSlices<8>(scene_.get(), &context, packet); break;

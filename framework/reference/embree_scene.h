@@ -7,6 +7,7 @@
 // RayEngineSettings (framework/reference/embree_device.h).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -38,13 +39,26 @@ struct GeometryRecord {
   int meshIndex;  // into Scene::meshes
 };
 
+// An alpha lookup for alpha-masked materials other than the level-0 one (cutOut,
+// material_sampling.h), for one query: the raster passes' (GL's alpha test reads the mip level of
+// the pixel's footprint, framework/raster). `rayId` is the id the ray was set with.
+class AlphaLookup {
+public:
+  virtual ~AlphaLookup() = default;
+  virtual float alpha(const GeometryRecord& geometry, unsigned primID, float u, float v,
+                      unsigned rayId) const = 0;
+};
+
 class EmbreeScene {
 public:
   // Throws an Error for a scene without triangles or with a mesh whose attributes don't match
   // its positions or whose indices or material are out of range.
-  // Also throws the errors of makeEmbreeDevice for bad engine settings.
+  // Also throws the errors of makeEmbreeDevice for bad engine settings. `include`, when given,
+  // picks the meshes traced (the raster passes leave out some, as GL's draws do); an Error when
+  // it leaves no triangle.
   EmbreeScene(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
-              const RayEngineSettings& engine = {});
+              const RayEngineSettings& engine = {},
+              const std::function<bool(const Mesh&)>& include = {});
 
   const GeometryRecord& geometry(unsigned geomID) const { return records_[geomID]; }
   // Scene-scaled distance for ray offsets and shadow-ray ends: far above float rounding of the
@@ -56,10 +70,11 @@ public:
   int packetWidth() const { return device_.packetWidth; }
 
   // Nearest hits of the packet's active rays (each along origin + t direction, t in
-  // (tnear, tfar)); `coherent` tells Embree the rays are similar (camera rays).
-  void intersect(RayPacket& packet, bool coherent) const;
+  // (tnear, tfar)); `coherent` tells Embree the rays are similar (camera rays). `alpha`: alpha
+  // masks cut where it says (null: at the texture's level 0).
+  void intersect(RayPacket& packet, bool coherent, const AlphaLookup* alpha = nullptr) const;
   // Whether anything blocks each active ray of the packet.
-  void occluded(ShadowPacket& packet) const;
+  void occluded(ShadowPacket& packet, const AlphaLookup* alpha = nullptr) const;
 
 private:
   struct ReleaseScene {
@@ -71,6 +86,13 @@ private:
   std::vector<std::vector<TriangleFrame>> triangles_;  // by geomID, then primID
   float epsilon_ = 0.0f;
 };
+
+// A vertex attribute at barycentrics (u, v) of the triangle with these corners (Embree's:
+// point = (1 - u - v) p0 + u p1 + v p2).
+template <class T>
+T atBarycentrics(const T* values, const std::uint32_t* corner, float u, float v) {
+  return (1.0f - u - v) * values[corner[0]] + u * values[corner[1]] + v * values[corner[2]];
+}
 
 // A ray's hit on the scene's surface.
 struct SurfacePoint {

@@ -33,14 +33,14 @@ namespace packet_detail {
 
 // Writes one lane of an Embree ray packet (RTCRay16 layout).
 inline void setLane(RTCRay16& rays, int lane, const glm::vec3& origin, const glm::vec3& direction,
-                    float tNear, float tFar) {
+                    float tNear, float tFar, unsigned id = 0) {
   rays.org_x[lane] = origin.x, rays.org_y[lane] = origin.y, rays.org_z[lane] = origin.z;
   rays.dir_x[lane] = direction.x, rays.dir_y[lane] = direction.y, rays.dir_z[lane] = direction.z;
   rays.tnear[lane] = tNear;
   rays.tfar[lane] = tFar;
   rays.time[lane] = 0.0f;
   rays.mask[lane] = std::numeric_limits<unsigned>::max();
-  rays.id[lane] = 0;
+  rays.id[lane] = id;
   rays.flags[lane] = 0;
 }
 
@@ -69,8 +69,10 @@ struct RayPacket {
   bool any() const {
     return std::any_of(valid, valid + kPacketWidth, [](int v) { return v != 0; });
   }
-  void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) {
-    packet_detail::setLane(query.ray, lane, origin, direction, tNear, tFar);
+  // `id`: the caller's number for the ray (an AlphaLookup reads it: embree_scene.h).
+  void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar,
+           unsigned id = 0) {
+    packet_detail::setLane(query.ray, lane, origin, direction, tNear, tFar, id);
     query.hit.geomID[lane] = query.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     valid[lane] = -1;
   }
@@ -95,8 +97,9 @@ struct ShadowPacket {
       valid[lane] = 0;
     }
   }
-  void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar) {
-    packet_detail::setLane(query, lane, origin, direction, tNear, tFar);
+  void set(int lane, const glm::vec3& origin, const glm::vec3& direction, float tNear, float tFar,
+           unsigned id = 0) {
+    packet_detail::setLane(query, lane, origin, direction, tNear, tFar, id);
     valid[lane] = -1;
   }
   // Embree marks an occluded ray by setting its tfar to -inf.

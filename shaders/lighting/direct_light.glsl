@@ -12,6 +12,8 @@
 //                                            shadow map, one texel apart around window position
 //                                            uv: GL's LINEAR, LEQUAL filtering (GL: the texture
 //                                            unit, tap by tap; CPU: shadow_tap.glsl)
+// and, if it defines LPVLAB_DIRECT_LIGHT_VISIBILITY, lightVisibility (below) itself: the CPU
+// kernel then reads exact shadow rays' results where [light_maps] shadows = "rays".
 #ifndef LPVLAB_DIRECT_LIGHT_GLSL
 #define LPVLAB_DIRECT_LIGHT_GLSL
 #include "../common/lights_gpu.glsl"
@@ -42,6 +44,15 @@ real shadowVisibility(int view, vec3 p, int resolution, real depthBias) {
     return real(0.0);
   return shadowTaps3x3(view, vec2(window.x, window.y), window.z - depthBias);
 }
+
+#ifndef LPVLAB_DIRECT_LIGHT_VISIBILITY
+// How much of light `light` reaches p: its shadow map's filtered lookup from p moved `offset`
+// metres along n.
+real lightVisibility(int light, int view, vec3 p, vec3 n, real offset, int resolution,
+                     real depthBias) {
+  return shadowVisibility(view, p + n * offset, resolution, depthBias);
+}
+#endif
 
 // The direct radiance of a surface point p (unit normal n, Lambertian albedo, emission), from
 // `lightCount` lights whose shadow maps have shadowResolution^2 texels; the shadow lookup moves
@@ -77,8 +88,8 @@ vec3 directRadiance(vec3 p, vec3 n, vec3 albedo, vec3 emission, int lightCount,
     }
     real cosTheta = dot(n, toLight);
     if (cosTheta <= 0.0 || view < 0 || e == vec3(0.0)) continue;
-    irradiance += e * (cosTheta * shadowVisibility(view, p + n * (normalOffsetTexels * texelWorld),
-                                                   shadowResolution, depthBias));
+    irradiance += e * (cosTheta * lightVisibility(i, view, p, n, normalOffsetTexels * texelWorld,
+                                                  shadowResolution, depthBias));
   }
   return emission + albedo / PI * irradiance;
 }

@@ -38,7 +38,7 @@ RsmTexelLight rsmTexelLight(GpuView view, GpuLight light, vec3 worldPosition, ve
   vec3 toSurface = normalize(worldPosition - vec3(light.positionType));
   if (dot(n, toSurface) > 0.0) n = -n;
   // Texel centre in the view's image plane at unit distance (tan(fov/2) = params.y).
-  vec2 plane = (2.0 * fragCoord / real(resolution) - 1.0) * real(view.params.y);
+  vec2 plane = (real(2.0) * fragCoord / real(resolution) - real(1.0)) * real(view.params.y);
   real texel = 2.0 * real(view.params.y) / real(resolution);
   real solidAngle = texel * texel / pow(1.0 + dot(plane, plane), real(1.5));
   real falloff = 1.0;

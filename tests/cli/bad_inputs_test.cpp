@@ -80,6 +80,18 @@ const std::string kSmall =
 
 const std::vector<BadInput>& cases() {
   static const std::vector<BadInput> c = {
+      {"an unknown raster choice",
+       "run --out out" + kSmall + " -s compute.raster='\"vulkan\"'",
+       {"compute.raster", "vulkan"},
+       {"out"}},
+      {"shadow rays with direct light on GL",
+       "run --out out" + kSmall + " -s light_maps.shadows='\"rays\"' -s compute.backend='\"gl\"'",
+       {"light_maps.shadows", "backend"},
+       {"out"}},
+      {"an unknown shadowing",
+       "run --out out" + kSmall + " -s light_maps.shadows='\"pcss\"'",
+       {"light_maps.shadows", "pcss"},
+       {"out"}},
       {"the static camera's near beyond its far",
        "run --out out" + kSmall +
            " -s 'camera={position=[0.278,0.273,-0.8],look_at=[0.278,0.273,0.3],near=10.0,far=1.0}'",

@@ -50,13 +50,11 @@ std::set<std::string> rasterInputsOf(const Strategies& strategies) {
   return inputs;
 }
 
-// The world positions of the surfaces the G-buffer's pixels see (where cascades follow them).
-std::vector<glm::vec3> visiblePositions(const GBuffer& gbuffer) {
-  std::vector<glm::vec4> texels(std::size_t(gbuffer.width) * gbuffer.height);
-  glGetTextureImage(gbuffer.position.id(), 0, GL_RGBA, GL_FLOAT,
-                    GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+// The world positions of the surfaces the G-buffer's pixels see (where cascades follow them),
+// from its position image on the host (read back once, or made there by the ray-cast raster).
+std::vector<glm::vec3> visiblePositions(const HostImage& gbufferPositions) {
   std::vector<glm::vec3> positions;
-  for (const glm::vec4& texel : texels)
+  for (const glm::vec4& texel : gbufferPositions.texels)
     if (texel.w > 0.0f) positions.emplace_back(texel);
   return positions;
 }
@@ -191,7 +189,7 @@ void LightPropagationVolumes::render(MethodFrame& frame) {
   const int levels = int(levels_.size());
   frame.stage("clear", [&] {
     if (levels > 1 && settings_.cascades.placement == CascadePlacement::Depth)
-      placeLevels(visibleFocus(visiblePositions(frame.gbuffer)));
+      placeLevels(visibleFocus(visiblePositions(frame.host.image(frame.gbuffer.position))));
     clearGrids();
   });
   frame.stage("occlusion", [&] {

@@ -47,6 +47,8 @@ public:
   std::vector<std::string> stageNames() const override;
   std::set<std::string> consumes() const override;
   std::set<std::string> cpuStages() const override { return cpuStages_; }
+  // Whether a strategy runs on GL (which reads the G-buffer and the light maps as textures).
+  bool readsRasterImagesOnGl() const override;
   void check(const PipelineSettings& settings) const override;
   void prepare(const MethodSetup& setup) override;
   void render(MethodFrame& frame) override;

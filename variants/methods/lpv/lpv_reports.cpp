@@ -91,6 +91,12 @@ std::size_t LightPropagationVolumes::memoryBytes() const {
   return total;
 }
 
+bool LightPropagationVolumes::readsRasterImagesOnGl() const {
+  for (const auto& [table, strategy] : strategies_.all())
+    if (!strategy->runsOnCpu(requirements_)) return true;
+  return false;
+}
+
 nlohmann::json LightPropagationVolumes::computeReport() const {
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [table, strategy] : strategies_.all())
@@ -164,11 +170,10 @@ InjectionBalance LightPropagationVolumes::measureInjection() {
   }
   if (!consumed_.count(std::string(raster::kReflectiveShadowMaps.name)))
     return balance;  // no RSM was rendered: no strategy reads one
-  const LightMaps& maps = *lightMaps_;
-  std::vector<float> flux(std::size_t(maps.rsmResolution) * maps.rsmResolution * maps.views * 4);
-  glGetTextureImage(maps.rsmFlux.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(flux.size() * sizeof(float)),
-                    flux.data());
-  for (std::size_t i = 0; i < flux.size(); i += 4) balance.rsmFlux += flux[i] + flux[i + 1] + flux[i + 2];
+  // The last frame's RSMs on the host (read back, or made there by the ray-cast raster).
+  const HostImage& flux = host_->image(lightMaps_->rsmFlux);
+  for (std::size_t i = 0; i < std::size_t(lightMaps_->views) * lightMaps_->rsmResolution * lightMaps_->rsmResolution; ++i)
+    balance.rsmFlux += flux.texels[i].r + flux.texels[i].g + flux.texels[i].b;
   return balance;
 }
 
