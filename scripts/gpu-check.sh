@@ -1,7 +1,8 @@
 #!/bin/sh
 # The whole program checked on a GPU (docs/gpu.md): each configuration below runs twice through
 # EGL, once with every strategy's GL kernels (compute.backend = "gl") and once with their CPU
-# kernels (compute.backend = "cpu"; the raster passes stay on GL), and the GL run's `direct` and
+# kernels (compute.backend = "cpu"; the raster passes stay on GL, compute.raster = "gl" in both, so
+# that only the kernels differ), and the GL run's `direct` and
 # `indirect` must match the CPU run's: the mean and the 99th percentile of the relative difference
 # (`lpvlab compare`: |gl - cpu| / (|cpu| + 1e-3 mean |cpu|) over the pixels with a surface) within
 # the tolerances. Ends with a table; exits 1 if any configuration fails or differs beyond them.
@@ -94,7 +95,7 @@ while IFS='|' read -r name file overrides image; do
   for compute in gl cpu; do
     # shellcheck disable=SC2086
     if ! "$lpvlab" run "$@" --out "$dir/$compute" $small $overrides -s "gl.backend=\"$backend\"" \
-        -s "compute.backend=\"$compute\"" > "$dir/$compute.log" 2>&1; then
+        -s "compute.backend=\"$compute\"" -s 'compute.raster="gl"' > "$dir/$compute.log" 2>&1; then
       result=FAIL
       echo "gpu-check: $name ($compute) failed: $(tail -1 "$dir/$compute.log")" >&2
     fi

@@ -72,7 +72,7 @@ def speed_accuracy(agg, path, metric=S.DEFAULT_METRIC, time_col=None):
         ax.axhline(top, color="0.7", lw=0.8)
         ax.text(ax.get_xlim()[0], top, " inf", va="bottom", fontsize=7, color="0.4")
     if time_col == S.speed_col(agg):
-        ax.set_xlabel(f"{S.speed_words(agg)}: ms, median; {S.timed_on(agg, S.speed_stage(agg))}", fontsize=8)
+        ax.set_xlabel(S.speed_axis_label(agg), fontsize=8)
     else:
         ax.set_xlabel(f"{time_col} (ms, median)", fontsize=8)
     ax.set_ylabel(S.metric_axis_label(metric), fontsize=8)

@@ -346,23 +346,30 @@ def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
 
 
 def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
-                 gpu_table=G.DEFAULT_TABLE, speed=S.DEFAULT_SPEED):
+                 gpu_table=G.DEFAULT_TABLE, speed=S.DEFAULT_SPEED, gpu=S.DEFAULT_GPU):
     """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
     may be a list of sweep directories: one report of them all, which needs out_dir. The inputs
     (the summaries, the GPU table) are read before anything is written. `speed`: the time of the
     speed axis, plots, Pareto fronts, equal-time comparisons and tables (S.SPEEDS: "method", the
-    indirect method's own stages, or "total", the whole frame)."""
+    indirect method's own stages, "total", the whole frame, or "gpu-estimate", the method's GL
+    kernels estimated on the GPU of gpus.toml key `gpu`)."""
     sweep_dirs = list(sweep_dir) if isinstance(sweep_dir, (list, tuple)) else [sweep_dir]
     if len(sweep_dirs) > 1 and not out_dir:
         raise S.SummaryError("a report of several sweeps needs --out (where to write it)")
     gpus = G.load_gpus(gpu_table)
+    estimated_on = None
+    if speed == "gpu-estimate":
+        by_key = {g.key: g for g in gpus}
+        if gpu not in by_key:
+            raise S.SummaryError(f"--gpu {gpu}: not a GPU of {gpu_table} (one of {', '.join(by_key)})")
+        estimated_on = by_key[gpu]
     df = load_sweeps(sweep_dirs)
     sweep_dir = sweep_dirs[0]
     summary_path = " + ".join(os.path.join(d, "summary.csv") for d in sweep_dirs)
     out_dir = out_dir or os.path.join(sweep_dir, "report")
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise S.SummaryError(f"--out {out_dir}: is a file, not a directory")
-    agg = S.aggregate(df, speed)
+    agg = S.aggregate(df, speed, estimated_on)
     # A metric the user named must exist (before anything is written); the default may not.
     metric = S.resolve_metric(agg, metric or S.DEFAULT_METRIC, required=metric is not None)
     img_dir = os.path.join(out_dir, "img")
@@ -378,8 +385,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
             f"Times are medians over repeats, each stage by its own clock: {html.escape(S.timed_on(agg))} "
             f"(per stage in summary.csv's <code>time.&lt;stage&gt;.clock</code>). Speed axis, Pareto fronts, "
             f"equal-time comparisons and table order: {html.escape(S.speed_words(agg))} "
-            f"(<code>lpvlab report --time {'total' if speed == 'method' else 'method'}</code> for "
-            f"{'the whole frame' if speed == 'method' else 'the method alone'}).</p>"]
+            f"(<code>lpvlab report --time method|total|gpu-estimate [--gpu KEY]</code>: the method's "
+            f"own stages, the whole frame, or the method's GL kernels estimated on a GPU).</p>"]
     if swept:
         body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
     # Runs whose results are suspect (all black, a solve that did not converge): named at the top,
@@ -511,7 +518,8 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
 
 
 def main(argv=None):
-    """CLI: report.py DIR [DIR...] [--metric NAME] [--out DIR/report] [--no-exr] [--time method|total]. Exit 2 on
+    """CLI: report.py DIR [DIR...] [--metric NAME] [--out DIR/report] [--no-exr]
+    [--time method|total|gpu-estimate] [--gpu KEY]. Exit 2 on
     unusable input."""
     import argparse
     ap = argparse.ArgumentParser(description="Build an HTML report (plots, ablation table, images) of an lpvlab sweep.")
@@ -523,11 +531,14 @@ def main(argv=None):
     ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")
     ap.add_argument("--time", default=S.DEFAULT_SPEED, choices=S.SPEEDS,
                     help="the speed axis: method = the indirect method's own stages (default; what differs "
-                         "between configurations), total = the whole frame with the raster passes and direct light")
+                         "between configurations), total = the whole frame with the raster passes and direct light, "
+                         "gpu-estimate = the method's GL kernels estimated on --gpu (an estimate, labelled)")
+    ap.add_argument("--gpu", default=S.DEFAULT_GPU,
+                    help=f"with --time gpu-estimate: the GPU, a key of gpus.toml (default {S.DEFAULT_GPU})")
     a = ap.parse_args(argv)
     try:
         idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr,
-                           speed=a.time)
+                           speed=a.time, gpu=a.gpu)
     except (S.SummaryError, G.GpuTableError) as exc:
         print(f"lpvlab: error: {exc}", file=sys.stderr)
         return 2

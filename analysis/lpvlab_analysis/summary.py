@@ -46,9 +46,17 @@ TIME_COL = time_col("total")
 # (aggregate adds it). "method": the indirect method's own stages (time.method.ms: LPV's clear,
 # occlusion, injection, propagation and indirect; another method's stages), what differs between
 # a sweep's configurations; "total": the whole frame (time.total.ms), the raster passes and direct
-# light, which every configuration pays alike, included. A run that did not record which stages
-# are the method's (summaries before 2026-11) falls back to its total, and SPEED_SOURCE_COL says so.
-SPEEDS = ("method", "total")
+# light, which every configuration pays alike, included; "gpu-estimate": the method's counted GL
+# kernels on a named GPU (gpu_estimate.py: calibrated where its kernel family was measured, else
+# the roofline bound), an estimate and labelled one. A run that did not record which stages are
+# the method's (summaries before 2026-11) falls back to its total, and SPEED_SOURCE_COL says so.
+SPEEDS = ("method", "total", "gpu-estimate")
+DEFAULT_GPU = "h100_sxm"  # gpus.toml's key for --time gpu-estimate without --gpu
+# The pipeline's own stages (Pipeline::stageNames, framework/pipeline/pipeline.cpp): a run's other
+# counted stages are its indirect method's.
+PIPELINE_STAGES = ("shadow_maps", "rsm", "gbuffer", "direct")
+GPU_ESTIMATE_SOURCE = "gpu_estimate"  # SPEED_SOURCE_COL's prefix: gpu_estimate:<key>:<kind>
+SPEED_GPU_COL = "speed.gpu"           # the GPU's name, for the words
 DEFAULT_SPEED = "method"
 SPEED_COL = "speed.ms"
 SPEED_CLOCK_COL = "speed.clock"
@@ -253,11 +261,14 @@ def config_label(row, swept):
     return ", ".join(parts) if parts else str(row.get("config_name", row.get("config_id")))
 
 
-def with_speed(agg, speed=DEFAULT_SPEED):
+def with_speed(agg, speed=DEFAULT_SPEED, gpu=None):
     """agg with the speed axis's time per configuration (SPEED_COL), its clock (SPEED_CLOCK_COL)
-    and the column it came from (SPEED_SOURCE_COL): `speed` "method" or "total" (SPEEDS)."""
+    and the column it came from (SPEED_SOURCE_COL): `speed` one of SPEEDS; "gpu-estimate" needs
+    `gpu`, a gpu_estimate.Gpu."""
     if speed not in SPEEDS:
         raise SummaryError(f"--time {speed}: expected one of {', '.join(SPEEDS)}")
+    if speed == "gpu-estimate":
+        return _with_gpu_estimate(agg, gpu)
     out = agg.copy()
     times, clocks, sources = [], [], []
     for _, r in out.iterrows():
@@ -274,6 +285,50 @@ def with_speed(agg, speed=DEFAULT_SPEED):
     out[SPEED_CLOCK_COL] = pd.Series(clocks, index=out.index, dtype=object)
     out[SPEED_SOURCE_COL] = pd.Series(sources, index=out.index, dtype=object)
     return out
+
+
+def _with_gpu_estimate(agg, gpu):
+    """with_speed for "gpu-estimate": per configuration the sum over its indirect method's counted
+    stages of the calibrated estimate on `gpu`, or of the roofline bound for a stage without one;
+    NaN for a configuration with no counted method stage (nothing to estimate)."""
+    from . import gpu_estimate as G  # (it does not import this module)
+    if gpu is None:
+        raise SummaryError("--time gpu-estimate: no GPU named (--gpu KEY, a key of gpus.toml)")
+    est = G.with_estimates(agg, [gpu])
+    stages = [s for s in G.counted_stages(agg) if s not in PIPELINE_STAGES]
+    if not stages:
+        raise SummaryError("--time gpu-estimate: no indirect-method stage has counted GL-kernel work "
+                           "(gpu_work.<stage>.* in summary.csv): nothing to estimate")
+    times, sources = [], []
+    for i in est.index:
+        total, kinds = 0.0, set()
+        for stage in stages:
+            calibrated = est.at[i, f"{G.CALIBRATED}{gpu.key}.{stage}"] if f"{G.CALIBRATED}{gpu.key}.{stage}" in est.columns else math.nan
+            bound = est.at[i, f"{G.PREFIX}{gpu.key}.{stage}"]
+            if not math.isnan(calibrated):
+                total, kinds = total + calibrated, kinds | {"calibrated"}
+            elif not math.isnan(bound):
+                total, kinds = total + bound, kinds | {"roofline"}
+        times.append(total if kinds else math.nan)
+        kind = kinds.pop() if len(kinds) == 1 else ("mixed" if kinds else "none")
+        sources.append(f"{GPU_ESTIMATE_SOURCE}:{gpu.key}:{kind}")
+    out = agg.copy()
+    out[SPEED_COL] = pd.Series(times, index=out.index, dtype=float)
+    out[SPEED_CLOCK_COL] = pd.Series([f"{GPU_ESTIMATE_SOURCE}:{gpu.key}"] * len(out), index=out.index, dtype=object)
+    out[SPEED_SOURCE_COL] = pd.Series(sources, index=out.index, dtype=object)
+    out[SPEED_GPU_COL] = pd.Series([gpu.name] * len(out), index=out.index, dtype=object)
+    return out
+
+
+def _gpu_estimate_words(df):
+    kinds = {s.rsplit(":", 1)[1] for s in df[SPEED_SOURCE_COL]}
+    how = {"calibrated": "calibrated by measured kernels", "roofline": "the roofline bound",
+           "mixed": "calibrated where measured, else the roofline bound",
+           "none": "nothing counted"}
+    words = ", ".join(how[k] for k in sorted(kinds))
+    gpu = " / ".join(_unique(df, SPEED_GPU_COL))
+    return (f"the indirect method's GL kernels estimated on {gpu} ({words}; an estimate from "
+            "counted work, not a measurement)")
 
 
 def speed_col(df):
@@ -296,6 +351,8 @@ def speed_words(df):
     if SPEED_SOURCE_COL not in df.columns or not len(df):
         return _SPEED_WORDS[TIME_COL]
     sources = set(df[SPEED_SOURCE_COL])
+    if all(s.startswith(GPU_ESTIMATE_SOURCE + ":") for s in sources):
+        return _gpu_estimate_words(df)
     if sources == {time_col("method")}:
         return _SPEED_WORDS[time_col("method")]
     if sources == {TIME_COL}:
@@ -311,7 +368,21 @@ def speed_stage(df):
     return "total"
 
 
-def aggregate(df, speed=DEFAULT_SPEED):
+def is_estimated_speed(df):
+    """Whether the speed axis holds estimates (--time gpu-estimate), not times."""
+    return (SPEED_SOURCE_COL in df.columns and len(df) > 0 and
+            all(str(s).startswith(GPU_ESTIMATE_SOURCE + ":") for s in df[SPEED_SOURCE_COL]))
+
+
+def speed_axis_label(df):
+    """The speed axis's label: what it measures, in ms, and how the times were taken and where
+    (or that they are estimates)."""
+    if is_estimated_speed(df):
+        return f"{speed_words(df)}: ms"
+    return f"{speed_words(df)}: ms, median; {timed_on(df, speed_stage(df))}"
+
+
+def aggregate(df, speed=DEFAULT_SPEED, gpu=None):
     """One row per configuration (ordered by first appearance).
 
     Columns: config_id, config_name, run_dir, repeats, param.*, median
@@ -346,7 +417,7 @@ def aggregate(df, speed=DEFAULT_SPEED):
     categorical = [c for c in swept if not is_numeric_param(agg, c)]
     agg["variant"] = [variant_label(row, categorical) for _, row in agg.iterrows()]
     agg["label"] = [config_label(row, swept) for _, row in agg.iterrows()]
-    return with_speed(agg, speed)
+    return with_speed(agg, speed, gpu)
 
 
 def one_at_a_time(agg, param):

@@ -59,6 +59,8 @@ def make_sweep(root, with_exr=True, with_metrics=True):
     header += [f"time.{s}.ms" for s in STAGES] + [f"time.{s}.clock" for s in STAGES]
     header += [f"wall_ms.{s}" for s in STAGES] + ["timed_on.gl", "timed_on.cpu"]
     header += ["memory_bytes", "cells"]
+    # The GL kernels' counted work (what a GPU would run): propagation's, per cell-iteration.
+    header += ["gpu_work.propagation.multiply_adds", "gpu_work.propagation.bytes"]
     if with_metrics:
         header += [f"metric.{p}.{m}" for p in PAIRS for m in METRICS]
     rows = []
@@ -88,6 +90,7 @@ def make_sweep(root, with_exr=True, with_metrics=True):
                 r += [stage[s] for s in STAGES] + [clock[s] for s in STAGES]
                 r += [stage[s] * 1.1 for s in STAGES] + ["llvmpipe (LLVM 15.0.6, 256 bits)", "Test CPU 9000"]
                 r += [1048576 * (2 if prop == "occlusion" else 1), 32768]
+                r += [it * 32768 * 150.0, it * 32768 * 500.0]
                 if with_metrics:
                     err = 0.1 / it * (0.5 if prop == "occlusion" else 1.0)
                     for p in PAIRS:

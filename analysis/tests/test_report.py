@@ -108,6 +108,21 @@ class ReportTest(unittest.TestCase):
         self.assertIn("combined.png", page)
         self.assertNotIn("reference_0.png", page)
 
+    def test_the_gpu_estimate_speed_axis_is_labelled_and_an_unknown_gpu_refused(self):
+        out = os.path.join(self.tmp.name, "estimated")
+        r = subprocess.run([sys.executable, CLI, self.dir, "--out", out, "--no-exr", "--time", "gpu-estimate",
+                            "--gpu", "rtx_4090"], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        page = self._check(os.path.join(out, "index.html"))
+        self.assertIn("estimated on", page)
+        self.assertIn("not a measurement", page)
+        r = subprocess.run([sys.executable, CLI, self.dir, "--out", out + "2", "--time", "gpu-estimate",
+                            "--gpu", "voodoo2"], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--gpu voodoo2", r.stderr)
+        self.assertIn("rtx_4090", r.stderr)
+        self.assertFalse(os.path.exists(out + "2"), "nothing written before the inputs are checked")
+
     def test_cli_errors(self):
         for d, needle in [(os.path.join(self.tmp.name, "missing"), "missing"),
                           (os.path.join(self.tmp.name, "000"), "summary.csv")]:

@@ -98,6 +98,34 @@ class SummaryTest(unittest.TestCase):
         with self.assertRaises(S.SummaryError):
             S.aggregate(S.load_summary(p), "frames")
 
+    def test_the_gpu_estimate_axis_sums_the_methods_counted_kernels_and_says_it_estimates(self):
+        # Issue 43: --time gpu-estimate. Two configurations whose propagation differs 4x in counted
+        # work; direct light (the pipeline's own stage, counted too) is left out of the sum.
+        from lpvlab_analysis import gpu_estimate as G
+        p = os.path.join(self.dir, "gpu.csv")
+        with open(p, "w") as f:
+            f.write("config_id,config_name,repeat,run_dir,param.grid.sh_order,time.method.ms,time.method.clock,"
+                    "gpu_work.propagation.multiply_adds,gpu_work.propagation.bytes,"
+                    "gpu_work.direct.multiply_adds,gpu_work.direct.bytes\n")
+            f.write("a,A,0,a,1,5,cpu_wall_clock,1e9,4e9,1e12,1e12\n"
+                    "b,B,0,b,1,9,cpu_wall_clock,4e9,16e9,1e12,1e12\n")
+        gpu = {g.key: g for g in G.load_gpus()}[S.DEFAULT_GPU]
+        agg = S.aggregate(S.load_summary(p), "gpu-estimate", gpu)
+        est = G.with_estimates(agg, [gpu])
+        calibrated = f"{G.CALIBRATED}{gpu.key}.propagation"
+        expected = est[calibrated] if calibrated in est.columns else est[f"{G.PREFIX}{gpu.key}.propagation"]
+        self.assertEqual(list(agg[S.SPEED_COL]), list(expected))
+        self.assertAlmostEqual(agg[S.SPEED_COL].iloc[1] / agg[S.SPEED_COL].iloc[0], 4.0)
+        self.assertTrue(S.is_estimated_speed(agg))
+        words = S.speed_words(agg)
+        self.assertIn(gpu.name, words)
+        self.assertIn("not a measurement", words)
+        self.assertNotIn("median", S.speed_axis_label(agg))
+        # Equal-time comparisons group by this clock: an estimate is never set against a time.
+        self.assertEqual(set(agg[S.SPEED_CLOCK_COL]), {f"gpu_estimate:{gpu.key}"})
+        with self.assertRaises(S.SummaryError):
+            S.aggregate(S.load_summary(p), "gpu-estimate")  # no GPU named
+
     def test_memory_groups_are_numeric(self):
         p = os.path.join(self.dir, "m.csv")
         with open(p, "w") as f:

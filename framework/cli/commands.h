@@ -30,7 +30,8 @@ struct Options {
   std::optional<std::string> refMem;      //   tasks' --cpus-per-task, --mem, --time)
   std::optional<std::string> refTime;
   std::string metric;                     // report: the error metric of the speed/accuracy plot
-  std::string reportTime;                 // report: the speed axis, "method" or "total" ("": method)
+  std::string reportTime;                 // report: the speed axis, "method", "total" or "gpu-estimate" ("": method)
+  std::string reportGpu;                  // report: the GPU of "gpu-estimate" ("": the report's default)
   std::vector<std::string> moreSweeps;    // report: further sweep directories in the same report
   std::string reportOut;                  // report: where it goes ("": DIR/report)
   std::vector<std::string> images;        // compare: TEST and REFERENCE (run directories or EXRs)

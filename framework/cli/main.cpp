@@ -138,8 +138,12 @@ Command addReport(CLI::App& app, Options& o) {
   report
       ->add_option("--time", o.reportTime,
                    "The speed axis: method = the indirect method's own stages (default: what differs "
-                   "between configurations), total = the whole frame with the raster passes")
-      ->check(CLI::IsMember({"method", "total"}));
+                   "between configurations), total = the whole frame with the raster passes, "
+                   "gpu-estimate = the method's GL kernels estimated on --gpu (labelled an estimate)")
+      ->check(CLI::IsMember({"method", "total", "gpu-estimate"}));
+  report->add_option("--gpu", o.reportGpu,
+                     "With --time gpu-estimate: the GPU, a key of analysis/lpvlab_analysis/gpus.toml "
+                     "(default h100_sxm)");
   return {report, [&o] { return cli::reportCommand(o); }};
 }
 

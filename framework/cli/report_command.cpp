@@ -39,6 +39,7 @@ int reportCommand(const Options& options) {
   args.insert(args.end(), options.moreSweeps.begin(), options.moreSweeps.end());
   if (!options.metric.empty()) args.insert(args.end(), {"--metric", options.metric});
   if (!options.reportTime.empty()) args.insert(args.end(), {"--time", options.reportTime});
+  if (!options.reportGpu.empty()) args.insert(args.end(), {"--gpu", options.reportGpu});
   if (!options.reportOut.empty()) args.insert(args.end(), {"--out", options.reportOut});
   const int status = runProgram(args);
   if (status == 127)

@@ -104,6 +104,12 @@ RayRaster::TexelSurface RayRaster::surfaceOf(const EmbreeScene& scene, const Vie
 
 glm::vec4 RayRaster::textureAt(const GeometryRecord& g, unsigned primID, float u, float v,
                                const ViewRays& rays, int x, int y) const {
+  const TextureLookup t = lookupAt(g, primID, u, v, rays, x, y);
+  return t.mips->sample(t.uv, t.lod);
+}
+
+RayRaster::TextureLookup RayRaster::lookupAt(const GeometryRecord& g, unsigned primID, float u,
+                                             float v, const ViewRays& rays, int x, int y) const {
   const std::uint32_t* corner = g.indices + 3 * std::size_t(primID);
   const glm::vec2 uv = atBarycentrics(g.uvs, corner, u, v);
   const glm::vec3* positions = scene_.meshes[std::size_t(g.meshIndex)].positions.data();
@@ -112,7 +118,7 @@ glm::vec4 RayRaster::textureAt(const GeometryRecord& g, unsigned primID, float u
   const std::optional<glm::vec2> right = uvOnPlane(rays.ray(x + 1, y), p, uvs);
   const std::optional<glm::vec2> up = uvOnPlane(rays.ray(x, y + 1), p, uvs);
   const MipChain& mips = *mips_[std::size_t(g.material->texture - scene_.textures.data())];
-  return mips.sample(uv, right && up ? mips.lodOf(*right - uv, *up - uv) : 0.0f);
+  return {&mips, uv, right && up ? mips.lodOf(*right - uv, *up - uv) : 0.0f};
 }
 
 class RayRaster::ViewAlpha final : public AlphaLookup {
@@ -120,7 +126,8 @@ public:
   ViewAlpha(const RayRaster& raster, const ViewRays& rays) : raster_(raster), rays_(rays) {}
   float alpha(const GeometryRecord& g, unsigned primID, float u, float v, unsigned rayId) const override {
     const int x = int(rayId % unsigned(rays_.width())), y = int(rayId / unsigned(rays_.width()));
-    return raster_.textureAt(g, primID, u, v, rays_, x, y).a;
+    const TextureLookup t = raster_.lookupAt(g, primID, u, v, rays_, x, y);
+    return t.mips->sampleAlpha(t.uv, t.lod);
   }
 
 private:

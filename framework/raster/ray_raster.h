@@ -61,6 +61,14 @@ private:
   // primID, at the level of detail of texel (x, y) of `rays`.
   glm::vec4 textureAt(const GeometryRecord& g, unsigned primID, float u, float v,
                       const ViewRays& rays, int x, int y) const;
+  // Its texture's mip chain, uv and level of detail there (textureAt's lookup without the lookup).
+  struct TextureLookup {
+    const MipChain* mips;
+    glm::vec2 uv;
+    float lod;
+  };
+  TextureLookup lookupAt(const GeometryRecord& g, unsigned primID, float u, float v,
+                         const ViewRays& rays, int x, int y) const;
   class ViewAlpha;  // alpha masks at the texel's level of detail, for Embree's filter
   void build();
 

@@ -49,15 +49,28 @@ float MipChain::lodOf(glm::vec2 dUvDx, glm::vec2 dUvDy) const {
   return rho > 0.0f && std::isfinite(rho) ? std::log2(rho) : 0.0f;
 }
 
+namespace {
+
+// GL's LINEAR_MIPMAP_LINEAR: `bilinear` (a lookup in one level) in the two levels around `lod`,
+// blended by its fraction; level 0 alone when magnified (lod <= 0, or NaN).
+template <class Value, class Bilinear>
+Value trilinear(float lod, int levels, Bilinear&& bilinear) {
+  if (!(lod > 0.0f)) return bilinear(0);
+  const int lower = int(std::floor(std::min(lod, float(levels - 1))));
+  const float blend = std::min(lod, float(levels - 1)) - float(lower);
+  const Value a = bilinear(lower);
+  if (blend == 0.0f || lower == levels - 1) return a;
+  return a + blend * (bilinear(lower + 1) - a);
+}
+
+}  // namespace
+
 glm::vec4 MipChain::sample(glm::vec2 uv, float lod) const {
-  if (!(lod > 0.0f)) return sampleTexture(*level0_, uv);  // magnified (or NaN): level 0, bilinear
-  const float top = float(levels() - 1);
-  const float clamped = std::min(lod, top);
-  const int lower = int(std::floor(clamped));
-  const float blend = clamped - float(lower);
-  const glm::vec4 a = sampleTexture(level(lower), uv);
-  if (blend == 0.0f || lower == levels() - 1) return a;
-  return glm::mix(a, sampleTexture(level(lower + 1), uv), blend);
+  return trilinear<glm::vec4>(lod, levels(), [&](int k) { return sampleTexture(level(k), uv); });
+}
+
+float MipChain::sampleAlpha(glm::vec2 uv, float lod) const {
+  return trilinear<float>(lod, levels(), [&](int k) { return lpvlab::sampleAlpha(level(k), uv); });
 }
 
 std::size_t MipChain::bytes() const {

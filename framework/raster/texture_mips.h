@@ -28,6 +28,8 @@ public:
 
   // The linear colour and alpha at uv, at level of detail `lod` (lodOf).
   glm::vec4 sample(glm::vec2 uv, float lod) const;
+  // Its alpha alone (what alpha masks test), without decoding the colour.
+  float sampleAlpha(glm::vec2 uv, float lod) const;
   // lambda for texture-coordinate derivatives along the image's x and y (per pixel).
   float lodOf(glm::vec2 dUvDx, glm::vec2 dUvDy) const;
   int levels() const { return int(levels_.size()) + 1; }
