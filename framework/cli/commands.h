@@ -15,6 +15,7 @@ struct Options {
   std::string experiment;                 // "" = the built-in default
   std::string out;
   std::vector<std::string> overrides;     // "key.path=value"
+  bool dumpGrid = false;                  // run: -s output.dump_grid=true
   std::vector<int> gridSizes{16, 32, 64};
   std::vector<int> iterationCounts{1, 4, 16, 64};
   std::string csv;

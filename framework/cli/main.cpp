@@ -37,6 +37,9 @@ Command addRun(CLI::App& app, Options& o) {
                 "Replace a finished run in the output directory (its files are removed first)");
   run->add_option("-s,--set", o.overrides,
                   "Override one parameter, e.g. -s propagation.iterations=16 (repeatable)");
+  run->add_flag("--dump-grid", o.dumpGrid,
+                "Also write the light grid after the last frame (grid.npy, grid.json: SH "
+                "coefficients per cell and level); the same as -s output.dump_grid=true");
   return {run, [&o] { return cli::runCommand(o); }};
 }
 

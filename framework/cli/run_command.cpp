@@ -55,6 +55,12 @@ void replaceFinishedRun(const fs::path& dir, bool force, const std::string& opti
       const fs::path name = entry.substr(0, entry.find(' '));  // "error_indirect.png (FLIP of ...)"
       if (name.has_filename() && name.filename() == name) written.push_back(name);
     }
+  if (outputs.contains("grid") && outputs["grid"].is_object())  // --dump-grid's files
+    for (const char* key : {"npy", "json"})
+      if (outputs["grid"].contains(key) && outputs["grid"][key].is_string()) {
+        const fs::path name = outputs["grid"][key].get<std::string>();
+        if (name.has_filename() && name.filename() == name) written.push_back(name);
+      }
   if (outputs.contains("frames")) fs::remove_all(dir / "frames");
   for (const fs::path& name : written) fs::remove(dir / name);
   fs::remove(manifestPath);
@@ -63,7 +69,9 @@ void replaceFinishedRun(const fs::path& dir, bool force, const std::string& opti
 }  // namespace
 
 int runCommand(const Options& options) {
-  Experiment experiment = loadExperiment(options.experiment, options.overrides);
+  std::vector<std::string> overrides = options.overrides;
+  if (options.dumpGrid) overrides.push_back("output.dump_grid=true");
+  Experiment experiment = loadExperiment(options.experiment, overrides);
   const std::string out = options.out.empty() ? defaultOutDir(experiment.name) : options.out;
   requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
   replaceFinishedRun(out, options.force, options.out.empty() ? "output directory" : "--out");
@@ -108,7 +116,8 @@ int runCommand(const Options& options) {
     std::cout << "indirect method " << manifest["indirect_method"]["name"].get<std::string>()
               << ": " << manifest["indirect_method"]["statistics"].dump() << "\n";
   std::cout << "wrote " << out
-            << (!animation.animated() ? "/{images.exr, combined.png, manifest.json}\n"
+            << (!animation.animated() ? (experiment.dumpGrid ? "/{images.exr, combined.png, grid.npy, grid.json, manifest.json}\n"
+                                                             : "/{images.exr, combined.png, manifest.json}\n")
                 : manifest["outputs"].contains("video") ? "/{frames/, video.mp4, manifest.json}\n"
                                                         : "/{frames/, manifest.json}\n");
   return 0;

@@ -257,6 +257,7 @@ void readImages(Params& params, Experiment& e) {
   e.settings.height = output.get<int>("height", 512, {.min = 1, .max = 16384});
   e.autoExposure = output.get<bool>("auto_exposure", true);
   e.exposureStops = output.get<float>("exposure", 0.0f, {.min = -40.0f, .max = 40.0f});
+  e.dumpGrid = output.get<bool>("dump_grid", false);
 
   Params lightMaps = params.table("light_maps");
   e.settings.rsmResolution = lightMaps.get<int>("rsm_resolution", 256, {.min = 1, .max = 8192});
@@ -469,6 +470,12 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   readReference(params, e);
   readMetrics(params, e);
   const std::set<std::string> foreignTables = readIndirect(params, e);
+  if (e.dumpGrid && !e.method->hasLightGrid())
+    throw Error(params.table("output").where("dump_grid") + ": indirect method \"" + e.method->name() +
+                "\" keeps no light grid to dump (LPV does)");
+  if (e.dumpGrid && e.animation.animated())
+    throw Error(params.table("output").where("dump_grid") +
+                ": only a static run dumps its grid (this experiment is animated)");
   recordConfiguration(params, file, foreignTables, e);
   return e;
 }

@@ -63,6 +63,9 @@ struct Experiment {
   // The PNG only (data in the EXR is never scaled): with autoExposure the median lit pixel goes
   // to middle grey and exposureStops is added to that; without, exposureStops alone.
   bool autoExposure = true;
+  // [output] dump_grid (lpvlab run --dump-grid): the method's light grid after the last frame is
+  // written beside the images (grid.npy, grid.json); only for a method with one, in a static run.
+  bool dumpGrid = false;
   float exposureStops = 0.0f;
   std::string glBackend = "auto";
   // The path-traced reference of the same scene, camera and output size ([reference] table);

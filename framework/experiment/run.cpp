@@ -10,10 +10,23 @@
 #include "framework/experiment/run_outputs.h"
 #include "framework/experiment/sequence.h"
 #include "framework/core/atomic_file.h"
+#include "framework/io/npy.h"
 #include "framework/metrics/metrics.h"
 #include "framework/scene/scene_loader.h"
 
 namespace lpvlab {
+
+nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir) {
+  const std::filesystem::path dir(outDir);
+  writeNpy((dir / "grid.npy").string(), {dump.shape, dump.values});
+  nlohmann::json described = dump.description;
+  described["file"] = "grid.npy";
+  described["shape"] = dump.shape;
+  described["axes"] = dump.axes;
+  described["dtype"] = "float32, little-endian, C order";
+  writeTextAtomically((dir / "grid.json").string(), described.dump(2) + "\n");
+  return {{"npy", "grid.npy"}, {"json", "grid.json"}, {"shape", dump.shape}, {"axes", dump.axes}};
+}
 
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir) {
@@ -62,6 +75,7 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
 
   std::filesystem::create_directories(outDir);
   const std::filesystem::path dir(outDir);
+  if (experiment.dumpGrid) manifest["outputs"]["grid"] = writeGridDump(pipeline.method().dumpGrid(), outDir);
   writeExr((dir / "images.exr").string(), aovs,
            {{"lpvlab:experiment", experiment.name}, {"lpvlab:scene_hash", hash}});
   const float exposure = experiment.exposureStops +

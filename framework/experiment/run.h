@@ -6,6 +6,7 @@
 //   manifest.json  the resolved configuration, scene hash, library versions, git revision, host,
 //                  GL renderer, per-stage timings (median and spread over repeats), memory, and
 //                  the injection flux balance
+//   grid.npy, grid.json  with [output] dump_grid: the method's light grid (writeGridDump)
 // Every file is written to a temporary name and renamed; the manifest is written last, so a
 // directory without one is an interrupted run.
 
@@ -25,5 +26,9 @@ namespace lpvlab {
 // renders its sequence (sequence.h).
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir);
+
+// Writes `dump` into `outDir` as grid.npy (numpy.load reads it) and grid.json (its axes, shape,
+// units, basis and where each level's cells are); returns the manifest's outputs.grid entry.
+nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir);
 
 }  // namespace lpvlab

@@ -40,6 +40,10 @@ nlohmann::json IndirectMethod::describe(const std::map<std::string, double>&) co
   return {{"indirect_method", {{"name", name()}, {"statistics", statistics()}}}};
 }
 
+GridDump IndirectMethod::dumpGrid() const {
+  throw Error("indirect method \"" + name() + "\" keeps no light grid to dump");
+}
+
 std::string IndirectMethod::derivativeRefusal(const std::string& key) const {
   if (key.rfind('.') == std::string::npos) return "'" + key + "' is not <table>.<name>";
   return "indirect method \"" + name() + "\" has no kernels on dual numbers";

@@ -63,6 +63,16 @@ struct MethodFrame {
   std::function<void(const std::string& name, const std::function<void()>& work)> stage;
 };
 
+// A method's light grid as it stood after the last frame ([output] dump_grid, lpvlab run
+// --dump-grid): an array in C order with its axes named, and what a reader needs to place and
+// interpret it.
+struct GridDump {
+  std::vector<std::size_t> shape;
+  std::vector<std::string> axes;  // one name per axis of `shape`, outermost first
+  std::vector<float> values;
+  nlohmann::json description;     // units, basis, and per level where the cells are
+};
+
 // A WorkCount as the manifest's work report lists it.
 nlohmann::json workCountJson(const WorkCount& work);
 
@@ -122,6 +132,11 @@ public:
   // The manifest's entries about the method, given each stage's median time (ms):
   // {"indirect_method": {"name", "statistics"}} by default.
   virtual nlohmann::json describe(const std::map<std::string, double>& medianStageMs) const;
+  // Whether it keeps a light grid that dumpGrid() gives (LPV's SH grid); asked when the
+  // experiment is read, before any frame.
+  virtual bool hasLightGrid() const { return false; }
+  // Its light grid after the last frame (only where hasLightGrid()).
+  virtual GridDump dumpGrid() const;
   // Diagnostics measured after the timed frames, which may re-run part of a frame (LPV's
   // injection flux balance): manifest entries, none by default. A "warnings" array among them
   // (sentences) joins the run's warnings instead.

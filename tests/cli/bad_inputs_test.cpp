@@ -210,6 +210,14 @@ TEST_F(BadInputs, AFinishedRunIsNotWrittenOverWithoutForceAndForceRemovesWhatItW
   EXPECT_TRUE(fs::exists(run / "manifest.json"));
   EXPECT_NE(test::readFile(run / "manifest.json"), withMap);
   EXPECT_EQ(test::readFile(run / "notes.txt"), "mine\n") << "only what the old run wrote goes";
+
+  // A run with --dump-grid, replaced by one without: its grid files go with it.
+  ASSERT_EQ(test::runLpvlab("run --force --dump-grid --out r" + kSmall, dir_.path(), dir_.path()).exitCode, 0);
+  EXPECT_TRUE(fs::exists(run / "grid.npy"));
+  EXPECT_TRUE(fs::exists(run / "grid.json"));
+  ASSERT_EQ(test::runLpvlab("run --force --out r" + kSmall, dir_.path(), dir_.path()).exitCode, 0);
+  EXPECT_FALSE(fs::exists(run / "grid.npy")) << "an old run's grid beside a new run's manifest";
+  EXPECT_FALSE(fs::exists(run / "grid.json"));
 }
 
 // Results that run but are suspect are flagged, not refused (a black image can be what a study

@@ -75,6 +75,9 @@ public:
   // A level's current / accumulated coefficients as floats (grid.glsl layout); level 0 is the
   // finest (the only one without cascades).
   std::vector<float> readGrid(bool accumulated, int level = 0) const;
+  // The accumulated grid of every level: [level][channel][coefficient][z][y][x], W/sr.
+  bool hasLightGrid() const override { return true; }
+  GridDump dumpGrid() const override;
   // Re-runs clearing and injection alone after a frame and measures the flux balance on the
   // coarsest level (which holds the whole scene; reads the RSM and the grid back to the CPU).
   InjectionBalance measureInjection();

@@ -153,6 +153,33 @@ std::vector<float> LightPropagationVolumes::readGrid(bool accumulated, int level
   return data;
 }
 
+// Every level's accumulated grid, one after another: each is [channel][coefficient][z][y][x] in
+// memory already (shaders/common/grid.glsl), so the levels stack into one C-order array.
+GridDump LightPropagationVolumes::dumpGrid() const {
+  if (levels_.empty()) throw Error("LPV: no light grid yet (no frame was rendered)");
+  const LightGrid& first = levels_.front();
+  const glm::ivec3 r = first.geometry.resolution;
+  GridDump dump{.shape = {levels_.size(), std::size_t(LightGrid::kChannels), std::size_t(first.coefficients),
+                          std::size_t(r.z), std::size_t(r.y), std::size_t(r.x)},
+                .axes = {"level", "channel", "coefficient", "z", "y", "x"}};
+  nlohmann::json levels = nlohmann::json::array();
+  for (int level = 0; level < int(levels_.size()); ++level) {
+    const std::vector<float> values = readGrid(true, level);
+    dump.values.insert(dump.values.end(), values.begin(), values.end());
+    const GridGeometry& g = levels_[std::size_t(level)].geometry;
+    levels.push_back({{"origin_m", {g.origin.x, g.origin.y, g.origin.z}}, {"cell_size_m", g.cellSize}});
+  }
+  dump.description = {
+      {"quantity", "the accumulated light grid (injection and every propagation step) after the last frame"},
+      {"units", "radiant intensity, W/sr: RGB SH coefficients c_i = integral I(w) Y_i(w) dw of the light travelling in direction w"},
+      {"basis", "real SH with the Condon-Shortley phase, index l (l + 1) + m, orthonormal (shaders/common/sh.glsl)"},
+      {"sh_order", requirements_.shOrder},
+      {"channels", {"r", "g", "b"}},
+      {"cells", "cell (x, y, z) spans origin + [x, x+1) cell_size along x, and so on; levels finest first"},
+      {"levels", levels}};
+  return dump;
+}
+
 InjectionBalance LightPropagationVolumes::measureInjection() {
   const int coarsest = int(levels_.size()) - 1;
   Frame frame = this->frame(coarsest);
