@@ -28,6 +28,7 @@ import pandas as pd
 from . import equal_time as ET
 from . import fsutil
 from . import gpu_estimate as G
+from . import grid_slices
 from . import images
 from . import plots
 from . import sections as SC
@@ -179,6 +180,10 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
             trio.append(("result combined.png", _rel(comb, out_dir) if os.path.isfile(comb) else None))
         err = os.path.join(run_dir, "error_indirect.png")
         trio.append(("error map (FLIP, indirect)", _rel(err, out_dir) if os.path.isfile(err) else None))
+        # The run's light grid, where it dumped one (lpvlab run --dump-grid).
+        grid_png = grid_slices.write_png(run_dir, os.path.join(img_dir, f"grid_{_safe(row['config_id'])}.png"))
+        if grid_png:
+            trio.append(("light grid: middle slices of the finest level", _rel(grid_png, out_dir)))
         result[row["config_id"]] = (trio, done, run_dir)
     return result
 
@@ -539,7 +544,7 @@ def main(argv=None):
     try:
         idx = build_report(a.dir if len(a.dir) > 1 else a.dir[0], a.out, a.metric, use_exr=not a.no_exr,
                            speed=a.time, gpu=a.gpu)
-    except (S.SummaryError, G.GpuTableError) as exc:
+    except (S.SummaryError, G.GpuTableError, grid_slices.GridDumpError) as exc:
         print(f"lpvlab: error: {exc}", file=sys.stderr)
         return 2
     print(idx)
