@@ -11,6 +11,7 @@
 #include "framework/core/error.h"
 
 #include "framework/cli/commands.h"
+#include "framework/experiment/experiment_renderer.h"
 #include "framework/experiment/run.h"
 #include "framework/core/atomic_file.h"
 
@@ -75,7 +76,9 @@ int runCommand(const Options& options) {
   const std::string out = options.out.empty() ? defaultOutDir(experiment.name) : options.out;
   requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
   replaceFinishedRun(out, options.force, options.out.empty() ? "output directory" : "--out");
-  const auto context = GlContext::create(experiment.glBackend);
+  const RunContext run = openRunContext(experiment);
+  if (!run.note.empty()) std::cerr << "lpvlab: " << run.note << "\n";
+  const auto& context = run.context;
   const Animation& animation = experiment.animation;
   std::cerr << "lpvlab: " << experiment.name << " on " << context->renderer() << " ("
             << context->backend() << "), " << experiment.warmupFrames << " warm-up + ";

@@ -313,7 +313,7 @@ void readTimingAndBackends(Params& params, Experiment& e) {
   Params timing = params.table("timing");
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
-  e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl"});
+  e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl", "none"});
   e.settings.backend = params.table("compute").getChoice("backend", "auto", {"auto", "gl", "cpu"});
   e.settings.raster = params.table("compute").getChoice("raster", "auto", {"auto", "gl", "embree"});
   // Shadow rays are traced on the CPU, where direct light must then run: refused here, before any

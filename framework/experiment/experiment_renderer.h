@@ -3,6 +3,7 @@
 // and `lpvlab bench` render with, wired in one place.
 
 #include "framework/experiment/experiment.h"
+#include "framework/gl/context.h"
 #include "framework/gl/shader_compiler.h"
 #include "framework/particles/particle_billboards.h"
 #include "framework/pipeline/pipeline.h"
@@ -13,6 +14,17 @@ namespace lpvlab {
 // GL context: framework/raster/raster_choice.h, told the light views and whether a particle
 // system is drawn as a light field.
 RasterPlan chooseExperimentRaster(const Experiment& experiment);
+
+// The GL context of an experiment's run ([gl] backend; framework/gl/context.h). "auto" falls back
+// to "none" (no GL) when no GL context can be made and the run needs none: its strategies and
+// raster passes may run on the CPU (compute.backend and compute.raster not "gl") and no particle
+// system is drawn as a light field; `note` then says why. Otherwise the context's Error, with
+// what gl.backend = "none" would need.
+struct RunContext {
+  std::unique_ptr<GlContext> context;
+  std::string note;  // "" unless "auto" fell back to "none"
+};
+RunContext openRunContext(const Experiment& experiment);
 
 class ExperimentRenderer {
 public:

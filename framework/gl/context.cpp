@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <mutex>
 #include <utility>
@@ -18,6 +19,13 @@ namespace {
 // Guards the one-context-per-process rule (see context.h).
 std::mutex liveMutex;
 bool contextLive = false;
+std::atomic<bool> loaded = false;  // GL's entry points loaded for the live context (not "none")
+
+// gl.backend = "none": a context without GL.
+class NoGlContext final : public GlContext {
+public:
+  std::string backend() const override { return "none"; }
+};
 
 std::mutex debugMutex;
 std::vector<std::string> debugMessages;
@@ -75,6 +83,7 @@ std::unique_ptr<GlContext> finish(gl_detail::CurrentContext current) {
   // after that call reports it.
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
   glDebugMessageCallback(onDebugMessage, nullptr);
+  loaded = true;
   return std::move(current.context);
 }
 
@@ -88,10 +97,14 @@ GlContext::GlContext() {
 GlContext::~GlContext() {
   std::lock_guard lock(liveMutex);
   contextLive = false;
+  loaded = false;
 }
 
-std::string GlContext::renderer() const { return glString(GL_RENDERER); }
-std::string GlContext::version() const { return glString(GL_VERSION); }
+bool GlContext::glLoaded() { return loaded; }
+
+std::string GlContext::currentRenderer() { return glLoaded() ? glString(GL_RENDERER) : kNoGlRenderer; }
+std::string GlContext::renderer() const { return currentRenderer(); }
+std::string GlContext::version() const { return glLoaded() ? glString(GL_VERSION) : ""; }
 
 std::vector<std::string> GlContext::backends() {
 #if LPVLAB_HAVE_EGL
@@ -103,8 +116,9 @@ std::vector<std::string> GlContext::backends() {
 
 std::unique_ptr<GlContext> GlContext::create(const std::string& backend) {
   const std::vector<std::string> compiled = backends();
-  if (backend != "auto" && std::find(compiled.begin(), compiled.end(), backend) == compiled.end()) {
-    std::string valid = "auto";
+  if (backend != "auto" && backend != "none" &&
+      std::find(compiled.begin(), compiled.end(), backend) == compiled.end()) {
+    std::string valid = "auto, none";
     for (const std::string& name : compiled) valid += ", " + name;
     throwAt("GL context", "unknown backend '" + backend + "' (valid: " + valid + ")");
   }
@@ -113,6 +127,7 @@ std::unique_ptr<GlContext> GlContext::create(const std::string& backend) {
     if (contextLive)
       throwAt("GL context", "one already exists in this process (lpvlab uses one per process)");
   }
+  if (backend == "none") return std::make_unique<NoGlContext>();
   if (backend == "osmesa") return finish(gl_detail::createOsMesaContext());
 #if LPVLAB_HAVE_EGL
   if (backend == "egl") return finish(gl_detail::createEglContext(false));

@@ -24,7 +24,7 @@ void DualBuffer::toHost() const {
     if (latest_ == Latest::Both) latest_ = Latest::Gl;  // the new host copy holds nothing yet
   }
   if (latest_ != Latest::Gl) return;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // after GL's shader writes
+  gl::barrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // after GL's shader writes
   gl_.download(host_.data(), host_.size() * sizeof(float));
   latest_ = Latest::Both;
 }
@@ -74,7 +74,7 @@ void DualBuffer::copyFrom(const DualBuffer& other) {
     throw Error("buffer '" + gl_.label() + "': copying " + std::to_string(other.size()) +
                 " bytes into " + std::to_string(size()));
   if (other.latest_ != Latest::Host) {
-    glCopyNamedBufferSubData(other.gl_.id(), gl_.id(), 0, 0, GLsizeiptr(size()));
+    gl_.copyFrom(other.gl_);  // on GL (or, without GL, gl::Buffer's host bytes)
     latest_ = Latest::Gl;
   }
   if (other.latest_ != Latest::Gl) {

@@ -1,6 +1,9 @@
 #include "framework/gl/resources.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <utility>
 
 #include "framework/core/error.h"
@@ -57,8 +60,14 @@ namespace gl {
 // --- Buffer ---
 
 Buffer::Buffer(std::size_t bytes, const std::string& label, const void* data)
-    : bytes_(bytes), label_(label) {
+    : bytes_(bytes), label_(label), onHost_(!GlContext::glLoaded()) {
   if (bytes == 0) throwAt(label, "a buffer of 0 bytes");
+  if (onHost_) {
+    id_ = hostObjectName();
+    host_.assign(bytes, 0);
+    if (data) std::memcpy(host_.data(), data, bytes);
+    return;
+  }
   glCreateBuffers(1, &id_);
   glObjectLabel(GL_BUFFER, id_, -1, label.c_str());
   glNamedBufferStorage(id_, GLsizeiptr(bytes), data, GL_DYNAMIC_STORAGE_BIT);
@@ -74,17 +83,21 @@ Buffer::Buffer(std::size_t bytes, const std::string& label, const void* data)
 Buffer::Buffer(Buffer&& other) noexcept
     : id_(std::exchange(other.id_, 0)),
       bytes_(std::exchange(other.bytes_, 0)),
-      label_(std::move(other.label_)) {}
+      label_(std::move(other.label_)),
+      host_(std::move(other.host_)),
+      onHost_(other.onHost_) {}
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
   std::swap(id_, other.id_);
   std::swap(bytes_, other.bytes_);
   std::swap(label_, other.label_);
+  std::swap(host_, other.host_);
+  std::swap(onHost_, other.onHost_);
   return *this;
 }
 
 Buffer::~Buffer() {
-  if (id_) glDeleteBuffers(1, &id_);
+  if (id_ && !onHost_) glDeleteBuffers(1, &id_);
 }
 
 void Buffer::requireRange(std::size_t bytes, std::size_t offset, const char* what) const {
@@ -95,6 +108,7 @@ void Buffer::requireRange(std::size_t bytes, std::size_t offset, const char* wha
 }
 
 void Buffer::zero() {
+  if (onHost_) return std::fill(host_.begin(), host_.end(), 0);
   awaitShaderWrites();
   // An 8-bit clear value fits buffers of any size, unlike a 32-bit one.
   glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
@@ -102,12 +116,14 @@ void Buffer::zero() {
 
 void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
   requireRange(bytes, offset, "upload");
+  if (onHost_) return void(bytes ? std::memcpy(host_.data() + offset, data, bytes) : nullptr);
   awaitShaderWrites();
   glNamedBufferSubData(id_, GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
 void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
   requireRange(bytes, offset, "download");
+  if (onHost_) return void(bytes ? std::memcpy(data, host_.data() + offset, bytes) : nullptr);
   awaitShaderWrites();
   glGetNamedBufferSubData(id_, GLintptr(offset), GLsizeiptr(bytes), data);
 }
@@ -116,15 +132,21 @@ void Buffer::copyFrom(const Buffer& source) {
   if (source.size() != bytes_)
     throw Error("GL buffer '" + label_ + "': copying " + std::to_string(source.size()) +
                 " bytes of '" + source.label() + "' into " + std::to_string(bytes_));
+  if (onHost_ || source.onHost_) {
+    if (!(onHost_ && source.onHost_)) noGl("copying '" + source.label() + "' into '" + label_ + "'");
+    return void(host_ = source.host_);
+  }
   awaitShaderWrites();
   glCopyNamedBufferSubData(source.id(), id_, 0, 0, GLsizeiptr(bytes_));
 }
 
 void Buffer::bindStorage(GLuint binding) const {
+  if (onHost_) noGl("binding buffer '" + label_ + "' for a GL kernel");
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_);
 }
 
 void Buffer::bindUniform(GLuint binding) const {
+  if (onHost_) noGl("binding buffer '" + label_ + "' for a GL kernel");
   glBindBufferBase(GL_UNIFORM_BUFFER, binding, id_);
 }
 
@@ -164,6 +186,11 @@ Texture::Texture(GLenum target, GLenum internalFormat, int width, int height, in
   if (width < 1 || height < 1 || depth_ < 1 || levels < 1)
     throwAt(label, "texture of " + std::to_string(width) + "x" + std::to_string(height) + "x" +
                        std::to_string(depth) + " texels, " + std::to_string(levels) + " levels");
+  if (!GlContext::glLoaded()) {
+    onHost_ = true;
+    id_ = hostObjectName();
+    return;
+  }
   glCreateTextures(target, 1, &id_);
   glObjectLabel(GL_TEXTURE, id_, -1, label.c_str());
   if (target == GL_TEXTURE_2D)
@@ -189,7 +216,7 @@ Texture::Texture(GLenum target, GLenum internalFormat, int width, int height, in
 Texture::Texture(Texture&& other) noexcept
     : id_(std::exchange(other.id_, 0)), target_(other.target_), format_(other.format_),
       width_(other.width_), height_(other.height_), depth_(other.depth_),
-      label_(std::move(other.label_)) {}
+      label_(std::move(other.label_)), onHost_(other.onHost_) {}
 
 Texture& Texture::operator=(Texture&& other) noexcept {
   std::swap(id_, other.id_);
@@ -199,21 +226,23 @@ Texture& Texture::operator=(Texture&& other) noexcept {
   std::swap(height_, other.height_);
   std::swap(depth_, other.depth_);
   std::swap(label_, other.label_);
+  std::swap(onHost_, other.onHost_);
   return *this;
 }
 
 Texture::~Texture() {
-  if (id_) glDeleteTextures(1, &id_);
+  if (id_ && !onHost_) glDeleteTextures(1, &id_);
 }
 
 std::size_t Texture::bytes() const {
-  if (!id_) return 0;
+  if (!id_ || onHost_) return 0;  // without GL a texture holds no texels (its images are the host's)
   return texelBytes(format_) * std::size_t(width_) * std::size_t(height_) * std::size_t(depth_);
 }
 
 // --- Framebuffer ---
 
 Framebuffer::Framebuffer() {
+  if (!GlContext::glLoaded()) noGl("a framebuffer (drawing with GL)");
   glCreateFramebuffers(1, &id_);
   // Depth-only until a colour attachment arrives (a shadow map has none).
   glNamedFramebufferDrawBuffer(id_, GL_NONE);
@@ -258,7 +287,26 @@ void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
 
 }  // namespace gl
 
+void gl::barrier(GLbitfield bits) {
+  if (GlContext::glLoaded()) glMemoryBarrier(bits);
+}
+
+void gl::finish() {
+  if (GlContext::glLoaded()) glFinish();
+}
+
+void gl::noGl(const std::string& what) {
+  throw Error(what + " needs GL, and this run has none (gl.backend = \"none\"): run with a GL "
+              "backend, or choose what runs on the CPU");
+}
+
+GLuint gl::hostObjectName() {
+  static std::atomic<GLuint> next = 0x40000000u;
+  return next++;
+}
+
 void checkGl(std::string_view where) {
+  if (!GlContext::glLoaded()) return;  // no GL: nothing to check
   GLenum error = glGetError();
   if (error == GL_NO_ERROR) return;
   std::string message;

@@ -1,6 +1,12 @@
 #pragma once
 // Owned GL objects (move-only RAII), created with direct state access. Sizes are in bytes unless
 // stated. Each object carries a label that GL debug output and lpvlab's errors name.
+//
+// Without GL (gl.backend = "none", context.h) buffers and textures still exist, on the host: a
+// buffer keeps its bytes in memory (upload, download, zero and copies work, so DualBuffer's GL
+// side does too), a texture is its size and a name unique in the process (what HostReadback keys
+// its images by); binding either for a GL kernel, and any framebuffer, is an Error saying that
+// the run has no GL.
 
 #include <cstddef>
 #include <string>
@@ -41,6 +47,8 @@ private:
   GLuint id_ = 0;
   std::size_t bytes_ = 0;
   std::string label_;
+  std::vector<unsigned char> host_;  // the bytes without GL (onHost_)
+  bool onHost_ = false;
 };
 
 class Texture {
@@ -71,11 +79,22 @@ public:
   static std::size_t texelBytes(GLenum internalFormat);
 
 private:
-  GLuint id_ = 0;
+  GLuint id_ = 0;  // without GL: a name no GL object has (never passed to GL)
   GLenum target_ = 0, format_ = 0;
   int width_ = 0, height_ = 0, depth_ = 0;
   std::string label_;
+  bool onHost_ = false;
 };
+
+// glMemoryBarrier(bits) and glFinish(), where CPU code waits for GL's writes; nothing without GL
+// (nothing was written on GL).
+void barrier(GLbitfield bits);
+void finish();
+
+// Without GL: the Error for `what` ("drawing the scene", "compiling direct.comp") needing it.
+[[noreturn]] void noGl(const std::string& what);
+// Names for GL objects made without GL, unique in the process.
+GLuint hostObjectName();
 
 class Framebuffer {
 public:

@@ -7,6 +7,8 @@
 #include <set>
 
 #include "framework/core/install_layout.h"
+#include "framework/gl/context.h"
+#include "framework/gl/resources.h"
 #include "framework/core/error.h"
 
 namespace lpvlab {
@@ -111,6 +113,7 @@ std::vector<std::uint32_t> ShaderCompiler::compileToSpirv(const std::string& pat
 
 Program ShaderCompiler::link(const std::vector<std::string>& paths,
                              const std::vector<SpecConstant>& spec) {
+  if (!GlContext::glLoaded()) gl::noGl("the GL program " + paths.back());
   std::string files;
   for (const std::string& path : paths) files += (files.empty() ? "" : " + ") + path;
 

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "framework/core/error.h"
+#include "framework/gl/context.h"
 #include "framework/pipeline/raster_inputs.h"
 #include "framework/pipeline/strategy_catalogue.h"
 
@@ -113,6 +114,12 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder,
 }
 
 ComputeBackend resolveBackend(const std::string& requested, const std::string& glRenderer) {
+  if (glRenderer == kNoGlRenderer) {  // gl.backend = "none": everything on the CPU, or refused
+    if (requested == "gl")
+      throw Error("key 'compute.backend': \"gl\" needs GL, and this run has none (gl.backend = "
+                  "\"none\"); use \"cpu\" or \"auto\"");
+    return ComputeBackend::Cpu;
+  }
   if (requested == "gl") return ComputeBackend::Gl;
   if (requested == "cpu") return ComputeBackend::Cpu;
   if (requested != "auto")

@@ -65,7 +65,7 @@ WorkCount DirectLighting::work(double pixels, int lights, bool glKernel) const {
 // until something on GL asks for it (dual_image.h).
 void DirectLighting::renderOnCpu(const GBuffer& gbuffer, const LightMaps& maps, DualImage& direct,
                                  HostReadback& host) {
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the raster passes, before reading them back
+  gl::barrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the raster passes, before reading them back
   const HostImage& position = host.image(gbuffer.position);
   const HostImage& normal = host.image(gbuffer.normal);
   if (settings_.rays) shadowRays_->shadowRays(position, normal, maps.records, visibility_);

@@ -1,11 +1,14 @@
 #include "framework/pipeline/dual_image.h"
 
+#include "framework/gl/context.h"
+
 namespace lpvlab {
 
 DualImage::DualImage(int width, int height, const std::string& label)
     : gl_(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, label) {}
 
 void DualImage::toGl() const {
+  if (!GlContext::glLoaded()) gl::noGl("image '" + gl_.label() + "' on GL");
   // gl::Texture's writes are not const: the GL object changes, its handle does not.
   auto& texture = const_cast<gl::Texture&>(gl_);
   if (glSide_ == Side::Zero) {

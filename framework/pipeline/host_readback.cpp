@@ -7,7 +7,7 @@
 namespace lpvlab {
 
 void downloadFloats(const gl::Buffer& buffer, std::size_t floats, std::vector<float>& host) {
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl::barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   host.resize(floats);
   buffer.download(host.data(), floats * sizeof(float));
 }

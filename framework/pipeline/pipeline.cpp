@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "framework/core/error.h"
+#include "framework/gl/context.h"
 #include "framework/pipeline/dual_frame.h"
 #include "framework/pipeline/raster_inputs.h"
 
@@ -50,7 +51,7 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
     throw Error(scene.source + ": the scene has no light the indirect method \"" + method_->name() +
                 "\" can use (point, spot or directional; emissive surfaces are shown but light "
                 "nothing in its runs); add one under [[lights]] in the experiment");
-  backend_ = resolveBackend(settings.backend, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  backend_ = resolveBackend(settings.backend, GlContext::currentRenderer());
   scene_ = std::make_unique<SceneGpu>(scene);
   gbufferPass_ = std::make_unique<GBufferPass>(shaders, settings.width, settings.height, emissive);
   lightMapsPass_ = std::make_unique<LightMapsPass>(shaders, lightViews(), settings.rsmResolution,
@@ -98,7 +99,7 @@ void Pipeline::stage(const std::string& name, FrameTimes& times, F&& work) {
   gpuTimer_.begin(name);
   work();
   gpuTimer_.end();
-  glFinish();
+  gl::finish();
   times.wallMs[name] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (std::find(times.order.begin(), times.order.end(), name) == times.order.end())
@@ -167,7 +168,8 @@ FrameTimes Pipeline::renderFrame() {
   for (const auto& [stage, _] : times.stageMs) times.clock[stage] = kGlTimerQuery;
   // A stage whose kernels run on the CPU backend spends its time on the CPU, which GL
   // timestamps do not see: its time is its wall time (transfers to and from GL included).
-  for (const std::string& stage : cpuStages_)
+  // Without GL every stage runs on the CPU.
+  for (const std::string& stage : GlContext::glLoaded() ? cpuStages_ : std::set<std::string>(times.order.begin(), times.order.end()))
     if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end()) {
       times.stageMs[stage] = wall->second;
       times.clock[stage] = kCpuWallClock;

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "framework/core/error.h"
+#include "framework/gl/context.h"
 #include "framework/math/view_matrix.h"
 
 namespace lpvlab {
@@ -34,8 +35,7 @@ void beginRaster(const gl::Framebuffer& framebuffer, int width, int height, int 
   glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
 }
 
-GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height, bool emissive)
-    : program_(shaders.graphics("raster/scene.vert", "raster/gbuffer.frag")) {
+GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height, bool emissive) {
   gbuffer_.width = width;
   gbuffer_.height = height;
   gbuffer_.emissive = emissive;
@@ -44,18 +44,22 @@ GBufferPass::GBufferPass(ShaderCompiler& shaders, int width, int height, bool em
   gbuffer_.albedo = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer albedo");
   gbuffer_.emission = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, "gbuffer emission");
   gbuffer_.depth = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height, 1, "gbuffer depth");
-  framebuffer_.attach(GL_COLOR_ATTACHMENT0, gbuffer_.position);
-  framebuffer_.attach(GL_COLOR_ATTACHMENT1, gbuffer_.normal);
-  framebuffer_.attach(GL_COLOR_ATTACHMENT2, gbuffer_.albedo);
+  // Without GL the textures only name the host's images (host_raster.h): nothing draws here.
+  if (!GlContext::glLoaded()) return;
+  program_ = shaders.graphics("raster/scene.vert", "raster/gbuffer.frag");
+  framebuffer_.emplace();
+  framebuffer_->attach(GL_COLOR_ATTACHMENT0, gbuffer_.position);
+  framebuffer_->attach(GL_COLOR_ATTACHMENT1, gbuffer_.normal);
+  framebuffer_->attach(GL_COLOR_ATTACHMENT2, gbuffer_.albedo);
   if (emissive) {
-    framebuffer_.attach(GL_COLOR_ATTACHMENT3, gbuffer_.emission);
+    framebuffer_->attach(GL_COLOR_ATTACHMENT3, gbuffer_.emission);
   } else {
     // Not a target: gbuffer.frag's fourth output goes nowhere, and direct light reads zeros.
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearTexImage(gbuffer_.emission.id(), 0, GL_RGBA, GL_FLOAT, zero);
   }
-  framebuffer_.attach(GL_DEPTH_ATTACHMENT, gbuffer_.depth);
-  framebuffer_.checkComplete("G-buffer");
+  framebuffer_->attach(GL_DEPTH_ATTACHMENT, gbuffer_.depth);
+  framebuffer_->checkComplete("G-buffer");
 }
 
 glm::mat4 cameraClipFromWorld(const Camera& camera, int width, int height) {
@@ -71,7 +75,8 @@ glm::mat4 GBufferPass::clipFromWorld(const Camera& camera) const {
 
 void GBufferPass::render(const SceneGpu& scene, const Camera& camera,
                          const std::vector<const ExtraGeometry*>& extras) {
-  beginRaster(framebuffer_, gbuffer_.width, gbuffer_.height, gbuffer_.emissive ? 4 : 3);
+  if (!GlContext::glLoaded()) gl::noGl("the G-buffer by rasterisation");
+  beginRaster(*framebuffer_, gbuffer_.width, gbuffer_.height, gbuffer_.emissive ? 4 : 3);
   program_.use();
   const glm::mat4 clip = clipFromWorld(camera);
   glUniformMatrix4fv(LOCATION_CLIP_FROM_WORLD, 1, GL_FALSE, &clip[0][0]);
@@ -98,6 +103,7 @@ std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int vi
   maps.rsmNormal = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, label + " normal");
   maps.rsmFlux = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_RGBA32F, r, r, layers, label + " flux");
   maps.rsmDepth = gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, r, r, layers, label + " depth");
+  if (!GlContext::glLoaded()) return {};  // the host's images alone (host_raster.h)
   std::vector<gl::Framebuffer> framebuffers(static_cast<std::size_t>(views));
   for (int layer = 0; layer < views; ++layer) {
     gl::Framebuffer& fb = framebuffers[static_cast<std::size_t>(layer)];
@@ -111,10 +117,7 @@ std::vector<gl::Framebuffer> allocateRsm(LightMaps& maps, int resolution, int vi
 }
 
 LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, int rsmResolution,
-                             int shadowResolution)
-    : depthOnlyProgram_(shaders.graphics("raster/scene.vert", "raster/depth_only.frag")),
-      shadowProgram_(shaders.graphics("raster/scene.vert", "raster/shadow.frag")),
-      rsmProgram_(shaders.graphics("raster/scene.vert", "raster/rsm.frag")) {
+                             int shadowResolution) {
   const int layers = int(views.views.size());
   maps_.views = layers;
   maps_.lightCount = int(views.lights.size());
@@ -124,6 +127,16 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   rsmFramebuffers_ = allocateRsm(maps_, r, layers, "rsm");
   maps_.shadowDepth =
       gl::Texture(GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, s, s, std::max(layers, 1), "shadow maps");
+  maps_.lightRecords = gl::Buffer(std::max<size_t>(1, views.lights.size()) * sizeof(GpuLight),
+                                  "light records", nullptr);
+  maps_.viewRecords = gl::Buffer(std::max<size_t>(1, views.views.size()) * sizeof(GpuView),
+                                 "view records", nullptr);
+  setViews(views);
+  // Without GL the textures only name the host's images (host_raster.h): nothing draws here.
+  if (!GlContext::glLoaded()) return;
+  depthOnlyProgram_ = shaders.graphics("raster/scene.vert", "raster/depth_only.frag");
+  shadowProgram_ = shaders.graphics("raster/scene.vert", "raster/shadow.frag");
+  rsmProgram_ = shaders.graphics("raster/scene.vert", "raster/rsm.frag");
   // Hardware depth comparison with bilinear filtering: each shadow tap is a 2x2 PCF.
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
@@ -131,11 +144,6 @@ LightMapsPass::LightMapsPass(ShaderCompiler& shaders, const LightViews& views, i
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(maps_.shadowDepth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  maps_.lightRecords = gl::Buffer(std::max<size_t>(1, views.lights.size()) * sizeof(GpuLight),
-                                  "light records", nullptr);
-  maps_.viewRecords = gl::Buffer(std::max<size_t>(1, views.views.size()) * sizeof(GpuView),
-                                 "view records", nullptr);
-  setViews(views);
   for (int layer = 0; layer < layers; ++layer) {
     gl::Framebuffer& shadow = shadowFramebuffers_.emplace_back();
     shadow.attach(GL_DEPTH_ATTACHMENT, maps_.shadowDepth, layer);
@@ -160,6 +168,7 @@ void LightMapsPass::setViews(const LightViews& views) {
 // Surfaces without alpha masks go through a fragment-free program, the alpha-masked ones through
 // the material's alpha test; the depth test keeps the nearest either way, so the map is the same.
 void LightMapsPass::renderShadowMaps(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras) {
+  if (!GlContext::glLoaded()) gl::noGl("shadow maps by rasterisation");
   for (int layer = 0; layer < maps_.views; ++layer) {
     beginRaster(shadowFramebuffers_[layer], maps_.shadowResolution, maps_.shadowResolution, 0);
     depthOnlyProgram_.use();
@@ -177,6 +186,7 @@ void LightMapsPass::renderShadowMaps(const SceneGpu& scene, const std::vector<co
 }
 
 void LightMapsPass::renderRsms(const SceneGpu& scene, const std::vector<const ExtraGeometry*>& extras) {
+  if (!GlContext::glLoaded()) gl::noGl("RSMs by rasterisation");
   using namespace rsm_kernel;
   maps_.lightRecords.bindStorage(BUFFER_LIGHTS);
   maps_.viewRecords.bindStorage(BUFFER_VIEWS);

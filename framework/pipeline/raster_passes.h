@@ -2,6 +2,7 @@
 // The rasterised stages every LPV variant stands on: the camera's G-buffer, and per light view
 // the shadow map and the reflective shadow map.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,7 @@ public:
 private:
   Program program_;
   GBuffer gbuffer_;
-  gl::Framebuffer framebuffer_;
+  std::optional<gl::Framebuffer> framebuffer_;  // none without GL
 };
 
 class LightMapsPass {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "framework/core/error.h"
+#include "framework/gl/context.h"
 
 namespace lpvlab {
 
@@ -85,6 +86,7 @@ SceneGpu::SceneGpu(const Scene& scene) : sceneMaterials_(scene.materials) {
     }
   }
   for (const Mesh& mesh : scene.meshes) vertexCounts_.push_back(mesh.positions.size());
+  if (!GlContext::glLoaded()) return;  // no GL (gl.backend = "none"): nothing to upload; draw() says so
   if (indices.empty()) indices.push_back(0);
   vertices_ = gl::Buffer(vertices.size() * sizeof(Vertex), "scene vertices", vertices.data());
   indices_ = gl::Buffer(indices.size() * sizeof(std::uint32_t), "scene indices", indices.data());
@@ -127,6 +129,7 @@ SceneGpu::~SceneGpu() {
 }
 
 void SceneGpu::draw(AlphaMasks which, bool bindMaterials, bool injectingOnly) const {
+  if (!vertexArray_) gl::noGl("drawing the scene");
   glBindVertexArray(vertexArray_);
   if (bindMaterials) materials_.bindStorage(material_kernel::BUFFER_MATERIALS);
   for (const DrawRange& range : draws_) {
@@ -152,9 +155,10 @@ void SceneGpu::updateGeometry(const Scene& scene) {
            scene.meshes[i].normals.size() == vertexCounts_[i];
   if (!same)
     throw Error("scene update: the meshes differ from the uploaded ones (only moves and colours are updated)");
+  measureMaterialBounds(scene);
+  if (!vertexArray_) return;  // no GL: nothing uploaded
   const std::vector<Vertex> vertices = interleavedVertices(scene, meshOrder_);
   vertices_.upload(vertices.data(), vertices.size() * sizeof(Vertex));
-  measureMaterialBounds(scene);
 }
 
 std::size_t SceneGpu::memoryBytes() const {

@@ -1,6 +1,7 @@
 #include "framework/raster/raster_choice.h"
 
 #include "framework/core/error.h"
+#include "framework/gl/context.h"
 #include "framework/pipeline/composition.h"
 #include "framework/raster/raster_cost.h"
 #include "framework/raster/ray_raster.h"
@@ -59,7 +60,15 @@ RasterPlan chooseRaster(const RasterRequest& request, const Scene& scene, const 
                 "then run: [compute] backend = \"cpu\", or \"auto\" on a software GL renderer");
   RasterPlan plan;
   plan.record = {{"requested", raster}};
-  if (raster == "embree") plan.hostPasses = {kGBufferPass, kRsmPass, kShadowMapPass};
+  const bool noGl = request.glRenderer == kNoGlRenderer;  // gl.backend = "none"
+  if (noGl && request.lightFieldParticles)
+    throw Error("key 'gl.backend': \"none\" cannot draw particle systems drawn as a light field "
+                "(their light fields and billboards are GL programs); draw them as geometry "
+                "(draw = \"geometry\") or run with GL");
+  if (noGl && raster == "gl")
+    throw Error("key 'compute.raster': \"gl\" needs GL, and this run has none (gl.backend = \"none\"); "
+                "use \"embree\" or \"auto\"");
+  if (raster == "embree" || noGl) plan.hostPasses = {kGBufferPass, kRsmPass, kShadowMapPass};
   else if (raster == "auto" && softwareRenderer(request.glRenderer) && cpuBackend && !request.lightFieldParticles)
     plan.hostPasses = passesByModel(request, scene, settings, plan.record);
   if (!plan.hostPasses.empty() || rays) plan.host = std::make_unique<RayRaster>(scene);

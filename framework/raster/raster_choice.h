@@ -4,7 +4,8 @@
 //   "embree"  every pass by ray casting on the CPU (ray_raster.h)
 //   "auto"    on a software GL renderer (llvmpipe, softpipe) with the compute backend on the CPU,
 //             each pass where raster_cost.h's model of both says it is faster (ray casting wins
-//             on scenes of many triangles); else "gl"
+//             on scenes of many triangles); without GL (gl.backend = "none") every pass; else
+//             "gl" (refused without GL)
 // The images are the same up to edge sampling, so the choice changes times, not results; the
 // manifest's compute report records it per pass with the model's estimates.
 // [light_maps] shadows = "rays" (exact shadow rays for direct light, no shadow maps) makes the

@@ -78,7 +78,7 @@ private:
   void injectOnCpu(Frame& frame) {
     if (!frame.host) throw Error("[injection] rsm_vpl (CPU): the frame has no host images");
     const LightMaps& maps = frame.lightMaps;
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the RSMs, before reading them back
+    gl::barrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the RSMs, before reading them back
     LightGrid& grid = frame.lightGrid;
     std::vector<float>& light = grid.current.host();  // added to on the host
     NormalGrid* normals = frame.find(kNormalGrid);

@@ -259,7 +259,7 @@ private:
   void buildOnCpu(Frame& frame, float scale, std::vector<float>& blocking,
                   std::vector<float>* albedo) {
     if (!frame.host) throw Error("[occlusion] geometry_volume (CPU): the frame has no host images");
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the G-buffer and RSMs, before reading them
+    gl::barrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // the G-buffer and RSMs, before reading them
     const GeometryVolume& gv = frame.get(kGeometryVolume);
     const std::size_t floats = std::size_t(gv.geometry.cellCount()) * GeometryVolume::kCoefficients;
     blocking.assign(floats, 0.0f);
