@@ -11,7 +11,8 @@
 #                     (.part-00, .part-01, ...) of at most --part-size (default 40M: the GPU
 #                     machines this project reaches take 64 MiB per transfer, checkout included)
 #   --level N         zstd level of the archive (default 19; 1-3 for a quick one)
-#   --no-osmesa       leave out libOSMesa and its LLVM (117 MB): for GPU machines only
+#   --no-osmesa       leave out libOSMesa and its LLVM (117 MB): for GPU machines, and for CPU
+#                     machines, where runs go without GL (gl.backend = "none")
 #   --no-build        bundle the build tree's lpvlab as it is (the tests: they must not rebuild
 #                     the tree they test)
 #

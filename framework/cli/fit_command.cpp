@@ -110,8 +110,20 @@ int fitCommand(const Options& options) {
   FitProgress progress = resume.value_or(FitProgress{});
   const int resumedIterations = resume ? resume->log.back().iteration : 0;
 
-  const toml::node* backend = spec.base.at_path("gl.backend").node();
-  const auto context = GlContext::create(backend && backend->is_string() ? backend->as_string()->get() : "auto");
+  const toml::node* backendNode = spec.base.at_path("gl.backend").node();
+  const std::string backend = backendNode && backendNode->is_string() ? backendNode->as_string()->get() : "auto";
+  std::unique_ptr<GlContext> context;
+  try {
+    context = GlContext::create(backend);
+  } catch (const Error& error) {
+    // "auto" on a machine where no GL context can be made: without GL (gl.backend = "none"),
+    // where every stage of the fit's frames can run on the CPU (else its views are refused,
+    // naming what needs GL).
+    if (backend != "auto") throw;
+    std::cerr << "lpvlab: no GL context could be made (" << error.what()
+              << "): every stage runs on the CPU (gl.backend = \"none\")\n";
+    context = GlContext::create("none");
+  }
   std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
             << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
             << context->renderer() << "\n";

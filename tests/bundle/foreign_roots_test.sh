@@ -3,7 +3,10 @@
 # (glibc 2.31, older than the build's) and Debian 13 (2.41, newer), minbase, with no -dev package
 # and no GL. In each it runs the built-in Cornell box and Crytek Sponza under the sun, and each
 # image must equal the build tree's to the bit (the same CPU; OSMesa in both: the roots have no
-# EGL vendor, so "auto" ends at the bundle's OSMesa, as the manifest must say).
+# EGL vendor, so "auto" ends at the bundle's OSMesa, as the manifest must say). A bundle without
+# Mesa (--no-osmesa: no OSMesa, no LLVM) runs the Cornell box there too: no GL context can be made,
+# so "auto" runs without GL (gl.backend = "none"), and its image equals the build tree's run
+# with gl.backend = "none" to the bit.
 #
 #   foreign_roots_test.sh BUILD_DIR/lpvlab
 #
@@ -40,11 +43,18 @@ cleanup() {
 trap cleanup EXIT
 "$source_dir/scripts/bundle.sh" --build "$(dirname "$lpvlab")" --out "$tmp/dist" --no-build | tail -2
 bundle=$(ls -d "$tmp"/dist/lpvlab-*-x86_64)
+"$source_dir/scripts/bundle.sh" --build "$(dirname "$lpvlab")" --out "$tmp/dist-cpu" --no-build --no-osmesa | tail -1
+cpu_bundle=$(ls -d "$tmp"/dist-cpu/lpvlab-*-x86_64)
+if find "$cpu_bundle" -name 'libOSMesa*' -o -name 'libLLVM*' -o -name 'libgallium*' | grep -q .; then
+  echo "FAIL: the bundle without Mesa carries Mesa or LLVM"; exit 1
+fi
 
 small="-s output.width=96 -s output.height=64 -s timing.warmup=0 -s timing.repeats=1 -s grid.resolution=16 -s light_maps.rsm_resolution=64 -s light_maps.shadow_resolution=256"
 cp "$source_dir/experiments/sponza_sun.toml" "$tmp/sponza_sun.toml"
 # shellcheck disable=SC2086
 "$lpvlab" run --out "$tmp/host/cornell" $small -s 'gl.backend="osmesa"' > "$tmp/host.log" 2>&1
+# shellcheck disable=SC2086
+"$lpvlab" run --out "$tmp/host/cornell-cpu" $small -s 'gl.backend="none"' >> "$tmp/host.log" 2>&1
 # shellcheck disable=SC2086
 LPVLAB_SHARED_DIR=$shared "$lpvlab" run "$tmp/sponza_sun.toml" --out "$tmp/host/sponza" $small \
   -s 'gl.backend="osmesa"' >> "$tmp/host.log" 2>&1
@@ -75,6 +85,7 @@ for suite in bullseye trixie; do
   glibc=$(chroot "$root" ldd --version 2>&1 | head -1 | awk '{print $NF}')
   # Hard links where the roots share the bundle's file system: 572 MB is not copied twice.
   cp -al "$bundle" "$root/opt/lpvlab" 2>/dev/null || { rm -rf "$root/opt/lpvlab"; cp -a "$bundle" "$root/opt/lpvlab"; }
+  cp -al "$cpu_bundle" "$root/opt/lpvlab-cpu" 2>/dev/null || { rm -rf "$root/opt/lpvlab-cpu"; cp -a "$cpu_bundle" "$root/opt/lpvlab-cpu"; }
   cp "$tmp/sponza_sun.toml" "$root/tmp/"
   mkdir -p "$root/shared"
   mount -t proc proc "$root/proc" || { echo "FAIL: cannot mount /proc in the $suite root"; exit 1; }
@@ -85,7 +96,8 @@ for suite in bullseye trixie; do
   chroot "$root" /usr/bin/env -i HOME=/tmp PATH=/usr/bin:/bin LPVLAB_SHARED_DIR=/shared sh -c "
         cd /tmp &&
         /opt/lpvlab/bin/lpvlab run --out /tmp/cornell $small &&
-        /opt/lpvlab/bin/lpvlab run /tmp/sponza_sun.toml --out /tmp/sponza $small" \
+        /opt/lpvlab/bin/lpvlab run /tmp/sponza_sun.toml --out /tmp/sponza $small &&
+        /opt/lpvlab-cpu/bin/lpvlab run --out /tmp/cornell-cpu $small" \
       > "$tmp/$suite-run.log" 2>&1 || status=$?
   umount "$root/shared" "$root/proc" && mounted=""
   if [ "$status" != 0 ]; then
@@ -93,8 +105,10 @@ for suite in bullseye trixie; do
     failed=$((failed + 1))
     continue
   fi
-  for scene in cornell sponza; do
-    if ! grep -q '"gl_backend": "osmesa"' "$root/tmp/$scene/manifest.json"; then
+  for scene in cornell sponza cornell-cpu; do
+    expected=osmesa
+    [ "$scene" = cornell-cpu ] && expected=none
+    if ! grep -q "\"gl_backend\": \"$expected\"" "$root/tmp/$scene/manifest.json"; then
       echo "FAIL: $suite: $scene ran on $(grep -o '"gl_backend": "[a-z]*"' "$root/tmp/$scene/manifest.json")"
       failed=$((failed + 1))
     elif same_pixels "$tmp/host/$scene/images.exr" "$root/tmp/$scene/images.exr"; then
