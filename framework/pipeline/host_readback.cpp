@@ -104,22 +104,23 @@ void uploadDepth(const HostDepthImage& depths, const gl::Texture& texture) {
   checkGl("uploading a host-made depth image");
 }
 
-HostImage& HostReadback::written(const gl::Texture& texture) {
-  Copy<HostImage>& copy = images_[texture.id()];
+template <class Image, class T>
+Image& HostReadback::written(std::map<unsigned, Copy<Image>>& copies, const gl::Texture& texture,
+                             std::vector<T> Image::*values) {
+  Copy<Image>& copy = copies[texture.id()];
   std::size_t count = 0;
   sizeLike(texture, copy.image, count);
-  copy.image.texels.resize(count);
+  (copy.image.*values).resize(count);
   copy.current = true;
   return copy.image;
 }
 
+HostImage& HostReadback::written(const gl::Texture& texture) {
+  return written(images_, texture, &HostImage::texels);
+}
+
 HostDepthImage& HostReadback::writtenDepth(const gl::Texture& texture) {
-  Copy<HostDepthImage>& copy = depths_[texture.id()];
-  std::size_t count = 0;
-  sizeLike(texture, copy.image, count);
-  copy.image.depths.resize(count);
-  copy.current = true;
-  return copy.image;
+  return written(depths_, texture, &HostDepthImage::depths);
 }
 
 void HostReadback::newFrame() {

@@ -72,6 +72,10 @@ private:
   };
   std::map<unsigned, Copy<HostImage>> images_;  // by GL texture name
   std::map<unsigned, Copy<HostDepthImage>> depths_;
+  // written()'s work for either kind of image: `values` is its texel array.
+  template <class Image, class T>
+  Image& written(std::map<unsigned, Copy<Image>>& copies, const gl::Texture& texture,
+                 std::vector<T> Image::*values);
 };
 
 }  // namespace lpvlab

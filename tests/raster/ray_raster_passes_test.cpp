@@ -144,6 +144,25 @@ bool texturedAt(const EmbreeScene& scene, const ViewRays& rays, int x, int y) {
   return packet.hit(0) && scene.geometry(packet.hitAt(0).geomID).material->texture;
 }
 
+// One colour pass's texels (the G-buffer, or one light view's RSM) in both: position, normal and
+// `value` (albedo or flux) images, texels [offset, offset + width * height) of each.
+struct PassImages {
+  const HostImage *position, *normal, *value;
+};
+
+void tallyPass(PassTally& t, const EmbreeScene& traced, const ViewRays& rays, const PassImages& gl,
+               const PassImages& ray, std::size_t offset) {
+  for (int y = 0; y < rays.height(); ++y)
+    for (int x = 0; x < rays.width(); ++x) {
+      const std::size_t i = offset + std::size_t(y) * rays.width() + x;
+      const TexelPair p{gl.position->texels[i], ray.position->texels[i], gl.normal->texels[i],
+                        ray.normal->texels[i],  gl.value->texels[i],     ray.value->texels[i]};
+      const bool differs = p.glPosition != p.rayPosition || p.glValue != p.rayValue;
+      tallyTexel(t, p, texelFootprint(rays, x, y, glm::vec3(p.glPosition)),
+                 texturedAt(traced, rays, x, y), differs && edgeInTexel(traced, rays, x, y));
+    }
+}
+
 struct Scenario {
   std::string file;  // experiments/<file>, "" the built-in Cornell box
   std::string what;
@@ -189,16 +208,8 @@ TEST_P(RayRasterPasses, EqualGlsUpToEdgeSampling) {
   {
     const ViewRays camera(gbufferPass.clipFromWorld(e.camera), g.width, g.height);
     PassTally t;
-    for (int y = 0; y < g.height; ++y)
-      for (int x = 0; x < g.width; ++x) {
-        const std::size_t i = std::size_t(y) * g.width + x;
-        const TexelPair p{gl.image(g.position).texels[i], rays.image(g.position).texels[i],
-                          gl.image(g.normal).texels[i],   rays.image(g.normal).texels[i],
-                          gl.image(g.albedo).texels[i],   rays.image(g.albedo).texels[i]};
-        const bool differs = p.glPosition != p.rayPosition || p.glValue != p.rayValue;
-        tallyTexel(t, p, texelFootprint(camera, x, y, glm::vec3(p.glPosition)),
-                   texturedAt(traced, camera, x, y), differs && edgeInTexel(traced, camera, x, y));
-      }
+    tallyPass(t, traced, camera, {&gl.image(g.position), &gl.image(g.normal), &gl.image(g.albedo)},
+              {&rays.image(g.position), &rays.image(g.normal), &rays.image(g.albedo)}, 0);
     expectEdgeSampling(s.what + ", G-buffer", t);
   }
   // Every view's shadow map (depth) and RSM (position, normal, flux).
@@ -217,16 +228,10 @@ TEST_P(RayRasterPasses, EqualGlsUpToEdgeSampling) {
       }
     const int r = maps.rsmResolution;
     const ViewRays rsm(views.views[std::size_t(v)].clipFromWorld, r, r);
-    for (int y = 0; y < r; ++y)
-      for (int x = 0; x < r; ++x) {
-        const std::size_t i = (std::size_t(v) * r + y) * r + x;
-        const TexelPair p{gl.image(maps.rsmPosition).texels[i], rays.image(maps.rsmPosition).texels[i],
-                          gl.image(maps.rsmNormal).texels[i],   rays.image(maps.rsmNormal).texels[i],
-                          gl.image(maps.rsmFlux).texels[i],     rays.image(maps.rsmFlux).texels[i]};
-        const bool differs = p.glPosition != p.rayPosition || p.glValue != p.rayValue;
-        tallyTexel(rsmTally, p, texelFootprint(rsm, x, y, glm::vec3(p.glPosition)),
-                   texturedAt(traced, rsm, x, y), differs && edgeInTexel(traced, rsm, x, y));
-      }
+    tallyPass(rsmTally, traced, rsm,
+              {&gl.image(maps.rsmPosition), &gl.image(maps.rsmNormal), &gl.image(maps.rsmFlux)},
+              {&rays.image(maps.rsmPosition), &rays.image(maps.rsmNormal), &rays.image(maps.rsmFlux)},
+              std::size_t(v) * r * r);
   }
   expectEdgeSampling(s.what + ", shadow maps (" + std::to_string(maps.views) + " views)", shadowTally);
   expectEdgeSampling(s.what + ", RSMs", rsmTally);
