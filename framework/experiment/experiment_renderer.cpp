@@ -9,10 +9,18 @@
 
 namespace lpvlab {
 
+namespace {
+
+// Whether some particle system is drawn as a light field (its billboards are GL programs).
+bool drawsLightField(const Experiment& experiment) {
+  return std::any_of(experiment.particles.begin(), experiment.particles.end(),
+                     [](const ParticleGeometry& particles) { return particles.drawing().lightField; });
+}
+
+}  // namespace
+
 RasterPlan chooseExperimentRaster(const Experiment& experiment) {
-  const bool lightField =
-      std::any_of(experiment.particles.begin(), experiment.particles.end(),
-                  [](const ParticleGeometry& particles) { return particles.drawing().lightField; });
+  const bool lightField = drawsLightField(experiment);
   const LightViews views =
       buildLightViews(experiment.scene.lights, experiment.scene.bounds(),
                       directionalFollow(experiment.settings, experiment.camera));
@@ -27,9 +35,7 @@ RunContext openRunContext(const Experiment& experiment) {
   try {
     return {GlContext::create("auto"), ""};
   } catch (const Error& error) {
-    const bool lightField =
-        std::any_of(experiment.particles.begin(), experiment.particles.end(),
-                    [](const ParticleGeometry& particles) { return particles.drawing().lightField; });
+    const bool lightField = drawsLightField(experiment);
     const std::string& backend = experiment.settings.backend;
     const std::string& raster = experiment.settings.raster;
     if (backend == "gl" || raster == "gl" || lightField)

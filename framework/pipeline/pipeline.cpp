@@ -71,6 +71,10 @@ Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSetti
                                .camera = camera_});
   for (const std::string& stage : method_->cpuStages()) cpuStages_.insert(stage);
   for (const std::string& pass : raster_.hostPasses) cpuStages_.insert(pass);
+  if (!GlContext::glLoaded()) {  // without GL every stage runs on the CPU
+    cpuStages_.insert(stageNames().begin(), stageNames().end());
+    for (const std::string& stage : method_->stageNames()) cpuStages_.insert(stage);
+  }
   uploadRasterImages_ = !raster_.hostPasses.empty() &&
                         ((settings.directLight && !direct_->onCpu()) || method_->readsRasterImagesOnGl());
   checkGl("pipeline setup");
@@ -168,8 +172,7 @@ FrameTimes Pipeline::renderFrame() {
   for (const auto& [stage, _] : times.stageMs) times.clock[stage] = kGlTimerQuery;
   // A stage whose kernels run on the CPU backend spends its time on the CPU, which GL
   // timestamps do not see: its time is its wall time (transfers to and from GL included).
-  // Without GL every stage runs on the CPU.
-  for (const std::string& stage : GlContext::glLoaded() ? cpuStages_ : std::set<std::string>(times.order.begin(), times.order.end()))
+  for (const std::string& stage : cpuStages_)
     if (const auto wall = times.wallMs.find(stage); wall != times.wallMs.end()) {
       times.stageMs[stage] = wall->second;
       times.clock[stage] = kCpuWallClock;
