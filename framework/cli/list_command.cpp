@@ -52,6 +52,7 @@ int listJson() {
                                  {"resources", resourcesJson(entry.uses)},
                                  {"cpu_kernel", entry.cpuRefusal.empty()},
                                  {"cpu_refusal", entry.cpuRefusal},
+                                 {"without_gl", entry.cpuRefusal.empty() && entry.drawsWithGl.empty()},
                                  {"parameters", entry.defaults}});
   for (const MethodCatalogueEntry& method : methodCatalogue())
     out["methods"].push_back({{"name", method.name},
@@ -82,6 +83,8 @@ int listCommand(bool json) {
     if (!entry.parameters.empty()) std::cout << "      (" << entry.parameters << ")\n";
     std::cout << "      (CPU backend: "
               << (entry.cpuRefusal.empty() ? "yes" : "no, " + entry.cpuRefusal) << ")\n";
+    if (!entry.drawsWithGl.empty())
+      std::cout << "      (needs GL, whatever the backend: it draws " << entry.drawsWithGl << ")\n";
   }
   // The indirect-light methods (docs/methods.md); LPV's stages are the strategies above.
   std::cout << "[indirect] method =\n";

@@ -314,6 +314,7 @@ void readTimingAndBackends(Params& params, Experiment& e) {
   e.warmupFrames = timing.get<int>("warmup", 2, {.min = 0, .max = 1000});
   e.repeats = timing.get<int>("repeats", 5, {.min = 1, .max = 100000});
   e.glBackend = params.table("gl").getChoice("backend", "auto", {"auto", "osmesa", "egl", "none"});
+  e.settings.gl = e.glBackend != "none";  // "auto" may still find none: the pipeline checks again
   e.settings.backend = params.table("compute").getChoice("backend", "auto", {"auto", "gl", "cpu"});
   e.settings.raster = params.table("compute").getChoice("raster", "auto", {"auto", "gl", "embree"});
   // Shadow rays are traced on the CPU, where direct light must then run: refused here, before any
@@ -430,7 +431,9 @@ void recordConfiguration(Params& params, const std::string& file,
   try {
     e.method->check(e.settings);
   } catch (const Error& error) {
-    throw Error(file + ": " + error.what());
+    const std::string what = error.what();
+    if (what.starts_with(file + ":")) throw;  // it names the file already (Params::where)
+    throw Error(file + ": " + what);
   }
   e.configuration = params.resolved();
   for (const std::string& table : foreignTables) e.configuration.erase(table);

@@ -74,14 +74,15 @@ std::string stageOfTable(const std::string& table) {
 
 Requirements resolveRequirements(const Strategies& strategies, int shOrder,
                                  const DeclaredUses& alsoDeclared, int cascadeLevels,
-                                 ComputeBackend backend) {
+                                 ComputeBackend backend, bool gl) {
   if (strategies.injection.empty() || !strategies.occlusion || !strategies.propagation ||
       strategies.rendering.empty())
     throw Error("pipeline: every stage needs a strategy");
   Requirements requirements;
   requirements.shOrder = shOrder;
   requirements.cascadeLevels = cascadeLevels;
-  requirements.backend = backend;
+  requirements.backend = gl ? backend : ComputeBackend::Cpu;
+  requirements.gl = gl;
   // Every strategy's uses of resources, and the others' (e.g. a sky that some strategy must
   // inject).
   DeclaredUses declared;
@@ -105,7 +106,14 @@ Requirements resolveRequirements(const Strategies& strategies, int shOrder,
                   " ([grid] sh_order): lower the order or choose strategies that support it");
     if (const std::string why = strategy->refusal(requirements); !why.empty())
       throw Error(who + " cannot run in this composition: " + why);
-    if (backend == ComputeBackend::Cpu)
+    if (!gl) {
+      const std::string drawn = strategy->drawsWithGl();
+      const std::string why = drawn.empty() ? strategy->cpuRefusal(requirements) : "it draws " + drawn + " with GL";
+      if (!why.empty())
+        throw Error(who + " needs GL, and this run has none (gl.backend = \"none\", or \"auto\" "
+                    "found no GL context): " + why + "; run with GL or choose another strategy");
+    }
+    if (requirements.backend == ComputeBackend::Cpu && gl)
       if (const std::string why = strategy->cpuRefusal(requirements); !why.empty())
         throw Error(who + " cannot run on the CPU backend ([compute] backend = \"cpu\"): " + why +
                     "; use backend = \"auto\" (the CPU where a kernel exists) or \"gl\"");

@@ -44,9 +44,11 @@ std::map<std::string, ResourceAllocator> resolveResources(const DeclaredUses& de
 // from the grid's SH order and cascade levels, after checking that each strategy handles that
 // order and has no refusal.
 // With ComputeBackend::Cpu, a strategy without a CPU kernel for the composition is an Error.
+// Without GL (`gl` false) the backend is Cpu, and a strategy that draws with GL
+// (Strategy::drawsWithGl) or has no CPU kernel is an Error naming its table and type.
 Requirements resolveRequirements(const Strategies& strategies, int shOrder,
                                  const DeclaredUses& alsoDeclared = {}, int cascadeLevels = 1,
-                                 ComputeBackend backend = ComputeBackend::Gl);
+                                 ComputeBackend backend = ComputeBackend::Gl, bool gl = true);
 
 // "gl", "cpu" or "auto" ([compute] backend) as the backend a run uses, given the GL renderer's
 // name: "auto" is CpuWherePossible on a software renderer (llvmpipe, softpipe), else Gl.

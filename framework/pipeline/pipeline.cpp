@@ -31,9 +31,19 @@ const std::vector<std::string>& Pipeline::stageNames() {
   return names;
 }
 
+namespace {
+
+// The settings with `gl` as the context the pipeline runs in has it.
+PipelineSettings withGlKnown(PipelineSettings settings) {
+  settings.gl = GlContext::glLoaded();
+  return settings;
+}
+
+}  // namespace
+
 Pipeline::Pipeline(const Scene& scene, const Camera& camera, const PipelineSettings& settings,
                    std::unique_ptr<IndirectMethod> method, ShaderCompiler& shaders, RasterPlan raster)
-    : settings_(settings),
+    : settings_(withGlKnown(settings)),
       camera_(camera),
       lights_(scene.lights),
       sceneBounds_(scene.bounds()),

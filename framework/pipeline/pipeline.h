@@ -50,6 +50,10 @@ struct PipelineSettings {
   // [compute] raster: "auto", "gl" or "embree" (framework/raster/raster_choice.h, which makes the
   // HostRaster the pipeline is given; recorded in the compute report).
   std::string raster = "auto";
+  // Whether the run has GL: false with [gl] backend = "none", or "auto" where no GL context could
+  // be made (the pipeline sets it from the context it runs in). Without GL, strategies and
+  // methods that draw with GL are refused by the key that chose them.
+  bool gl = true;
   // false: no shadow maps and no direct light (the direct image stays black), for callers that
   // use the indirect light alone (lpvlab fit, whose residuals compare indirect).
   bool directLight = true;

@@ -64,6 +64,7 @@ struct Requirements {
   int cascadeLevels = 1;  // light grids in the cascade ([cascades] levels); every resource
                           // exists once per level
   ComputeBackend backend = ComputeBackend::Gl;
+  bool gl = true;  // the run has GL (PipelineSettings::gl); without it the backend is Cpu
   // The resources the run has: produced by one strategy and used by another, each with the
   // producer's allocator (named_resources.h).
   std::map<std::string, ResourceAllocator> resources;
@@ -105,6 +106,9 @@ public:
     (void)requirements;
     return "it has no CPU kernel yet";
   }
+  // What this strategy draws with GL's rasteriser whatever the backend (a depth map, an RSM of
+  // its own), named for a refusal when the run has no GL; "" if nothing.
+  virtual std::string drawsWithGl() const { return {}; }
   // Whether this strategy runs on the CPU in this composition (see ComputeBackend).
   bool runsOnCpu(const Requirements& requirements) const {
     return requirements.backend == ComputeBackend::Cpu ||

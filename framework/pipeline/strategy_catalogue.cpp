@@ -49,6 +49,7 @@ void addStage(const std::string& stage, std::vector<CatalogueEntry>& out) {
     Requirements alone;  // order 1, one level, no resources from other strategies
     alone.backend = ComputeBackend::Cpu;
     item.cpuRefusal = strategy->cpuRefusal(alone);
+    item.drawsWithGl = strategy->drawsWithGl();
     item.parameters = parameterLine(params);
     item.defaults = params.resolved();
     out.push_back(std::move(item));

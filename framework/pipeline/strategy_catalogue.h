@@ -19,6 +19,7 @@ struct CatalogueEntry {
   std::string description;
   ResourceUses uses;  // with the default parameters (a parameter may change them)
   std::string cpuRefusal;  // why it has no CPU kernel with its defaults alone, or "" if it has one
+  std::string drawsWithGl;  // what it draws with GL whatever the backend (no run without GL), or ""
   std::string parameters;  // "key = value, ..." as the strategy reads them by default
   nlohmann::json defaults;  // the same as an object: key -> default value
 };

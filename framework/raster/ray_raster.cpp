@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "framework/core/error.h"
+#include "framework/raster/cast_view.h"
 #include "framework/raster/view_rays.h"
 #define LPVLAB_SHARED_SINGLE_PRECISION 1
 #include "framework/math/shared.h"
@@ -20,8 +21,6 @@ LPVLAB_SHARED_GLSL_END
 namespace lpvlab {
 
 namespace {
-
-constexpr int kTile = 4;  // texels per side of a tile: kTile^2 = one 16-ray packet
 
 // The texture coordinates where `ray` meets the plane of the triangle with these corners: a
 // neighbouring pixel's, for the derivatives GL takes between the pixels of a quad (the plane
@@ -37,41 +36,6 @@ std::optional<glm::vec2> uvOnPlane(const ViewRay& ray, const glm::vec3* p, const
   if (!(std::abs(den) > 0.0f)) return std::nullopt;
   const float b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den;
   return uv[0] + b1 * (uv[1] - uv[0]) + b2 * (uv[2] - uv[0]);
-}
-
-// Calls shade(x, y, ray, hit) for every texel of the view, hit null where the ray meets nothing
-// between the near and far planes; alpha masks cut where `alpha` says (each ray's id is its
-// texel's index, y * width + x). Tiles of kTile x kTile texels are one packet each; rows of tiles
-// are shared out by oneTBB.
-template <class Shade>
-void castView(const EmbreeScene& scene, const ViewRays& rays, const AlphaLookup& alpha, Shade&& shade) {
-  const int tilesX = (rays.width() + kTile - 1) / kTile, tilesY = (rays.height() + kTile - 1) / kTile;
-  tbb::parallel_for(tbb::blocked_range<int>(0, tilesY), [&](const tbb::blocked_range<int>& tileRows) {
-    RayPacket packet;
-    ViewRay lanes[kPacketWidth];
-    for (int tileY = tileRows.begin(); tileY < tileRows.end(); ++tileY)
-      for (int tileX = 0; tileX < tilesX; ++tileX) {
-        packet.clear();
-        for (int lane = 0; lane < kPacketWidth; ++lane) {
-          const int x = tileX * kTile + lane % kTile, y = tileY * kTile + lane / kTile;
-          if (x >= rays.width() || y >= rays.height()) continue;
-          lanes[lane] = rays.ray(x, y);
-          packet.set(lane, lanes[lane].origin, lanes[lane].direction, 0.0f, lanes[lane].length,
-                     unsigned(y) * unsigned(rays.width()) + unsigned(x));  // ViewAlpha reads it
-        }
-        scene.intersect(packet, /*coherent=*/true, &alpha);
-        for (int lane = 0; lane < kPacketWidth; ++lane) {
-          if (!packet.active(lane)) continue;
-          const int x = tileX * kTile + lane % kTile, y = tileY * kTile + lane / kTile;
-          if (packet.hit(lane)) {
-            const RayHit hit = packet.hitAt(lane);
-            shade(x, y, lanes[lane], &hit);
-          } else {
-            shade(x, y, lanes[lane], static_cast<const RayHit*>(nullptr));
-          }
-        }
-      }
-  });
 }
 
 void checkLayers(const LightViews& views, int resolution, int width, int height, int layers,
@@ -175,7 +139,7 @@ void RayRaster::renderGBuffer(const Camera& camera, const glm::mat4& clipFromWor
       throw Error("ray-cast raster: the G-buffer's images differ in size");
   const glm::vec3 eye = camera.position, forward = camera.forward;
   const ViewAlpha alpha(*this, rays);
-  castView(*drawn_, rays, alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
+  castView(*drawn_, rays, &alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
     const std::size_t i = std::size_t(y) * rays.width() + x;
     if (!hit) {  // GL clears every target to zeros
       out.position->texels[i] = out.normal->texels[i] = out.albedo->texels[i] = glm::vec4(0.0f);
@@ -197,7 +161,7 @@ void RayRaster::renderShadowMaps(const LightViews& views, int resolution, HostDe
     const ViewRays rays(views.views[v].clipFromWorld, resolution, resolution);
     float* layer = out.depths.data() + v * std::size_t(resolution) * resolution;
     const ViewAlpha alpha(*this, rays);
-    castView(*drawn_, rays, alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
+    castView(*drawn_, rays, &alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
       layer[std::size_t(y) * resolution + x] =
           hit ? rays.windowDepth(ray.origin + hit->distance * ray.direction) : 1.0f;
     });
@@ -220,7 +184,7 @@ void RayRaster::renderRsms(const LightViews& views, int resolution, const HostRs
     const shared::GpuView& view = shared.views[v];
     const shared::GpuLight& light = shared.lights[std::size_t(view.params.z)];
     const ViewAlpha alpha(*this, rays);
-    castView(*rsmScene_, rays, alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
+    castView(*rsmScene_, rays, &alpha, [&](int x, int y, const ViewRay& ray, const RayHit* hit) {
       const std::size_t i = offset + std::size_t(y) * resolution + x;
       if (!hit) {
         out.position->texels[i] = out.normal->texels[i] = out.flux->texels[i] = glm::vec4(0.0f);

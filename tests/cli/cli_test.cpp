@@ -182,6 +182,15 @@ TEST_F(Cli, ListNamesEveryStageAndItsStrategies) {
     EXPECT_EQ(r.out.compare(at, 18, "(CPU backend: yes)"), 0) << r.out.substr(at, 80);
   }
   EXPECT_GE(entries, 10u) << r.out;  // 10 strategies in 4 stages
+  // Those that draw with GL on any backend say so, on the line after their CPU line (a run without
+  // GL refuses them); the others don't.
+  for (const char* name : {"sky_columns:", "subsurface:", "rsm_vpl:", "standard:"}) {
+    const std::size_t cpuLine = r.out.find("(CPU backend: ", r.out.find(name));
+    const std::size_t next = r.out.find('\n', cpuLine) + 1;
+    const bool drawsWithGl = std::string(name) == "sky_columns:" || std::string(name) == "subsurface:";
+    EXPECT_EQ(r.out.compare(next, 47, "      (needs GL, whatever the backend: it draws") == 0, drawsWithGl)
+        << name << "\n" << r.out.substr(cpuLine, 200);
+  }
   // Each strategy's parameters with their defaults (by name), printed as written (a float's 0.02 is not
   // 0.019999999552965164).
   for (const char* expected : {"dilation = true, gpu_kernel = \"simple\", iterations = 32, region_angle_deg = 10, release = true",

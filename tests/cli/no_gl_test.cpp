@@ -4,8 +4,11 @@
 //   - it runs, says so (the manifest's libraries.gl_backend and gl_renderer, every stage timed by
 //     the CPU wall clock, every raster pass by Embree), and its images are bit for bit those of a
 //     run with GL whose raster passes and strategies run on the CPU (the same kernels);
-//   - what needs GL is refused with one error naming it: compute.backend or compute.raster "gl",
-//     a strategy that rasterises on GL (sky injection's columns), light-field particles.
+//   - what needs GL is refused with one error naming the key that chose it, before any reference
+//     is rendered: compute.backend or compute.raster "gl", the strategies that draw with GL (sky
+//     injection's columns, subsurface rendering's RSM: by their table and type), radiosity's
+//     hemicube (indirect.form_factors), light-field particles; radiosity with ray-cast form
+//     factors runs.
 
 #include <filesystem>
 
@@ -55,27 +58,41 @@ TEST(NoGl, RunsEveryStageOnTheCpuAndGivesTheImagesOfARunWithGl) {
     EXPECT_EQ(a.pixels, b.pixels) << aov << ": the same kernels on the same inputs";
     double sum = 0.0;
     for (float v : a.pixels) sum += v;
-    if (aov == "direct" || aov == "indirect") EXPECT_GT(sum, 0.0) << aov << ": all black";
+    if (aov == "direct" || aov == "indirect") {
+      EXPECT_GT(sum, 0.0) << aov << ": all black";
+    }
   }
 }
 
 TEST(NoGl, WhatNeedsGlIsRefusedNamingIt) {
   test::TempDir dir;
   const struct {
-    std::string args, names;
+    std::string file, args, names;
   } cases[] = {
-      {" -s compute.backend='\"gl\"'", "compute.backend"},
-      {" -s compute.raster='\"gl\"'", "compute.raster"},
-      {" -s 'injection.also=[{type=\"sky_columns\"}]' -s 'sky.radiance=[0.1,0.1,0.1]'", "needs GL"},
+      {"", " -s compute.backend='\"gl\"'", "compute.backend"},
+      {"", " -s compute.raster='\"gl\"'", "compute.raster"},
+      {"", " -s 'injection.also=[{type=\"sky_columns\"}]' -s 'sky.radiance=[0.1,0.1,0.1]'"
+       " -s reference.compare=true",
+       "[injection.also[0]] type = \"sky_columns\" needs GL"},
+      {LPVLAB_SOURCE_DIR "/experiments/ablation_subsurface.toml", "",
+       "[rendering.also[0]] type = \"subsurface\" needs GL"},
+      {"", " -s indirect.method='\"radiosity\"' -s reference.compare=true", "key 'indirect.form_factors'"},
   };
   for (const auto& c : cases) {
-    const test::LpvlabResult r = test::runLpvlab("run --out out" + kSmall + kNoGl + c.args, dir.path(), dir.path());
+    const test::LpvlabResult r = test::runLpvlab("run " + c.file + " --out out" + kSmall + kNoGl + c.args,
+                                                     dir.path(), dir.path());
     EXPECT_NE(r.exitCode, 0) << c.args;
     EXPECT_EQ(r.err.rfind("lpvlab: error: "), r.err.find("lpvlab: error: ")) << "one error:\n" << r.err;
     EXPECT_NE(r.err.find(c.names), std::string::npos) << c.args << ":\n" << r.err;
     EXPECT_NE(r.err.find("none"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir.path() / "out" / "manifest.json")) << c.args;
+    EXPECT_EQ((r.out + r.err).find("spp"), std::string::npos) << "a reference rendered first:\n" << r.out;
   }
+  const test::LpvlabResult rays = test::runLpvlab(
+      "run --out rays" + kSmall + kNoGl + " -s indirect.method='\"radiosity\"' -s indirect.form_factors='\"rays\"'"
+      " -s indirect.patch_size=0.2 -s indirect.rays=64", dir.path(), dir.path());
+  EXPECT_EQ(rays.exitCode, 0) << rays.err;
+  EXPECT_EQ(manifestOf(dir.path() / "rays")["libraries"]["gl_backend"], "none");
   const test::LpvlabResult particles = test::runLpvlab(
       "run " LPVLAB_SOURCE_DIR "/experiments/particles_cornell.toml --out p" + kSmall + kNoGl, dir.path(), dir.path());
   EXPECT_NE(particles.exitCode, 0);

@@ -61,6 +61,7 @@ public:
 
   void declare(ResourceUses& uses) const override { uses.produces(kSkyLight); }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
+  std::string drawsWithGl() const override { return "its top-down depth map (raster/shadow.frag)"; }
   int maxShOrder() const override { return 3; }
 
   void prepare(const StrategySetup& setup) override {

@@ -55,6 +55,9 @@ public:
 
   int maxShOrder() const override { return 3; }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
+  std::string drawsWithGl() const override {
+    return "its translucent surfaces' RSM and mask (subsurface/rsm.frag, mask.frag)";
+  }
   void prepare(const StrategySetup& setup) override;
   void render(Frame& frame) override;
   std::size_t memoryBytes() const override;

@@ -81,7 +81,7 @@ void LightPropagationVolumes::check(const PipelineSettings& settings) const {
   // "auto" is resolved against the GL renderer when the run starts; "cpu" is checked here.
   resolveRequirements(strategies_, settings.shOrder, skyLightUses(settings.skyRadiance),
                       settings.cascades.levels,
-                      settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl);
+                      settings.backend == "cpu" ? ComputeBackend::Cpu : ComputeBackend::Gl, settings.gl);
 }
 
 bool LightPropagationVolumes::keepsStateBetweenFrames() const {
@@ -97,7 +97,7 @@ void LightPropagationVolumes::prepare(const MethodSetup& setup) {
   lightMaps_ = &setup.lightMaps;
   requirements_ = resolveRequirements(strategies_, settings_.shOrder,
                                       skyLightUses(settings_.skyRadiance),
-                                      settings_.cascades.levels, setup.backend);
+                                      settings_.cascades.levels, setup.backend, settings_.gl);
   for (const auto& [table, strategy] : strategies_.all())
     if (strategy->runsOnCpu(requirements_)) cpuStages_.insert(stageOfTable(table));
   // Every level has the grid's cell counts, so strategies size their scratch once, from `grid`.

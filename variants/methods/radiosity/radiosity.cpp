@@ -53,6 +53,7 @@ public:
     patchSize_ = p.get<float>("patch_size", 0.0f, {.min = 0.0f, .max = 1e30f});
     maxPatches_ = p.get<int>("max_patches", 200000, {.min = 1, .max = 1 << 29});
     hemicube_ = p.getChoice("form_factors", "hemicube", {"hemicube", "rays"}) == "hemicube";
+    formFactorsKey_ = p.where("form_factors");
     if (hemicube_) {
       resolution_ = p.get<int>("hemicube_resolution", 64, {.min = 2, .max = 2048});
       if (resolution_ % 2 != 0)
@@ -86,7 +87,16 @@ public:
   // Emissive surfaces are patches that shoot (area lights); no RSM.
   std::set<std::string> consumes() const override { return {std::string(raster::kEmission.name)}; }
 
+  // The hemicube is drawn by GL's rasteriser; without GL the form factors are cast by rays.
+  void check(const PipelineSettings& settings) const override {
+    if (hemicube_ && !settings.gl)
+      throw Error(formFactorsKey_ + ": \"hemicube\" draws each patch's hemicube with GL, and this "
+                  "run has none (gl.backend = \"none\", or \"auto\" found no GL context); use "
+                  "form_factors = \"rays\" or run with GL");
+  }
+
   void prepare(const MethodSetup& setup) override {
+    check(setup.settings);
     if (glm::any(glm::greaterThan(setup.settings.skyRadiance, glm::vec3(0.0f))))
       throw Error("radiosity: the sky is not a patch; radiosity runs without [sky] (remove it, or "
                   "use another method)");
@@ -354,6 +364,7 @@ private:
   int maxPatches_ = 0;
   bool hemicube_ = true;
   int resolution_ = 64, rays_ = 1024;
+  std::string formFactorsKey_;  // where form_factors was read, for messages
   SolverSettings solver_;
   int lightSamples_ = 16;
   PatchInterpolation interpolation_ = PatchInterpolation::Gouraud;
