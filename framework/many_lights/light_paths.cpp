@@ -134,7 +134,10 @@ void walkPacket(const RayScene& scene, const Emitter& emitter, const LightPathSe
   glm::vec3 flux[kPacketWidth];
   RayPacket packet;
   for (int lane = 0; lane < walks; ++lane) {
-    randoms[lane] = SampleRandom(settings.seed, std::uint64_t(firstWalk + lane), 0);
+    const std::uint64_t walk = std::uint64_t(firstWalk + lane);
+    randoms[lane] = settings.sampler == SampleSequence::Sobol
+                        ? SampleRandom(settings.seed, 0, walk, SampleSequence::Sobol)  // point `walk`
+                        : SampleRandom(settings.seed, walk, 0);                        // stream `walk`
     const Emission e = emitter.emit(randoms[lane]);
     flux[lane] = e.flux;
     if (glm::any(glm::greaterThan(e.flux, glm::vec3(0.0f))))

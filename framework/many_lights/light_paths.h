@@ -15,7 +15,10 @@
 //                P = 2 pi I * integral of the falloff over cos(theta) from cos(outer) to 1
 //   directional  uniform points on a disk across the light that covers the scene's bounds,
 //                P = E * disk area
-// Walk i draws from its own stream (seed, i), so the VPLs do not depend on the thread count.
+// Walk i draws from its own stream (seed, i), so the VPLs do not depend on the thread count; with
+// the Sobol sampler (random.h) walk i is point i of one Owen-scrambled Sobol sequence of `seed`,
+// so the walks' first choices (the light, the emitted direction, the first bounce) are stratified
+// over the walks.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +26,7 @@
 
 #include "framework/many_lights/ray_scene.h"
 #include "framework/many_lights/vpl.h"
+#include "framework/reference/random.h"
 
 namespace lpvlab {
 
@@ -32,6 +36,7 @@ struct LightPathSettings {
   int rouletteAfter = 1;       // VPLs a walk makes before Russian roulette
   int maxBounces = 64;         // the most VPLs one walk makes
   std::uint64_t seed = 1;
+  SampleSequence sampler = SampleSequence::Independent;  // [indirect] sampler
 };
 
 struct LightPathCounts {

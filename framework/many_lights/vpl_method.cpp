@@ -130,6 +130,9 @@ LightPathMethod::LightPathMethod(Params& p, VplVisibility visibility, const Impe
   paths_.rouletteAfter = p.get<int>("roulette_after", 1, {.min = 0, .max = 100000});
   paths_.maxBounces = p.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   paths_.seed = std::uint64_t(p.get<int>("seed", 1, {.min = 0}));
+  paths_.sampler = p.getChoice("sampler", "independent", {"independent", "sobol"}) == "sobol"
+                       ? SampleSequence::Sobol
+                       : SampleSequence::Independent;
   setPointSeed(paths_.seed);
 }
 
@@ -143,6 +146,7 @@ std::vector<WorkCount> LightPathMethod::sourceWork() const {
 
 nlohmann::json LightPathMethod::sourceStatistics() const {
   return {{"light_paths", paths_.paths},
+          {"sampler", samplerName(paths_.sampler)},
           {"light_path_rays", counts_.rays},
           {"emitted_flux_W", {counts_.emittedFlux.r, counts_.emittedFlux.g, counts_.emittedFlux.b}}};
 }

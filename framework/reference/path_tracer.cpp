@@ -57,6 +57,7 @@ struct PathTracer::Impl {
   Integrator integrator;
   int width, height;
   std::uint64_t seed;
+  SampleSequence sampler;
 
   Impl(const Scene& source, const Camera& view, int width, int height,
        const TracerSettings& settings)
@@ -68,7 +69,8 @@ struct PathTracer::Impl {
         integrator(embree, lights, camera, settings),
         width(width),
         height(height),
-        seed(settings.seed) {}
+        seed(settings.seed),
+        sampler(settings.sampler) {}
 };
 
 PathTracer::PathTracer(const Scene& scene, const Camera& camera, int width, int height,
@@ -116,7 +118,7 @@ std::int64_t PathTracer::render(Accumulator& acc, int count, int threads,
         const std::size_t p0 = std::size_t(y) * impl.width + x0;
         for (std::int64_t s = firstSample; s < firstSample + count; ++s) {
           for (int i = 0; i < lanes; ++i) {
-            randoms[i] = SampleRandom(impl.seed, p0 + i, std::uint64_t(s));
+            randoms[i] = SampleRandom(impl.seed, p0 + i, std::uint64_t(s), impl.sampler);
             // Box filter: a uniform position inside the pixel.
             const float px = float(x0 + i) + randoms[i].uniform();
             const float py = float(y) + randoms[i].uniform();

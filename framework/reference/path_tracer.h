@@ -35,6 +35,7 @@
 
 #include "framework/io/image.h"
 #include "framework/reference/embree_device.h"
+#include "framework/reference/random.h"
 #include "framework/scene/scene.h"
 
 namespace lpvlab {
@@ -43,6 +44,10 @@ struct TracerSettings {
   std::uint64_t seed = 1;
   int maxBounces = 64;          // hard cap on scattering events (Russian roulette ends most paths first)
   int rouletteAfter = 3;        // bounces before Russian roulette starts
+  // How each path's random numbers are made (random.h). Sobol converges faster; the per-pixel
+  // variance of its samples then overstates the mean's error (they are not independent), so the
+  // relative-error estimate and budget are conservative with it.
+  SampleSequence sampler = SampleSequence::Independent;
   glm::vec3 skyRadiance{0.0f};  // constant radiance from every unblocked direction; 0: no sky
   // Embree's instruction set and query width. They change no expectation, only speed and the
   // rounding of hit points (so bit-identical images need the same instruction set).

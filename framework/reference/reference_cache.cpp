@@ -128,6 +128,7 @@ std::string keyFromSceneHash(const std::string& sceneContentHash, const Camera& 
   for (const glm::vec3& v : {camera.position, camera.forward, camera.up}) h.value(v.x).value(v.y).value(v.z);
   h.value(camera.verticalFov).value(r.width).value(r.height);
   h.value(r.tracer.seed).value(r.tracer.maxBounces).value(r.tracer.rouletteAfter);
+  if (r.tracer.sampler == SampleSequence::Sobol) h.text("sampler=sobol");  // independent: as before
   h.value(r.tracer.skyRadiance.x).value(r.tracer.skyRadiance.y).value(r.tracer.skyRadiance.z);
   return h.hex();
 }
@@ -293,6 +294,7 @@ nlohmann::json referenceManifest(const Reference& ref, const Scene& scene, const
       {"tracer",
        {{"version", kTracerVersion},
         {"seed", request.tracer.seed},
+        {"sampler", samplerName(request.tracer.sampler)},
         {"max_bounces", request.tracer.maxBounces},
         {"roulette_after", request.tracer.rouletteAfter},
         {"sky_radiance",
@@ -301,6 +303,13 @@ nlohmann::json referenceManifest(const Reference& ref, const Scene& scene, const
       {"samples_per_pixel", ref.samples},
       {"seconds_total", ref.seconds},
       {"relative_error", ref.relativeError},
+      {"relative_error_estimate",
+       request.tracer.sampler == SampleSequence::Sobol
+           ? "per-pixel sample variance / samples, as for independent samples: usually an "
+             "overestimate with scrambled Sobol samples, which are not independent (their variance "
+             "is at most e = 2.72 times the independent one's, Owen 1997, and far below it on smooth "
+             "light)"
+           : "per-pixel sample variance / samples (independent samples)"},
       {"last_session",
        {{"seconds", session.seconds},
         {"paths", session.paths},

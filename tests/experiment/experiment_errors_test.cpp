@@ -151,6 +151,19 @@ TEST_F(ExperimentErrors, OutOfRangeValuesAreErrorsNotClamped) {
   EXPECT_TRUE(contains(message, "grid.cells"));
 }
 
+TEST_F(ExperimentErrors, SamplersAreNamedChoices) {
+  const std::string tracer = write("sampler.toml", "[reference]\nsampler = \"halton\"\n");
+  std::string message = errorOf(tracer);
+  EXPECT_TRUE(contains(message, tracer + ":2"));
+  EXPECT_TRUE(contains(message, "reference.sampler"));
+  EXPECT_TRUE(contains(message, "sobol"));  // the valid choices are listed
+  const std::string walks =
+      write("walks.toml", "[indirect]\nmethod = \"instant_radiosity\"\nsampler = \"owen\"\n");
+  message = errorOf(walks);
+  EXPECT_TRUE(contains(message, walks + ":3"));
+  EXPECT_TRUE(contains(message, "indirect.sampler"));
+}
+
 TEST_F(ExperimentErrors, TracerInstructionSetAndPacketWidthAreChecked) {
   const std::string isa = write("isa.toml", "[reference]\nisa = \"avx9\"\n");
   std::string message = errorOf(isa);

@@ -55,6 +55,9 @@ TEST_F(ReferenceCache, KeyCoversWhatDeterminesThePixelsAndNotTheStoppingRule) {
   r = request_;
   r.tracer.skyRadiance = glm::vec3(0.1f);
   EXPECT_NE(referenceKey(scene_, camera_, r), key);
+  r = request_;
+  r.tracer.sampler = SampleSequence::Sobol;
+  EXPECT_NE(referenceKey(scene_, camera_, r), key);
   Camera moved = camera_;
   moved.position.x += 0.01f;
   EXPECT_NE(referenceKey(scene_, moved, request_), key);
