@@ -7,6 +7,7 @@ find_package(assimp CONFIG REQUIRED)      # glTF and OBJ/MTL scene loading
 find_package(tomlplusplus REQUIRED)       # experiment files
 find_package(nlohmann_json REQUIRED)      # run manifests
 find_package(CLI11 REQUIRED)              # command line
+find_package(spdlog REQUIRED)             # messages on stderr by level (-q, -v)
 find_package(GTest REQUIRED)              # tests
 find_package(embree 3 CONFIG REQUIRED)    # ray queries of the reference path tracer
 find_package(Ceres 2.1 REQUIRED)          # `lpvlab fit`: nonlinear least squares, covariance

@@ -22,6 +22,7 @@ packages=(
   libtomlplusplus-dev              # experiment files
   nlohmann-json3-dev               # manifests
   libcli11-dev                     # command line
+  libspdlog-dev                    # messages on stderr by level (-q, -v)
   libgtest-dev                     # tests
   ffmpeg                           # the H.264 video of an animated run (the ffmpeg program)
   python3-numpy python3-pandas python3-matplotlib python3-openimageio  # analysis/ and reports

@@ -15,10 +15,12 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
+#include "framework/core/log.h"
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/experiment/run_outputs.h"
@@ -157,7 +159,7 @@ void writeDifferences(const std::string& dir,
                                {"lpvlab:reference", out["reference"].get<std::string>()}});
   out["difference_exr"] = path;
   out["replaced_an_earlier_difference_exr"] = replaced;
-  if (replaced) std::cerr << "lpvlab: warning: " << path << ": replaced an earlier comparison's differences\n";
+  if (replaced) log::warning(path + ": replaced an earlier comparison's differences");
 }
 
 void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs) {
@@ -249,9 +251,12 @@ int compareCommand(const Options& options) {
       }
     }
   }
-  for (const nlohmann::json& e : exceeded)
-    std::cerr << "lpvlab: compare: " << e["aov"].get<std::string>() << " " << e["figure"].get<std::string>()
-              << " " << e["value"].get<double>() << " exceeds --threshold " << e["bound"].get<double>() << "\n";
+  for (const nlohmann::json& e : exceeded) {
+    std::ostringstream line;
+    line << "compare: " << e["aov"].get<std::string>() << " " << e["figure"].get<std::string>() << " "
+         << e["value"].get<double>() << " exceeds --threshold " << e["bound"].get<double>();
+    log::warning(line.str());
+  }
   return exceeded.empty() ? 0 : kOverThreshold;
 }
 

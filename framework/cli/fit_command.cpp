@@ -10,6 +10,7 @@
 #include <iostream>
 #include <optional>
 
+#include "framework/core/log.h"
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
 #include "framework/core/progress.h"
@@ -62,14 +63,14 @@ std::optional<FitProgress> resumedProgress(const std::string& progressPath, cons
   if (resume && !resume->log.empty()) {
     const int stopped = resume->log.back().iteration;
     resume = resumePoint(*resume);  // after the last accepted step (fit_problem.h)
-    std::cerr << "lpvlab: fit: resuming after iteration " << resume->log.back().iteration
-              << (resume->log.back().iteration < stopped
-                      ? " (the last accepted step; the rejected ones after it are done again)"
-                      : "")
-              << " from " << progressPath << " (delete it to start over)\n";
+    log::info("fit: resuming after iteration " + std::to_string(resume->log.back().iteration) +
+              (resume->log.back().iteration < stopped
+                   ? " (the last accepted step; the rejected ones after it are done again)"
+                   : "") +
+              " from " + progressPath + " (delete it to start over)");
   } else if (otherFit) {
-    std::cerr << "lpvlab: fit: " << progressPath << " is another fit's progress (the file or its "
-              << "overrides changed): starting over\n";
+    log::info("fit: " + progressPath + " is another fit's progress (the file or its overrides "
+              "changed): starting over");
   }
   return resume;
 }
@@ -120,13 +121,13 @@ int fitCommand(const Options& options) {
     // where every stage of the fit's frames can run on the CPU (else its views are refused,
     // naming what needs GL).
     if (backend != "auto") throw;
-    std::cerr << "lpvlab: no GL context could be made (" << error.what()
-              << "): every stage runs on the CPU (gl.backend = \"none\")\n";
+    log::info("no GL context could be made (" + std::string(error.what()) +
+              "): every stage runs on the CPU (gl.backend = \"none\")");
     context = GlContext::create("none");
   }
-  std::cerr << "lpvlab: fit " << spec.file << ": " << spec.parameters.size() << " parameters, "
-            << spec.views.size() << " views fitted, " << spec.heldOut.size() << " held out, on "
-            << context->renderer() << "\n";
+  log::info("fit " + spec.file + ": " + std::to_string(spec.parameters.size()) + " parameters, " +
+            std::to_string(spec.views.size()) + " views fitted, " + std::to_string(spec.heldOut.size()) +
+            " held out, on " + context->renderer());
   SceneCache scenes;
   std::vector<FitView> views = makeFitViews(spec, scenes);
   FitEvaluator evaluator(spec, std::move(views), std::move(scenes));

@@ -7,6 +7,7 @@
 // command or option, a missing argument) is one such line too, with exit code 2.
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -15,6 +16,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/completion.h"
 #include "framework/core/error.h"
+#include "framework/core/log.h"
 #include "framework/io/provenance.h"
 
 namespace lpvlab {
@@ -226,11 +228,30 @@ int usageError(CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
     known = known || (argc > 1 && sub->get_name() == argv[1]);
   }
   if (argc > 1 && argv[1][0] != '-' && !known)
-    std::cerr << "lpvlab: error: unknown command '" << echoed(argv[1])
-              << "' (commands: " << commands << ")\n";
+    log::error("unknown command '" + echoed(argv[1]) + "' (commands: " + commands + ")");
   else
-    std::cerr << "lpvlab: error: " << e.what() << " (lpvlab --help lists the commands)\n";
+    log::error(std::string(e.what()) + " (lpvlab --help lists the commands)");
   return 2;
+}
+
+// -q / -v (anywhere on the line: every command inherits them), else LPVLAB_LOG_LEVEL; the level
+// is exported so that the processes a command starts (a sweep's runs) print as it does.
+void addVerbosity(CLI::App& app, bool& quiet, bool& verbose) {
+  CLI::Option* q = app.add_flag("-q,--quiet", quiet, "Print only warnings and errors on stderr (no notes or progress)");
+  CLI::Option* v = app.add_flag("-v,--verbose", verbose, "Also print how a run is set up (paths, choices, cache decisions)");
+  q->excludes(v);
+  q->configurable(false);
+  v->configurable(false);
+}
+
+void applyVerbosity(bool quiet, bool verbose) {
+  log::Level level = log::Level::Info;
+  if (quiet) level = log::Level::Warning;
+  else if (verbose) level = log::Level::Debug;
+  else if (const char* name = std::getenv("LPVLAB_LOG_LEVEL"); name && !log::levelFromName(name, level))
+    throw Error(std::string("LPVLAB_LOG_LEVEL: '") + name + "' is not quiet, normal or verbose");
+  log::setLevel(level);
+  ::setenv("LPVLAB_LOG_LEVEL", log::levelName(level), 1);
 }
 
 }  // namespace
@@ -244,6 +265,9 @@ int main(int argc, char** argv) {
     return std::string("lpvlab ") + LPVLAB_VERSION + " (git " + lpvlab::lpvlabRevision() + ")";
   });
   lpvlab::cli::Options options;
+  bool quiet = false, verbose = false;
+  lpvlab::addVerbosity(app, quiet, verbose);
+  app.fallthrough();  // -q and -v after the command's name too
   // In the order --help lists them.
   const std::vector<lpvlab::Command> commands = {
       lpvlab::addRun(app, options),       lpvlab::addBench(app, options),
@@ -258,11 +282,12 @@ int main(int argc, char** argv) {
     return lpvlab::usageError(app, e, argc, argv);
   }
   try {
+    lpvlab::applyVerbosity(quiet, verbose);
     for (const lpvlab::Command& command : commands)
       if (command.app->parsed()) return command.action();
     return 2;  // unreachable: require_subcommand(1)
   } catch (const std::exception& e) {
-    std::cerr << "lpvlab: error: " << e.what() << "\n";
+    lpvlab::log::error(e.what());
     return 1;
   }
 }

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "framework/core/log.h"
 #include "framework/core/error.h"
 
 #include "framework/cli/commands.h"
@@ -77,20 +78,24 @@ int runCommand(const Options& options) {
   requireOutputDirectory(out, options.out.empty() ? "output directory" : "--out");
   replaceFinishedRun(out, options.force, options.out.empty() ? "output directory" : "--out");
   const RunContext run = openRunContext(experiment);
-  if (!run.note.empty()) std::cerr << "lpvlab: " << run.note << "\n";
+  if (!run.note.empty()) log::info(run.note);
   const auto& context = run.context;
   const Animation& animation = experiment.animation;
-  std::cerr << "lpvlab: " << experiment.name << " on " << context->renderer() << " ("
-            << context->backend() << "), " << experiment.warmupFrames << " warm-up + ";
+  std::ostringstream starting;
+  starting << experiment.name << " on " << context->renderer() << " (" << context->backend() << "), "
+           << experiment.warmupFrames << " warm-up + ";
   if (animation.animated())
-    std::cerr << "a sequence of " << animation.frames << " frames at " << animation.fps << " fps\n";
+    starting << "a sequence of " << animation.frames << " frames at " << animation.fps << " fps";
   else
-    std::cerr << experiment.repeats << " timed frames\n";
+    starting << experiment.repeats << " timed frames";
+  log::info(starting.str());
+  log::debug("experiment " + (experiment.file.empty() ? std::string("(built-in default)") : experiment.file) +
+             ", scene " + experiment.scene.source + ", output " + out);
   const nlohmann::json manifest = runExperiment(experiment, *context, out);
-  std::cerr << computeLine(manifest["compute"]) << "\n";
+  log::info(computeLine(manifest["compute"]));
+  if (manifest["compute"].contains("raster")) log::debug("raster passes: " + manifest["compute"]["raster"].dump());
   if (manifest.contains("warnings"))  // also in the manifest, summary.csv and the report
-    for (const auto& warning : manifest["warnings"])
-      std::cerr << "lpvlab: warning: " << warning.get<std::string>() << "\n";
+    for (const auto& warning : manifest["warnings"]) log::warning(warning.get<std::string>());
   // Each stage's time by its own clock, named on its row: a CPU stage's is not a GPU time.
   const auto& timing = manifest["timing"];
   const std::map<std::string, std::string> clock = timing.value("clock", std::map<std::string, std::string>{});

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "framework/core/log.h"
 #include "framework/cli/commands.h"
 #include "framework/cli/slurm_script.h"
 #include "framework/core/error.h"
@@ -118,19 +119,17 @@ void resumeOnlyTheSameSweep(const fs::path& dir, const std::string& hash, const 
   for (const char* name : {"configs", "logs", "report"}) fs::remove_all(dir / name);
   for (const char* name : {"summary.csv", "sweep.json", "sweep.slurm", "references.slurm", "submit.sh"})
     fs::remove(dir / name);
-  std::cerr << "lpvlab: sweep: --force: removed the sweep that was in " << dir.string() << "\n";
+  log::info("sweep: --force: removed the sweep that was in " + dir.string());
 }
 
 // What a summary left out, by name and why: every directory that gave no row.
 void reportSkipped(const std::string& dir, const SummaryResult& summary) {
   const auto at = [&](const std::string& id) { return (fs::path(dir) / id).string(); };
   for (const std::string& id : summary.incomplete)
-    std::cerr << "lpvlab: " << at(id) << ": incomplete (no manifest.json), skipped\n";
-  for (const auto& [id, why] : summary.dropped)
-    std::cerr << "lpvlab: warning: " << at(id) << ": no rows: " << why << "\n";
+    log::info(at(id) + ": incomplete (no manifest.json), skipped");
+  for (const auto& [id, why] : summary.dropped) log::warning(at(id) + ": no rows: " + why);
   for (const std::string& id : summary.foreign)
-    std::cerr << "lpvlab: warning: " << at(id) << ": not a configuration of this sweep "
-              << "(sweep.json), skipped\n";
+    log::warning(at(id) + ": not a configuration of this sweep (sweep.json), skipped");
 }
 
 // DIR/configs/<id>.toml for every configuration and DIR/sweep.json indexing them: what the
@@ -208,9 +207,8 @@ bool finished(const fs::path& dir, const SweepConfiguration& c, int status) {
     fs::remove(runDir / "error.log");
     return true;
   }
-  std::cerr << "\nlpvlab: configuration " << c.id << " (" << c.name << ") failed: "
-            << lastLine(runDir / "error.log") << "\n  (see " << (runDir / "error.log").string()
-            << ")\n";
+  log::warning("configuration " + c.id + " (" + c.name + ") failed: " + lastLine(runDir / "error.log") +
+               "\n  (see " + (runDir / "error.log").string() + ")");
   return false;
 }
 
@@ -289,9 +287,9 @@ int sweepCommand(const Options& given) {
   std::vector<const SweepConfiguration*> pending;
   for (const SweepConfiguration& c : configs)
     if (!fs::exists(dir / c.id / "manifest.json")) pending.push_back(&c);
-  std::cerr << "lpvlab: sweep " << stem << ": " << configs.size() << " configurations, "
-            << configs.size() - pending.size() << " complete, " << pending.size() << " to run, "
-            << options.jobs << " at a time, into " << dir.string() << "\n";
+  log::info("sweep " + stem + ": " + std::to_string(configs.size()) + " configurations, " +
+            std::to_string(configs.size() - pending.size()) + " complete, " + std::to_string(pending.size()) +
+            " to run, " + std::to_string(options.jobs) + " at a time, into " + dir.string());
   const std::vector<const SweepConfiguration*> failed = runPending(dir, exe, pending, options.jobs);
 
   const SummaryResult summary = writeSweepSummary(dir.string());
@@ -299,10 +297,11 @@ int sweepCommand(const Options& given) {
   std::cout << "wrote " << (dir / "summary.csv").string() << ": " << summary.rows << " rows from "
             << summary.complete.size() << " runs\n";
   if (!failed.empty()) {
-    std::cerr << "lpvlab: error: " << failed.size() << " of " << configs.size()
-              << " configurations failed:\n";
+    std::string which;
     for (const SweepConfiguration* c : failed)
-      std::cerr << "  " << c->id << " (" << c->name << "): " << (dir / c->id / "error.log").string() << "\n";
+      which += "\n  " + c->id + " (" + c->name + "): " + (dir / c->id / "error.log").string();
+    log::error(std::to_string(failed.size()) + " of " + std::to_string(configs.size()) +
+               " configurations failed:" + which);
     return 1;
   }
   return 0;

@@ -1,5 +1,7 @@
 #include "framework/core/progress.h"
 
+#include "framework/core/log.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,6 +36,7 @@ std::string ProgressBar::formatSeconds(double seconds) {
 
 void ProgressBar::update(double fraction, const std::string& detail,
                          std::optional<double> etaSeconds) {
+  if (!log::shows(log::Level::Info)) return;  // -q: no progress
   fraction = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0);
   const double elapsed = secondsSince(start_);
   if (!terminal_ && secondsSince(lastPrint_) < 10.0) return;
@@ -52,6 +55,7 @@ void ProgressBar::update(double fraction, const std::string& detail,
 }
 
 void ProgressBar::finish(const std::string& detail) {
+  if (!log::shows(log::Level::Info)) return;
   std::cerr << (terminal_ ? "\r" : "") << label_ << " done: " << detail << " in "
             << formatSeconds(secondsSince(start_)) << (terminal_ ? "\033[K\n" : "\n");
 }

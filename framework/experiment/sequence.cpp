@@ -1,3 +1,4 @@
+#include "framework/core/log.h"
 #include "framework/experiment/sequence.h"
 
 #include <unistd.h>
@@ -352,8 +353,8 @@ int resumeAt(const Experiment& experiment, const fs::path& dir, const std::strin
   removeLeftoverTemporaries((dir / "frames").string());
   removeLeftoverTemporaries(dir.string());
   if (first > 0)
-    std::cerr << "lpvlab: " << experiment.name << ": frames 0-" << first - 1
-              << " are done; continuing at frame " << first << "\n";
+    log::info(experiment.name + ": frames 0-" + std::to_string(first - 1) +
+              " are done; continuing at frame " + std::to_string(first));
   return first;
 }
 
@@ -385,8 +386,8 @@ nlohmann::json runSequence(Experiment& experiment, const GlContext& context,
   const bool replay = first > 0 && keepsStateBetweenFrames(experiment);
   const int start = replay ? 0 : first;
   if (replay)
-    std::cerr << "lpvlab: " << experiment.name << ": rendering frames 0-" << first - 1
-              << " again (not written): the composition keeps state between frames\n";
+    log::info(experiment.name + ": rendering frames 0-" + std::to_string(first - 1) +
+              " again (not written): the composition keeps state between frames");
   ShaderCompiler shaders;
   setSceneTime(experiment, animation.frameTime(start));
   ExperimentRenderer renderer(experiment, animation.frameTime(start), shaders);

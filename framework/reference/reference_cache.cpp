@@ -1,3 +1,4 @@
+#include "framework/core/log.h"
 #include "framework/reference/reference_cache.h"
 
 #include <fcntl.h>
@@ -40,7 +41,7 @@ class EntryLock {
       throw Error(path + ": cannot open the reference's lock file: " + std::strerror(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
     if (errno != EWOULDBLOCK) fail(path);  // no locks here (e.g. Lustre without -o flock)
-    std::cerr << "lpvlab: reference " << key << ": another process is rendering it; waiting\n";
+    log::info("reference " + key + ": another process is rendering it; waiting");
     while (::flock(fd_, LOCK_EX) != 0)
       if (errno != EINTR) fail(path);
   }
@@ -345,9 +346,13 @@ Reference ensureReference(const Scene& scene, const Camera& camera, const Refere
   Accumulator acc = savedAccumulator(statePath, request, spent);
   const bool complete = fs::exists(dir / "images.exr") && fs::exists(dir / "manifest.json");
   ref.reused = complete && targetMet(request.target, acc.samples, spent, acc.meanRelativeError());
+  log::debug("reference " + ref.key + " in " + ref.directory + ": " +
+             (ref.reused ? "reused (" + std::to_string(acc.samples) + " spp meet the budget)"
+                         : "rendering (" + std::to_string(acc.samples) + " spp saved), sampler " +
+                               samplerName(request.tracer.sampler)));
   if (!ref.reused && acc.samples > 0 && request.showProgress)
-    std::cerr << "lpvlab: reference " << ref.key << ": continuing from " << acc.samples
-              << " saved samples per pixel\n";
+    log::info("reference " + ref.key + ": continuing from " + std::to_string(acc.samples) +
+              " saved samples per pixel");
   TracingSession session;  // what this session's samples were traced with
   if (!ref.reused) session = traceUntilTarget(scene, camera, request, ref.key, statePath, acc, spent);
 

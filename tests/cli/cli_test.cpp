@@ -139,6 +139,44 @@ TEST_F(Cli, RunWritesImagesAndACompleteManifest) {
   EXPECT_NEAR(grid->get<double>(), rsm->get<double>(), 1e-4 * rsm->get<double>());
 }
 
+// -q keeps stderr to warnings and errors, -v adds how the run was set up; stdout (the results)
+// is the same at every level; LPVLAB_LOG_LEVEL sets the level where no flag does, and a bad one
+// is named.
+TEST_F(Cli, QuietAndVerboseSetWhatStderrShows) {
+  const std::string small = " -s output.width=32 -s output.height=32 -s timing.warmup=0 -s timing.repeats=1"
+                            " -s grid.resolution=8 -s propagation.iterations=4 -s reference.compare=true"
+                            " -s reference.samples=2 --force --out " + quoted((dir_.path() / "run").string());
+  const Result normal = runLpvlab("run" + small, work(), logs());
+  ASSERT_EQ(normal.exitCode, 0) << normal.err;
+  EXPECT_NE(normal.err.find("lpvlab: cornell_box on "), std::string::npos) << normal.err;
+  EXPECT_EQ(normal.err.find(": reused ("), std::string::npos) << "a debug line at the default level:\n" << normal.err;
+
+  const Result quiet = runLpvlab("run -q" + small, work(), logs());
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "") << "-q printed notes or progress";
+  EXPECT_NE(quiet.out.find("propagation"), std::string::npos) << "-q hid the results:\n" << quiet.out;
+  EXPECT_EQ(lines(quiet.out).size(), lines(normal.out).size());
+
+  const Result verbose = runLpvlab("--verbose run" + small, work(), logs());
+  ASSERT_EQ(verbose.exitCode, 0) << verbose.err;
+  EXPECT_NE(verbose.err.find("lpvlab: reference "), std::string::npos) << verbose.err;
+  EXPECT_NE(verbose.err.find(": reused ("), std::string::npos) << "the cache's decision:\n" << verbose.err;
+  EXPECT_NE(verbose.err.find("lpvlab: raster passes: "), std::string::npos) << verbose.err;
+
+  const Result byEnvironment = runLpvlab("run" + small, work(), logs(), "LPVLAB_LOG_LEVEL=quiet");
+  EXPECT_EQ(byEnvironment.err, "");
+  // Errors show at every level, as one line.
+  const Result failing = runLpvlab("run -q -s grid.resolution=0", work(), logs());
+  EXPECT_NE(failing.exitCode, 0);
+  EXPECT_EQ(failing.err.rfind("lpvlab: error: ", 0), 0u) << failing.err;
+  EXPECT_NE(failing.err.find("grid.resolution"), std::string::npos) << failing.err;
+  for (const char* bad : {"run -q -v", "--quiet list --verbose"})
+    EXPECT_NE(expectOneErrorLine(bad).find("excludes"), std::string::npos) << bad;
+  const Result badLevel = runLpvlab("list", work(), logs(), "LPVLAB_LOG_LEVEL=loud");
+  EXPECT_NE(badLevel.exitCode, 0);
+  EXPECT_NE(badLevel.err.find("LPVLAB_LOG_LEVEL: 'loud'"), std::string::npos) << badLevel.err;
+}
+
 TEST_F(Cli, MissingExperimentFileIsOneErrorLineAndNoOutput) {
   const std::string err = expectOneErrorLine("run nonexistent.toml");
   EXPECT_NE(err.find("nonexistent.toml"), std::string::npos) << err;

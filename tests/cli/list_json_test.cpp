@@ -35,10 +35,17 @@ TEST(ListJson, IsTheTextListsCatalogueWithDefaultsStagesAndResources) {
   EXPECT_TRUE(named.count("propagation/standard") && named.count("propagation/directed") &&
               named.count("occlusion/geometry_volume") && named.count("rendering/trilinear"));
   for (const nlohmann::json& s : list.at("strategies")) {
-    if (s.at("name") == "standard") EXPECT_EQ(s.at("parameters").at("iterations"), 32);
-    if (s.at("name") == "directed") EXPECT_EQ(s.at("parameters").at("region_angle_deg"), 10);
-    if (s.at("name") == "geometry_volume")
+    if (s.at("name") == "standard") {
+      EXPECT_EQ(s.at("parameters").at("iterations"), 32);
+    }
+    if (s.at("name") == "directed") {
+      EXPECT_EQ(s.at("parameters").at("region_angle_deg"), 10);
+    }
+    if (s.at("name") == "geometry_volume") {
       EXPECT_NE(s.at("resources").at("produces").dump().find("geometry_volume"), std::string::npos);
+    }
+    // Whether a run without GL can use it (no CPU kernel missing, nothing drawn with GL).
+    EXPECT_EQ(s.at("without_gl"), s.at("name") != "sky_columns" && s.at("name") != "subsurface") << s.dump();
   }
   bool radiosity = false, lpv = false;
   for (const nlohmann::json& m : list.at("methods")) {
