@@ -17,7 +17,7 @@ try:
 except ImportError as missing:  # a Python without the analysis's packages (a bundle's host, say)
     print(f"lpvlab: error: report: {sys.executable} lacks the Python package "
           f"'{missing.name}' that the report needs (Debian: scripts/install-deps.sh; elsewhere: "
-          f"pip install numpy pandas matplotlib; or set LPVLAB_PYTHON to a Python that has them)",
+          f"pip install numpy pandas matplotlib jinja2; or set LPVLAB_PYTHON to a Python that has them)",
           file=sys.stderr)
     sys.exit(2)
 

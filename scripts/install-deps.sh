@@ -26,6 +26,7 @@ packages=(
   libgtest-dev                     # tests
   ffmpeg                           # the H.264 video of an animated run (the ffmpeg program)
   python3-numpy python3-pandas python3-matplotlib python3-openimageio  # analysis/ and reports
+  python3-jinja2                   # the report's HTML page (analysis/lpvlab_analysis/templates)
 )
 test_packages=(
   slurm-wlm munge                  # tests/cluster: a single-node Slurm cluster runs an emitted sweep

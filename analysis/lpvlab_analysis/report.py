@@ -1,6 +1,9 @@
 """Build <out>/index.html for a sweep directory.
 
-The page is self-contained HTML+CSS; images are PNG files referenced by
+The page comes from the Jinja2 template templates/report.html.j2 (autoescaped), filled with the
+data this module gathers; the sections' own modules (tables.py, equal_time.py, sections.py's
+parts, sequences.py) still hand it HTML fragments, marked safe. It is self-contained HTML+CSS;
+images are PNG files referenced by
 relative paths (plots and tone-mapped images in <out>/img/, error maps and
 combined.png linked from the run directories). Sections: sweep overview,
 speed/accuracy plot with Pareto front, ablation table, each configuration against the
@@ -17,11 +20,12 @@ Errors the user can fix (missing directory, missing/empty summary.csv)
 raise summary.SummaryError with a message naming the file.
 """
 import datetime
-import html
 import json
 import os
 import sys
 
+import jinja2
+import markupsafe
 import numpy as np
 import pandas as pd
 
@@ -189,21 +193,14 @@ def _config_images(agg, sweep_dir, out_dir, use_exr):
 
 
 def _figures(trio, flips):
-    """The <figure>s of a configuration's images. With `flips` (a tone-mapped reference and result
-    of the same exposure, trio[0] and trio[1]), a click on the result shows the reference in its
-    place and back (IMAGE_CONTROLS_JS); a double click on any image zooms it 4x with its pixels
-    drawn as squares."""
+    """The figures of a configuration's images (macros.html.j2's `figure`). With `flips` (a
+    tone-mapped reference and result of the same exposure, trio[0] and trio[1]), a click on the
+    result shows the reference in its place and back (IMAGE_CONTROLS_JS); a double click on any
+    image zooms it 4x with its pixels drawn as squares."""
     figs = []
     for k, (cap, src) in enumerate(trio):
-        if not src:
-            inner = "<p class='note'>(not available)</p>"
-        elif flips and k == 1:
-            inner = (f"<img class='flip' src='{html.escape(src)}' alt='{html.escape(cap)}' "
-                     f"data-flip='{html.escape(trio[0][1])}' data-flip-caption='{html.escape(trio[0][0])}' "
-                     "title='click: the reference in its place; double click: zoom'>")
-        else:
-            inner = f"<img src='{html.escape(src)}' alt='{html.escape(cap)}' title='double click: zoom'>"
-        figs.append(f"<figure>{inner}<figcaption>{html.escape(cap)}</figcaption></figure>")
+        flip = {"src": trio[0][1], "caption": trio[0][0]} if flips and k == 1 and src else None
+        figs.append({"caption": cap, "src": src, "flip": flip})
     return figs
 
 
@@ -224,70 +221,55 @@ def _calibrated_text(row, gpu, stage):
 
 def _gpu_estimate_section(agg, gpus):
     """Per configuration and counted stage: the time measured here and, per GPU, the roofline
-    bound and the calibrated estimate, each labelled (G.with_estimates)."""
+    bound and the calibrated estimate, each labelled (G.with_estimates). The template's data, and
+    the same as Markdown; (None, "") without counted stages."""
     stages = G.counted_stages(agg)
     if not stages:
-        return [], ""
+        return None, ""
     est = G.with_estimates(agg, gpus)
-    head = "".join(f"<th>{html.escape(g.name)}: roofline bound</th><th>{html.escape(g.name)}: calibrated "
-                   f"(range)</th>" for g in gpus)
     md_head = ("| configuration | stage | measured here (ms) | "
                + " | ".join(f"{g.name} roofline bound (ms) | {g.name} calibrated (range) (ms)" for g in gpus) + " |")
     md = [md_head, "|" + "---|" * (3 + 2 * len(gpus))]
-    h = [f"<table><thead><tr><th>configuration</th><th>stage</th><th>measured here (ms)</th>{head}</tr></thead><tbody>"]
+    rows = []
     for _, row in est.iterrows():
         for stage in stages:
             measured = row.get(S.time_col(stage), float("nan"))
             pairs = [(tables.fmt(row[f"{G.PREFIX}{g.key}.{stage}"]), _calibrated_text(row, g, stage)) for g in gpus]
-            cells = "".join(f"<td class='num'>{b}</td><td class='num'>{html.escape(c)}</td>" for b, c in pairs)
-            h.append(f"<tr><td>{html.escape(str(row['config_name']))}</td><td>{html.escape(stage)}</td>"
-                     f"<td class='num'>{tables.fmt(measured)}</td>{cells}</tr>")
+            rows.append({"configuration": str(row["config_name"]), "stage": stage,
+                         "measured": tables.fmt(measured), "cells": pairs})
             md.append(f"| {row['config_name']} | {stage} | {tables.fmt(measured)} | "
                       + " | ".join(f"{b} | {c}" for b, c in pairs) + " |")
-    h.append("</tbody></table>")
     note = ("Roofline bound: the fastest the counted work could run. Calibrated: the bound divided by "
             "the efficiency measured for the stage's kernel family (median over the measurements, range "
             "over them); * borrowed from the same chip (calibrate_like), † the range over every measured "
             "GPU, — no measurement of the family. Measurements: gpus.toml.")
-    h.append(f"<p class='note'>{html.escape(note)}</p>")
     md.append("")
     md.append(note)
-    return h, "\n".join(md) + "\n"
+    return {"gpus": [g.name for g in gpus], "rows": rows, "note": note}, "\n".join(md) + "\n"
 
 
-def _thesis_estimate_table(rows):
-    """The estimate on the thesis's GPUs beside its measured tables (G.thesis_comparison)."""
-    if not rows:
-        return []
-    h = ["<h3>The GPU estimate against the thesis's measurements</h3>",
-         "<p class='note'>The GL kernels' counts per unit from this sweep, at the thesis's configuration "
-         "(32<sup>3</sup> cells in 4 cascade levels; one RSM tile of the given side per level), on the GPU "
-         "the thesis measured with (R9 Fury: its &ldquo;Intel&rdquo; setup; GTX 960: &ldquo;AMD&rdquo;), "
-         "against its compute-shader column. Ratio = thesis / estimate: how far the roofline bound is "
-         "below what the card did. The increment (propagation: per step, (t(64) &minus; t(1)) / 63; "
-         "injection: t(1024<sup>2</sup>) &minus; t(512<sup>2</sup>)) leaves fixed costs out.</p>",
-         "<table><thead><tr><th>table</th><th>lpvlab variant</th><th>GPU (thesis column)</th><th>x</th>"
-         "<th>thesis ms</th><th>estimate ms</th><th>ratio</th></tr></thead><tbody>"]
+def _thesis_estimate_rows(rows):
+    """The estimate on the thesis's GPUs beside its measured tables (G.thesis_comparison), as the
+    template's rows: each measured x, then the increment in bold."""
+    out = []
     for r in rows:
-        name = html.escape(r["variant"] + (f" ({r['method']})" if r["method"] else ""))
+        name = r["variant"] + (f" ({r['method']})" if r["method"] else "")
         for i, x in enumerate(r["x"]):
-            h.append(f"<tr><td>{r['table']}</td><td>{name}</td>"
-                     f"<td>{html.escape(r['gpu'])} ({html.escape(r['thesis_column'])})</td><td class='num'>{x:g}</td>"
-                     f"<td class='num'>{tables.fmt(r['thesis_ms'][i])}</td>"
-                     f"<td class='num'>{tables.fmt(r['estimate_ms'][i])}</td>"
-                     f"<td class='num'>{tables.fmt(r['ratio'][i])}</td></tr>")
+            out.append({"table": r["table"], "variant": name, "gpu": f"{r['gpu']} ({r['thesis_column']})",
+                        "x": f"{x:g}", "thesis": tables.fmt(r["thesis_ms"][i]),
+                        "estimate": tables.fmt(r["estimate_ms"][i]), "ratio": tables.fmt(r["ratio"][i]),
+                        "bold": False})
         ratio = r["thesis_slope_ms"] / r["estimate_slope_ms"] if r["estimate_slope_ms"] > 0 else float("nan")
-        h.append(f"<tr style='font-weight:bold'><td>{r['table']}</td><td>{name}</td>"
-                 f"<td>{html.escape(r['gpu'])}</td><td>increment</td>"
-                 f"<td class='num'>{tables.fmt(r['thesis_slope_ms'])}</td>"
-                 f"<td class='num'>{tables.fmt(r['estimate_slope_ms'])}</td>"
-                 f"<td class='num'>{tables.fmt(ratio)}</td></tr>")
-    h.append("</tbody></table>")
-    return ["\n".join(h)]
+        out.append({"table": r["table"], "variant": name, "gpu": r["gpu"], "x": "increment",
+                    "thesis": tables.fmt(r["thesis_slope_ms"]), "estimate": tables.fmt(r["estimate_slope_ms"]),
+                    "ratio": tables.fmt(ratio), "bold": True})
+    return out
 
 
 def _thesis_section(agg, img_dir, out_dir):
-    parts = []
+    """Per thesis table whose parameter this sweep varies: its plot and its series (the thesis's
+    and lpvlab's), each value with its normalised one in brackets."""
+    trends = []
     for tab, rows in T.applicable_tables(agg):
         measured = T.measured_series(tab, rows)
         if not measured:
@@ -296,26 +278,20 @@ def _thesis_section(agg, img_dir, out_dir):
         path, x_ref = plots.trend_vs_thesis(tab, measured, os.path.join(img_dir, f"thesis_{tab.number}.png"))
         if path is None:
             continue
-        h = [f"<h3>{html.escape(tab.caption_en)}</h3>",
-             f"<p class='note'>{html.escape(tab.caption)} &mdash; stage <code>{tab.stage}</code>, "
-             f"every series divided by its value at x={x_ref:g}.</p>",
-             f"<img class='plot' src='{_rel(path, out_dir)}'>"]
         xs = sorted(set(tab.x) | {x for v in measured.values() for x in v[0]})
-        head = "".join(f"<th>{x:g}</th>" for x in xs)
-        h.append(f"<table><thead><tr><th>series (ms; normalised in brackets)</th>{head}</tr></thead><tbody>")
         allseries = [(f"thesis {k}", tab.x, v) for k, v in tab.columns.items()]
         allseries += [(k, v[0], v[1]) for k, v in measured.items()]
+        series = []
         for name, sx, sy in allseries:
             norm = T.normalise(sx, sy, x_ref) or [float("nan")] * len(sy)
             d = {x: (y, nv) for x, y, nv in zip(sx, sy, norm)}
-            cells = "".join(
-                f"<td class='num'>{tables.fmt(d[x][0])} ({tables.fmt(d[x][1])})</td>" if x in d else "<td></td>"
-                for x in xs)
-            style = " style='font-weight:bold'" if name.startswith("lpvlab") else ""
-            h.append(f"<tr{style}><td>{html.escape(name)}</td>{cells}</tr>")
-        h.append("</tbody></table>")
-        parts.append("\n".join(h))
-    return parts
+            series.append({"name": name, "bold": name.startswith("lpvlab"),
+                           "cells": [f"{tables.fmt(d[x][0])} ({tables.fmt(d[x][1])})" if x in d else None
+                                     for x in xs]})
+        trends.append({"caption_en": tab.caption_en, "caption": tab.caption, "stage": tab.stage,
+                       "x_ref": f"{x_ref:g}", "plot": _rel(path, out_dir), "xs": [f"{x:g}" for x in xs],
+                       "series": series})
+    return trends
 
 
 def load_sweeps(sweep_dirs):
@@ -341,13 +317,13 @@ def _package():
     return sys.modules[__package__]
 
 
-def _figure_and_table(body, out_dir, plot_path, html, md_name, markdown):
-    """A section's plot (where it drew one) and table, with the table as Markdown beside the report."""
-    if plot_path:
-        body.append(f"<img class='plot' src='{_rel(plot_path, out_dir)}'>")
-    body.append(html)
-    fsutil.write_text(os.path.join(out_dir, md_name), markdown)
-    body.append(f"<p class='note'>Markdown version: <a href='{md_name}'>{md_name}</a></p>")
+def _template_environment():
+    """The report's templates (templates/), autoescaped; `scrolling` marks an HTML fragment of a
+    section's module safe with each of its tables in a sideways-scrolling box."""
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(os.path.join(os.path.dirname(__file__), "templates")),
+                             autoescape=True, undefined=jinja2.StrictUndefined, keep_trailing_newline=True)
+    env.filters["scrolling"] = lambda fragment: markupsafe.Markup(_scrolling_tables(str(fragment)))
+    return env
 
 
 def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
@@ -383,139 +359,77 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     _log(f"{len(agg)} configurations")
     swept = S.swept_params(agg)
     numeric = [p for p in swept if S.is_numeric_param(agg, p)]
-    body = [f"<h1>lpvlab sweep report</h1>",
-            f"<p class='note'>Sweep <code>{html.escape(', '.join(os.path.abspath(d) for d in sweep_dirs))}</code>; "
-            f"{len(agg)} configurations, {len(df)} runs; generated "
-            f"{datetime.datetime.now(datetime.timezone.utc).strftime('%Y-%m-%d %H:%M UTC')}. "
-            f"Times are medians over repeats, each stage by its own clock: {html.escape(S.timed_on(agg))} "
-            f"(per stage in summary.csv's <code>time.&lt;stage&gt;.clock</code>). Speed axis, Pareto fronts, "
-            f"equal-time comparisons and table order: {html.escape(S.speed_words(agg))} "
-            f"(<code>lpvlab report --time method|total|gpu-estimate [--gpu KEY]</code>: the method's "
-            f"own stages, the whole frame, or the method's GL kernels estimated on a GPU).</p>"]
-    if swept:
-        body.append("<p>Swept parameters: " + ", ".join(f"<code>{html.escape(p[6:])}</code>" for p in swept) + "</p>")
+    warned = []
     # Runs whose results are suspect (all black, a solve that did not converge): named at the top,
     # so that no figure of theirs is read without the warning.
     if "warnings" in agg.columns:
         warned = [(r["label"], str(r["warnings"])) for _, r in agg.iterrows()
                   if isinstance(r["warnings"], str) and r["warnings"]]
-        if warned:
-            body.append("<h2>Warnings</h2><ul>" + "".join(
-                f"<li><code>{html.escape(label)}</code>: {html.escape(w)}</li>" for label, w in warned) + "</ul>")
 
     _log("plot: speed vs accuracy")
-    body.append("<h2>Speed vs accuracy</h2>")
-    p = plots.speed_accuracy(agg, os.path.join(img_dir, "speed_accuracy.png"), metric=metric)
-    if p:
-        body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
-        body.append("<p class='note'>Circled points and dashed line: Pareto front (no other configuration is both "
-                    f"faster and better in <code>{html.escape(metric)}</code>).</p>")
-    else:
-        body.append(f"<p class='note'>No data for <code>{html.escape(metric)}</code> vs {S.speed_col(agg)} "
-                    "(no reference comparison in this sweep?).</p>")
+    speed_plot = plots.speed_accuracy(agg, os.path.join(img_dir, "speed_accuracy.png"), metric=metric)
 
     # The sections of the kinds of run this sweep holds (sections.py: methods, radiosity,
-    # particles, ... each registered by its own module).
+    # particles, ... each registered by its own module), each part's table also as Markdown.
+    report_sections = []
     for section, parts in SC.applicable(SC.report_modules(_package()), agg):
         _log(f"plot: {section.title.lower()}")
-        body.append(f"<h2>{html.escape(section.title)}</h2>")
+        done = []
         for part in parts:
-            body.append(f"<p class='note'>{part.note}</p>")
             p = part.plot(agg, os.path.join(img_dir, part.image), metric)
-            _figure_and_table(body, out_dir, p, part.html(agg, metric), part.markdown_file,
-                              part.markdown(agg, metric))
+            fsutil.write_text(os.path.join(out_dir, part.markdown_file), part.markdown(agg, metric))
+            done.append({"note": part.note, "plot": _rel(p, out_dir) if p else None,
+                         "table": part.html(agg, metric), "markdown": part.markdown_file})
+        report_sections.append({"title": section.title, "parts": done})
 
-    body.append("<h2>Ablation table</h2>")
-    body.append(f"<p class='note'>Sorted by median time, {html.escape(S.speed_words(agg))}; best value of each "
-                "metric in bold.</p>")
-    body.append(tables.to_html(agg))
     fsutil.write_text(os.path.join(out_dir, "ablation.md"), tables.to_markdown(agg))
-    body.append("<p class='note'>Markdown version: <a href='ablation.md'>ablation.md</a></p>")
-
-    body.append("<h2>Equal settings and equal time</h2>")
+    equal_time = None
     if ET.is_baseline(agg).any():
-        body.append("<p class='note'>Against the baseline series (<code>series = \"baseline\"</code>: the standard "
-                    "method at several grid resolutions): its error at the same grid resolution (equal settings) "
-                    f"and at the same time ({html.escape(S.speed_words(agg))}; only against baseline points timed "
-                    "by the same clock), interpolated log-log between the two baseline points "
-                    "bracketing it (equal time; never extrapolated: outside the series it is "
-                    f"&ldquo;{ET.OUT_OF_RANGE}&rdquo;). Ratio = error / baseline error; below 1 (bold) the "
-                    "configuration wins.</p>")
-        body.append(ET.to_html(agg))
+        equal_time = ET.to_html(agg)
         fsutil.write_text(os.path.join(out_dir, "equal_time.md"), ET.compact_markdown(agg) + "\n" + ET.to_markdown(agg))
-        body.append("<p class='note'>Markdown version: <a href='equal_time.md'>equal_time.md</a></p>")
-    else:
-        body.append("<p class='note'>No baseline series in this sweep (no configuration with "
-                    "<code>series = \"baseline\"</code>; docs/experiments.md).</p>")
 
-    if numeric:
-        body.append("<h2>Parameters</h2>")
-        body.append("<p class='note'>Each plot varies one parameter; other swept numeric parameters are held at "
-                    "their most common value.</p>")
+    parameters = []
     for prm in numeric:
         _log(f"plot: stages/error vs {prm[6:]}")
-        body.append(f"<h3>{html.escape(prm[6:])}</h3>")
-        p = plots.stage_times(agg, prm, os.path.join(img_dir, f"stages_{_safe(prm[6:])}.png"))
-        if p:
-            body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+        drawn = [plots.stage_times(agg, prm, os.path.join(img_dir, f"stages_{_safe(prm[6:])}.png"))]
         if prm in ("param.propagation.iterations", "param.grid.resolution") or S.metric_columns(agg):
-            p = plots.error_vs_param(agg, prm, os.path.join(img_dir, f"error_{_safe(prm[6:])}.png"))
-            if p:
-                body.append(f"<img class='plot' src='{_rel(p, out_dir)}'>")
+            drawn.append(plots.error_vs_param(agg, prm, os.path.join(img_dir, f"error_{_safe(prm[6:])}.png")))
+        parameters.append({"name": prm[6:], "plots": [_rel(p, out_dir) for p in drawn if p]})
 
-    estimate, estimate_md = _gpu_estimate_section(agg, gpus)
-    if estimate:
-        body.append("<h2>Estimated GPU time (an estimate, not a measurement)</h2>")
-        body.append("<p class='note'>Per stage with counted work: the time measured here (on this machine's "
-                    f"backend: {html.escape(S.timed_on(agg))}) and, per GPU of "
-                    "<code>analysis/lpvlab_analysis/gpus.toml</code>, two labelled figures: the roofline bound "
-                    "of the GL kernels' counted arithmetic and memory traffic, max(multiply-adds / peak rate, "
-                    "bytes / bandwidth), and the calibrated estimate, that bound over the efficiency the "
-                    "stage's kernels were measured to reach on a GPU (lpvlab's gather on an H200 reached 2-7% of "
-                    "its bound; the thesis's kernels 30-40% on their GPUs). Not in either: launch costs. See "
-                    "gpu_estimate.py and docs/benchmarks.md. The raster passes have no counted arithmetic.</p>")
-        body.extend(estimate)
+    gpu_estimate, estimate_md = _gpu_estimate_section(agg, gpus)
+    if gpu_estimate:
         fsutil.write_text(os.path.join(out_dir, "gpu_estimate.md"), estimate_md)
-        body.append("<p class='note'>Markdown version: <a href='gpu_estimate.md'>gpu_estimate.md</a></p>")
 
-    thesis = _thesis_section(agg, img_dir, out_dir)
-    if thesis:
-        body.append("<h2>Trends vs the thesis</h2>")
-        body.append("<p class='note'>Thesis numbers: ms on the thesis's Intel/AMD machines (tables 8.2-8.7); "
-                    "absolute values are not comparable, shapes are.</p>")
-        body.extend(thesis)
-        body.extend(_thesis_estimate_table(G.thesis_comparison(agg, gpus)))
+    trends = _thesis_section(agg, img_dir, out_dir)
+    thesis = {"trends": trends, "estimates": _thesis_estimate_rows(G.thesis_comparison(agg, gpus))} if trends else None
 
     seq = sequences.sequence_section(
         [(row["config_name"], row["config_id"], resolve_run_dir(sweep_dir, row)) for _, row in agg.iterrows()],
         img_dir, out_dir)
     if seq:
         _log("plots: sequences")
-        body.append("<h2>Sequences</h2>")
-        body.extend(seq)
 
-    body.append("<h2>Images per configuration</h2>")
     imgs = _config_images(agg, sweep_dir, out_dir, use_exr)
-    if not images.have_oiio() or not use_exr:
-        body.append("<p class='note'>OpenImageIO Python binding unavailable: showing each run's combined.png "
-                    "and error map only (no tone-mapped reference).</p>")
-    else:
-        body.append("<p class='note'>Reference (path-traced indirect1) and result (the run's indirect) are tone-mapped "
-                    "from the EXRs with the same exposure, set by the reference.</p>")
     # In the order of their swept parameters' values, each with links to its run's files.
+    configurations = []
     for _, row in S.ordered_by_swept(agg).iterrows():
         trio, done, run_dir = imgs[row["config_id"]]
-        links = "".join(f"; <a href='{_rel(run_dir, out_dir)}/{name}'>{label}</a>"
-                        for name, label in (("images.exr", "EXR"), ("manifest.json", "manifest"))
-                        if os.path.isfile(os.path.join(run_dir, name)))
-        body.append(f"<h3>{html.escape(str(row['config_name']))} <span class='note'>"
-                    f"{html.escape(str(row['variant']))}; {html.escape(str(row['label']))}"
-                    + links + "</span></h3>")
-        body.append("<div class='trio'>" + "".join(_figures(trio, done)) + "</div>")
+        links = [(f"{_rel(run_dir, out_dir)}/{name}", label)
+                 for name, label in (("images.exr", "EXR"), ("manifest.json", "manifest"))
+                 if os.path.isfile(os.path.join(run_dir, name))]
+        configurations.append({"name": str(row["config_name"]), "variant": str(row["variant"]),
+                               "label": str(row["label"]), "links": links, "figures": _figures(trio, done)})
 
-    page = ("<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>lpvlab sweep report</title>"
-            f"<style>{CSS}</style></head><body>\n" + _scrolling_tables("\n".join(body)) +
-            f"\n<script>{SORTABLE_TABLES_JS}{IMAGE_CONTROLS_JS}</script>\n</body></html>\n")
+    page = _template_environment().get_template("report.html.j2").render(
+        css=CSS, js=SORTABLE_TABLES_JS + IMAGE_CONTROLS_JS,
+        sweeps=", ".join(os.path.abspath(d) for d in sweep_dirs), n_configs=len(agg), n_runs=len(df),
+        generated=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        timed_on=S.timed_on(agg), speed_words=S.speed_words(agg), swept=[p[6:] for p in swept],
+        warned=warned, speed_plot=_rel(speed_plot, out_dir) if speed_plot else None, metric=metric,
+        speed_col=S.speed_col(agg), sections=report_sections, ablation=tables.to_html(agg),
+        equal_time=equal_time, out_of_range=ET.OUT_OF_RANGE, parameters=parameters,
+        gpu_estimate=gpu_estimate, thesis=thesis, sequences=seq or [],
+        tonemapped=images.have_oiio() and use_exr, configurations=configurations)
     index = os.path.join(out_dir, "index.html")
     fsutil.write_text(index, page)
     _log(f"wrote {index}")

@@ -179,12 +179,23 @@ class ReportSectionTest(unittest.TestCase):
         from lpvlab_analysis import report
         df = pd.DataFrame([{"config_name": "a", "time.propagation.ms": 12.5,
                             "gpu_work.propagation.multiply_adds": 1e9, "gpu_work.propagation.bytes": 1e6}])
-        html, md = report._gpu_estimate_section(df, [_gpu(1e12, 100e9)])
-        text = "\n".join(html)
-        self.assertIn("Test GPU: roofline bound", text)
-        self.assertIn("Test GPU: calibrated (range)", text)
-        self.assertIn("measured here (ms)", text)
+        section, md = report._gpu_estimate_section(df, [_gpu(1e12, 100e9)])
+        # The template's data (report.html.j2 heads each GPU's columns "<name>: roofline bound" and
+        # "<name>: calibrated (range)"), and the Markdown.
+        self.assertEqual(section["gpus"], ["Test GPU"])
+        self.assertEqual(section["rows"], [{"configuration": "a", "stage": "propagation", "measured": "12.5",
+                                            "cells": [("1", "—")]}])
+        self.assertIn("Test GPU roofline bound (ms) | Test GPU calibrated (range) (ms)", md)
+        self.assertIn("measured here (ms)", md)
         self.assertIn("| a | propagation | 12.5 | 1 | — |", md)   # 1e9 / 1e12 s = 1 ms; no measurement
+        # Rendered: the page's table heads the columns by GPU, and escapes what it shows.
+        env = report._template_environment()
+        page = env.from_string("{% from 'macros.html.j2' import plot %}"
+                               "{% for g in s.gpus %}<th>{{ g }}: roofline bound</th>{% endfor %}"
+                               "{{ '<b>'|scrolling }}{{ '<i>' }}").render(s=section)
+        self.assertIn("<th>Test GPU: roofline bound</th>", page)
+        self.assertIn("<b>", page)
+        self.assertIn("&lt;i&gt;", page)
 
     def test_the_calibrated_estimate_divides_the_bound_by_the_measured_efficiency(self):
         # A GPU measured at a quarter and at half of its roofline (bytes-bound: 400 bytes per unit
