@@ -222,29 +222,28 @@ def _comparisons(agg):
             yield m, _ordered(t)
 
 
+_HTML_HEADERS = ["scene", "configuration", "baseline", "res", "time ms", "propagation ms", "error",
+                 "baseline error, equal settings", "ratio", "baseline error, equal time", "ratio"]
+
+
 def to_html(agg):
-    """The same tables in HTML (ratios below 1 in bold: the configuration wins)."""
-    import html
+    """The same tables in HTML (html_table.py), one per metric under its title; ratios below 1 in
+    bold (the configuration wins)."""
+    from . import html_table as H
+    from . import templating
     from .tables import fmt
-    out = []
+
+    def num(v, bold=False):
+        return H.cell(fmt(v), bold=bold, num=True)
+
+    sections = []
     for m, t in _comparisons(agg):
-        out.append(f"<h3>{html.escape(_title(m))}</h3>")
-        out.append('<table class="equal_time"><thead><tr><th>scene</th><th>configuration</th><th>baseline</th>'
-                   "<th>res</th><th>time ms</th><th>propagation ms</th><th>error</th>"
-                   "<th>baseline error, equal settings</th><th>ratio</th>"
-                   "<th>baseline error, equal time</th><th>ratio</th></tr></thead><tbody>")
+        rows = []
         for _, r in t.iterrows():
-            def num(v, bold=False):
-                s = html.escape(fmt(v))
-                return f"<td class='num'>{'<b>' + s + '</b>' if bold else s}</td>"
-            tr = r["time ratio"]
-            sr = r["settings ratio"]
-            time_err = (f"<td class='num'>{html.escape(r['time status'])}</td>" if r["time status"]
-                        else num(r["time error"]))
-            out.append("<tr>" + f"<td>{html.escape(r['scene'])}</td><td>{html.escape(r['config_name'])}</td>"
-                       f"<td>{'yes' if r['baseline'] else ''}</td>" + num(r["resolution"]) + num(r["time ms"])
-                       + num(r["propagation ms"]) + num(r["error"]) + num(r["settings error"])
-                       + num(sr, not math.isnan(sr) and sr < 1) + time_err
-                       + num(tr, not math.isnan(tr) and tr < 1) + "</tr>")
-        out.append("</tbody></table>")
-    return "\n".join(out)
+            tr, sr = r["time ratio"], r["settings ratio"]
+            time_err = H.cell(r["time status"], num=True) if r["time status"] else num(r["time error"])
+            rows.append([r["scene"], r["config_name"], "yes" if r["baseline"] else "", num(r["resolution"]),
+                         num(r["time ms"]), num(r["propagation ms"]), num(r["error"]), num(r["settings error"]),
+                         num(sr, not math.isnan(sr) and sr < 1), time_err, num(tr, not math.isnan(tr) and tr < 1)])
+        sections.append({"title": _title(m), "table": H.render(_HTML_HEADERS, rows, css_class="equal_time")})
+    return templating.render("titled_tables.html.j2", sections=sections)

@@ -8,13 +8,13 @@ error to the LPV baseline's at equal time (equal_time.py: interpolated between t
 points around its time, never extrapolated) and what the method did (VPLs, gathered pairs, the
 share of the light its clamp removed; summary.csv's method.* columns).
 """
-import html
 import math
 import os
 
 import pandas as pd
 
 from . import equal_time as ET
+from . import html_table as H
 from . import plots
 from . import sections
 from . import summary as S
@@ -126,17 +126,13 @@ def to_markdown(agg, metric):
 
 
 def to_html(agg, metric):
+    """The table in HTML (html_table.py); an equal-time ratio below 1 (the method wins) in bold."""
     t = table(agg, metric)
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
-    body = []
+    rows = []
     for (_, r), cells in zip(t.iterrows(), _formatted(t)):
         wins = isinstance(r["equal-time ratio"], float) and r["equal-time ratio"] < 1.0
-        tds = []
-        for c, s in zip(t.columns, cells):
-            s = html.escape(s)
-            tds.append(f"<td>{'<b>' + s + '</b>' if (c == 'equal-time ratio' and wins) else s}</td>")
-        body.append("<tr>" + "".join(tds) + "</tr>")
-    return f"<table><tr>{head}</tr>" + "".join(body) + "</table>"
+        rows.append([H.cell(s, bold=c == "equal-time ratio" and wins) for c, s in zip(t.columns, cells)])
+    return H.render(list(t.columns), rows)
 
 
 def _plot(agg, path, metric):

@@ -1,8 +1,8 @@
 """Build <out>/index.html for a sweep directory.
 
-The page comes from the Jinja2 template templates/report.html.j2 (autoescaped), filled with the
-data this module gathers; the sections' own modules (tables.py, equal_time.py, sections.py's
-parts, sequences.py) still hand it HTML fragments, marked safe. It is self-contained HTML+CSS;
+The page comes from the Jinja2 template templates/report.html.j2 (autoescaped; templating.py),
+filled with the data this module gathers; the sections' tables come from templates/table.html.j2
+(html_table.py) and the sequences from sequences.html.j2. It is self-contained HTML+CSS;
 images are PNG files referenced by
 relative paths (plots and tone-mapped images in <out>/img/, error maps and
 combined.png linked from the run directories). Sections: sweep overview,
@@ -24,8 +24,6 @@ import json
 import os
 import sys
 
-import jinja2
-import markupsafe
 import numpy as np
 import pandas as pd
 
@@ -39,6 +37,7 @@ from . import sections as SC
 from . import sequences
 from . import summary as S
 from . import tables
+from . import templating
 from . import thesis_tables as T
 
 # Every table's columns sort by a click on their header (numbers numerically, then text; a second
@@ -109,12 +108,6 @@ img.flip{cursor:pointer}th.sortable{cursor:pointer}th[aria-sort=ascending]::afte
 figcaption{font-size:12px;color:#555}.note{font-size:12px;color:#666}
 .scroll{overflow-x:auto;max-width:100%}
 """
-
-
-def _scrolling_tables(body):
-    """Every table in a box of its own that scrolls sideways: a wide table (a column per metric)
-    never makes the page wider than the window."""
-    return body.replace("<table", "<div class='scroll'><table").replace("</table>", "</table></div>")
 
 
 def _log(msg):
@@ -317,15 +310,6 @@ def _package():
     return sys.modules[__package__]
 
 
-def _template_environment():
-    """The report's templates (templates/), autoescaped; `scrolling` marks an HTML fragment of a
-    section's module safe with each of its tables in a sideways-scrolling box."""
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(os.path.join(os.path.dirname(__file__), "templates")),
-                             autoescape=True, undefined=jinja2.StrictUndefined, keep_trailing_newline=True)
-    env.filters["scrolling"] = lambda fragment: markupsafe.Markup(_scrolling_tables(str(fragment)))
-    return env
-
-
 def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
                  gpu_table=G.DEFAULT_TABLE, speed=S.DEFAULT_SPEED, gpu=S.DEFAULT_GPU):
     """Write <out_dir>/index.html (default <sweep_dir>/report) and return its path. `sweep_dir`
@@ -420,7 +404,7 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
         configurations.append({"name": str(row["config_name"]), "variant": str(row["variant"]),
                                "label": str(row["label"]), "links": links, "figures": _figures(trio, done)})
 
-    page = _template_environment().get_template("report.html.j2").render(
+    page = templating.environment().get_template("report.html.j2").render(
         css=CSS, js=SORTABLE_TABLES_JS + IMAGE_CONTROLS_JS,
         sweeps=", ".join(os.path.abspath(d) for d in sweep_dirs), n_configs=len(agg), n_runs=len(df),
         generated=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),

@@ -12,7 +12,6 @@ frames too but whose aggregation takes one value per configuration. Per sequence
   pair, the reference's noise removed;
 - the video (video.mp4) beside them, when the run made one.
 """
-import html
 import json
 import math
 import os
@@ -22,6 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from . import fsutil  # noqa: E402
+from . import templating  # noqa: E402
 
 
 def read_records(run_dir):
@@ -112,9 +112,10 @@ def per_frame_plot(series, at_rest, path, title):
 
 
 def sequence_section(configurations, img_dir, out_dir):
-    """HTML parts for the sequences among `configurations`, a list of (name, id, run_dir); empty
-    when none is a sequence."""
-    parts = []
+    """The report's part (templates/sequences.html.j2) for the sequences among `configurations`,
+    a list of (name, id, run_dir): per sequence its per-frame plot, its video and how many frame
+    changes were at rest. Empty when none is a sequence."""
+    sequences = []
     for name, config_id, run_dir in configurations:
         records = read_records(run_dir)
         if records is None:
@@ -123,24 +124,8 @@ def sequence_section(configurations, img_dir, out_dir):
         safe = "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in str(config_id))
         plot = per_frame_plot(series, at_rest, os.path.join(img_dir, f"frames_{safe}.png"),
                               f"{name}: {len(records)} frames")
-        parts.append(f"<h3>{html.escape(str(name))}</h3>")
-        row = []
-        if plot:
-            row.append(f"<img class='plot' src='{html.escape(os.path.relpath(plot, out_dir))}' "
-                       f"alt='per-frame figures of {html.escape(str(name))}'>")
         video = os.path.join(run_dir, "video.mp4")
-        if os.path.isfile(video):
-            row.append(f"<video controls loop muted width='384' "
-                       f"src='{html.escape(os.path.relpath(video, out_dir))}'></video>")
-        parts.append("<div class='trio'>" + "".join(row) + "</div>")
-        if at_rest:
-            parts.append(f"<p class='note'>{len(at_rest)} of {len(records) - 1} frame changes at "
-                         "rest (only the camera moved): filled markers, where the change of a "
-                         "view-independent output is flicker.</p>")
-    if parts:
-        parts.insert(0, "<p class='note'>Per frame: the error against each frame's own reference "
-                        "and the temporal figures (docs/animation.md): the relative change of each "
-                        "output from the frame before at the same surface points, and the error of "
-                        "that change against the reference's change with the reference's noise "
-                        "removed.</p>")
-    return parts
+        sequences.append({"name": str(name), "plot": os.path.relpath(plot, out_dir) if plot else None,
+                          "video": os.path.relpath(video, out_dir) if os.path.isfile(video) else None,
+                          "at_rest": len(at_rest), "changes": len(records) - 1})
+    return [templating.render("sequences.html.j2", sequences=sequences)] if sequences else []

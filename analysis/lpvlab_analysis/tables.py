@@ -7,11 +7,11 @@ median method ms (where the summary has it), median total ms, median
 propagation ms, memory MB, then every metric.* column present. For each metric column the best value (lowest
 error, or highest PSNR/SSIM) is bold; ties are all bold.
 """
-import html
 import math
 
 import pandas as pd
 
+from . import html_table as H
 from . import summary as S
 
 
@@ -86,23 +86,15 @@ def to_markdown(agg):
 
 
 def to_html(agg):
-    """The same table as an HTML <table>, best metric values in <b>."""
+    """The same table in HTML (html_table.py), best metric values in bold; each metric's heading
+    says which way is better and shows the full column name on hover."""
     t, metrics = ablation_table(agg)
-    out = ['<table class="ablation">', "<thead><tr>"]
-    for c in t.columns:
-        name = short_metric(c) if c in metrics else c
-        arrow = (" &uarr;" if S.higher_is_better(c) else " &darr;") if c in metrics else ""
-        out.append(f"<th title=\"{html.escape(c)}\">{html.escape(name)}{arrow}</th>")
-    out.append("</tr></thead><tbody>")
-    for row in _cells(t, metrics):
-        tds = []
-        for (s, b), c in zip(row, t.columns):
-            s = html.escape(s)
-            cls = "" if c in ("config_name", "variant") else ' class="num"'
-            tds.append(f"<td{cls}>{'<b>' + s + '</b>' if b else s}</td>")
-        out.append("<tr>" + "".join(tds) + "</tr>")
-    out.append("</tbody></table>")
-    return "\n".join(out)
+    headers = [H.header(short_metric(c) if c in metrics else c, title=c,
+                                 arrow=("up" if S.higher_is_better(c) else "down") if c in metrics else "")
+               for c in t.columns]
+    rows = [[H.cell(s, bold=b, num=c not in ("config_name", "variant")) for (s, b), c in zip(row, t.columns)]
+            for row in _cells(t, metrics)]
+    return H.render(headers, rows, css_class="ablation")
 
 
 def formatted_cells(t, formats, default="{:.4g}"):
@@ -130,8 +122,5 @@ def markdown_table(title, t, formats):
 
 
 def html_table(t, formats):
-    """An HTML table of `t` (formatted_cells), escaped."""
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in cells) + "</tr>"
-                   for cells in formatted_cells(t, formats))
-    return f"<table><tr>{head}</tr>{body}</table>"
+    """An HTML table of `t` (formatted_cells; html_table.py)."""
+    return H.render(list(t.columns), formatted_cells(t, formats))

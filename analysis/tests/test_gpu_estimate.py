@@ -189,7 +189,8 @@ class ReportSectionTest(unittest.TestCase):
         self.assertIn("measured here (ms)", md)
         self.assertIn("| a | propagation | 12.5 | 1 | — |", md)   # 1e9 / 1e12 s = 1 ms; no measurement
         # Rendered: the page's table heads the columns by GPU, and escapes what it shows.
-        env = report._template_environment()
+        from lpvlab_analysis import templating
+        env = templating.environment()
         page = env.from_string("{% from 'macros.html.j2' import plot %}"
                                "{% for g in s.gpus %}<th>{{ g }}: roofline bound</th>{% endfor %}"
                                "{{ '<b>'|scrolling }}{{ '<i>' }}").render(s=section)
