@@ -172,9 +172,14 @@ def param_columns(df):
     return [c for c in df.columns if c.startswith("param.")]
 
 
+# Beside the metrics in summary.csv but no error of the run: metric.<pair>.pixels counts the
+# compared pixels, metric.<pair>.noise_floor_rmse is the reference's own noise as an RMSE.
+NOT_METRICS = ("pixels", "noise_floor_rmse")
+
+
 def metric_columns(df):
-    """The error metric columns; metric.<pair>.pixels is a pixel count, not an error."""
-    return [c for c in df.columns if c.startswith("metric.") and metric_name(c) != "pixels"]
+    """The error metric columns (NOT_METRICS left out)."""
+    return [c for c in df.columns if c.startswith("metric.") and metric_name(c) not in NOT_METRICS]
 
 
 def metric_name(col):

@@ -83,6 +83,21 @@ Image coverageMask(const Image& depth) {
 
 namespace {
 
+// The reference's own noise as an RMSE: the root of the mean variance of its pixel means over the
+// covered pixels and channels. An RMSE against it cannot fall much below this however exact the
+// run is (the report draws it as the noise floor of convergence curves).
+double noiseFloorRmse(const Image& varianceOfMean, const Image& mask) {
+  double sum = 0.0, count = 0.0;
+  const int channels = varianceOfMean.channels;
+  for (int y = 0; y < varianceOfMean.height; ++y)
+    for (int x = 0; x < varianceOfMean.width; ++x) {
+      if (mask.at(x, y, 0) <= 0.0f) continue;
+      for (int c = 0; c < channels; ++c) sum += std::max(0.0, double(varianceOfMean.at(x, y, c)));
+      count += channels;
+    }
+  return count > 0.0 ? std::sqrt(sum / count) : 0.0;
+}
+
 // `mask` restricted to a region of the image (ComparisonSettings::Region).
 Image regionMask(const Image& mask, const glm::vec4& rect) {
   Image out = mask;
@@ -106,7 +121,8 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
   for (const auto& [mine, theirs] : settings.pairs) {
     const Image& a = findAov(run, mine);
     const Image& b = findAov(ref.aovs, theirs);
-    const ComparisonResult z = compareToExact(b, findAov(ref.aovs, theirs + "_variance"), a);
+    const Image& variance = findAov(ref.aovs, theirs + "_variance");
+    const ComparisonResult z = compareToExact(b, variance, a);
     const double meanRun = mean(a), meanReference = mean(b);
     nlohmann::json& pair = out["comparison"][mine + "_vs_" + theirs];
     pair = {{"mean_run", meanRun},
@@ -117,6 +133,8 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
             {"z_threshold", z.threshold},
             {"mean_z", z.meanZ},
             {"metrics", computeMetrics(a, b, &mask).toJson()}};
+    // Beside the metrics (so the summary has it per pair), but not a metric of the run.
+    pair["metrics"]["noise_floor_rmse"] = noiseFloorRmse(variance, mask);
     for (const ComparisonSettings::Region& region : settings.regions) {
       const Image inside = regionMask(mask, region.rect);
       double covered = 0.0;
