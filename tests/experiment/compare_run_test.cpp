@@ -1,7 +1,9 @@
 // A run that compares itself with its reference ([reference] compare = true): the reference is
 // rendered first (into a temporary cache), the manifest gets metrics and z-tests per output pair,
 // and the FLIP heat map is written. The rasterised direct light must agree with the tracer's.
+// The reference's noise floor (metric noise_floor_rmse) is its own RMSE.
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -12,6 +14,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/run.h"
+#include "framework/experiment/run_outputs.h"
 #include "pipeline_test_support.h"
 
 namespace lpvlab {
@@ -89,6 +92,35 @@ TEST(CompareRun, BadPairsAndRegionsAreNamed) {
             std::string::npos);
   EXPECT_NE(message({"metrics.regions=[{name = \"r\", left = 1.5}]"}).find("metrics.regions[0].left"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace lpvlab
+
+namespace lpvlab {
+namespace {
+
+// The reference's noise floor (run_outputs.h): the root of the mean variance of its pixel means
+// over the covered pixels and channels, whatever the uncovered pixels hold.
+TEST(CompareRun, TheNoiseFloorIsTheReferencesOwnRmse) {
+  const int w = 8, h = 4;
+  Image mask(w, h, 1, 1.0f), mean(w, h, 3, 0.5f), variance(w, h, 3, 0.0f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        // Covered: variances 1e-4 and 4e-4 alternating (mean 2.5e-4); uncovered: huge.
+        const bool covered = x < w / 2;
+        variance.at(x, y, c) = covered ? ((x + y + c) % 2 ? 4e-4f : 1e-4f) : 1e3f;
+        if (!covered) mask.at(x, y, 0) = 0.0f;
+      }
+  Reference ref;
+  ref.aovs = {{"indirect1", mean}, {"indirect1_variance", variance}};
+  ComparisonSettings settings;
+  settings.pairs = {{"indirect", "indirect1"}};
+  const nlohmann::json out = compareWithReference({{"indirect", mean}}, ref, mask, settings);
+  const auto& metrics = out["comparison"]["indirect_vs_indirect1"]["metrics"];
+  EXPECT_NEAR(metrics["noise_floor_rmse"].get<double>(), std::sqrt(2.5e-4), 1e-7);
+  EXPECT_EQ(metrics["rmse"].get<double>(), 0.0);  // the run equals the reference's mean
 }
 
 }  // namespace
