@@ -93,7 +93,8 @@ int runCommand(const Options& options) {
              ", scene " + experiment.scene.source + ", output " + out);
   const nlohmann::json manifest = runExperiment(experiment, *context, out);
   log::info(computeLine(manifest["compute"]));
-  if (manifest["compute"].contains("raster")) log::debug("raster passes: " + manifest["compute"]["raster"].dump());
+  if (log::shows(log::Level::Debug) && manifest["compute"].contains("raster"))
+    log::debug("raster passes: " + manifest["compute"]["raster"].dump());
   if (manifest.contains("warnings"))  // also in the manifest, summary.csv and the report
     for (const auto& warning : manifest["warnings"]) log::warning(warning.get<std::string>());
   // Each stage's time by its own clock, named on its row: a CPU stage's is not a GPU time.

@@ -33,18 +33,11 @@ spdlog::level::level_enum toSpdlog(Level level) {
   return spdlog::level::info;
 }
 
-Level current = Level::Info;
-
 }  // namespace
 
-void setLevel(Level level) {
-  current = level;
-  logger().set_level(toSpdlog(level));
-}
+void setLevel(Level level) { logger().set_level(toSpdlog(level)); }
 
-Level level() { return current; }
-
-bool shows(Level level) { return level >= current; }
+bool shows(Level level) { return logger().should_log(toSpdlog(level)); }
 
 bool levelFromName(std::string_view name, Level& out) {
   if (name == "quiet") out = Level::Warning;

@@ -15,7 +15,6 @@ namespace lpvlab::log {
 enum class Level { Debug, Info, Warning, Error };
 
 void setLevel(Level level);
-Level level();
 bool shows(Level level);  // whether messages of this level are printed
 
 // "quiet" -> Warning, "normal" -> Info, "verbose" -> Debug; anything else: nothing.

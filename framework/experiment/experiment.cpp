@@ -342,9 +342,7 @@ void readReference(Params& params, Experiment& e) {
   e.reference.tracer.seed = std::uint64_t(reference.get<int>("seed", 1, {.min = 0}));
   e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
-  e.reference.tracer.sampler = reference.getChoice("sampler", "independent", {"independent", "sobol"}) == "sobol"
-                                   ? SampleSequence::Sobol
-                                   : SampleSequence::Independent;
+  e.reference.tracer.sampler = samplerFromName(reference.getChoice("sampler", "independent", samplerNames()));
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
   // How often the sums are saved for resuming (0: after every pass of about a second).
   e.reference.checkpointSeconds =

@@ -130,9 +130,7 @@ LightPathMethod::LightPathMethod(Params& p, VplVisibility visibility, const Impe
   paths_.rouletteAfter = p.get<int>("roulette_after", 1, {.min = 0, .max = 100000});
   paths_.maxBounces = p.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   paths_.seed = std::uint64_t(p.get<int>("seed", 1, {.min = 0}));
-  paths_.sampler = p.getChoice("sampler", "independent", {"independent", "sobol"}) == "sobol"
-                       ? SampleSequence::Sobol
-                       : SampleSequence::Independent;
+  paths_.sampler = samplerFromName(p.getChoice("sampler", "independent", samplerNames()));
   setPointSeed(paths_.seed);
 }
 

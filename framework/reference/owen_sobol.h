@@ -16,6 +16,8 @@
 
 #include <cstdint>
 
+#include "framework/reference/mix64.h"
+
 namespace lpvlab::owen_sobol {
 
 inline std::uint32_t reverseBits(std::uint32_t x) {
@@ -55,11 +57,9 @@ inline std::uint32_t sobolDimension1(std::uint32_t index) {
   return result;
 }
 
-// A 32-bit value from a 64-bit key (SplitMix64's finaliser, folded).
-inline std::uint32_t seedOf(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  z ^= z >> 31;
+// A 32-bit value from a 64-bit key (mix64, folded).
+inline std::uint32_t seedOf(std::uint64_t key) {
+  const std::uint64_t z = mix64(key);
   return std::uint32_t(z ^ (z >> 32));
 }
 

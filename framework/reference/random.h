@@ -6,18 +6,13 @@
 // for any thread count and lets an accumulator resume where it stopped.
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
+#include "framework/reference/mix64.h"
 #include "framework/reference/owen_sobol.h"
 
 namespace lpvlab {
-
-// SplitMix64's finaliser (Steele, Lea, Flood 2014): a bijection on 64 bits whose every output
-// bit depends on every input bit.
-inline std::uint64_t mix64(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
 
 // How a path's random numbers are made ([reference] sampler).
 //   Independent  every number independent: SplitMix64 from a hash of (seed, pixel, sample)
@@ -31,13 +26,22 @@ inline const char* samplerName(SampleSequence sequence) {
   return sequence == SampleSequence::Sobol ? "sobol" : "independent";
 }
 
+// The `sampler` keys' choices, and the sequence a checked choice names.
+inline const std::vector<std::string>& samplerNames() {
+  static const std::vector<std::string> names = {"independent", "sobol"};
+  return names;
+}
+inline SampleSequence samplerFromName(const std::string& name) {
+  return name == "sobol" ? SampleSequence::Sobol : SampleSequence::Independent;
+}
+
 class SampleRandom {
 public:
   SampleRandom() = default;  // a placeholder (for arrays): assign a keyed stream before drawing
   SampleRandom(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample,
                SampleSequence sequence = SampleSequence::Independent)
-      : state_(mix64(mix64(mix64(seed) + pixel) + sample)),
-        key_(mix64(mix64(seed) + pixel)),
+      : key_(mix64(mix64(seed) + pixel)),
+        state_(mix64(key_ + sample)),
         sample_(std::uint32_t(sample)),
         sobol_(sequence == SampleSequence::Sobol) {}
 
@@ -61,8 +65,8 @@ private:
     return float(second_ >> 8) * 0x1p-24f;
   }
 
-  std::uint64_t state_ = 0;
-  std::uint64_t key_ = 0;      // Sobol: the stream of (seed, pixel)
+  std::uint64_t key_ = 0;      // the stream of (seed, pixel); Sobol: its scrambles' key
+  std::uint64_t state_ = 0;    // independent: SplitMix64's state, from key_ and the sample
   std::uint32_t sample_ = 0;   // Sobol: the sample index (its first 2^32 samples)
   std::uint32_t dimension_ = 0;
   std::uint32_t second_ = 0;   // Sobol: the pair's second value, returned by the next call
