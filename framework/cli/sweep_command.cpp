@@ -3,13 +3,7 @@
 // configuration whose directory holds a manifest.json is complete and skipped, one without is
 // removed and redone. `lpvlab summary DIR` rebuilds DIR/summary.csv.
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -18,6 +12,7 @@
 #include <sstream>
 
 #include "framework/core/log.h"
+#include "framework/cli/child_runs.h"
 #include "framework/cli/commands.h"
 #include "framework/cli/slurm_script.h"
 #include "framework/core/error.h"
@@ -36,42 +31,6 @@ namespace lpvlab::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lastLine(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
-}
-
-// Starts `exe run CONFIG --out RUNDIR` with stdout and stderr into RUNDIR/error.log; the child
-// dies with this process (so a killed sweep leaves no orphan writing into its directory).
-pid_t startRun(const std::string& exe, const std::string& config, const std::string& runDir) {
-  const std::string log = (fs::path(runDir) / "error.log").string();
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
-  if (pid < 0) throw Error("sweep: fork failed");
-  if (pid == 0) {
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    const int devnull = open("/dev/null", O_RDONLY);
-    if (devnull >= 0) dup2(devnull, 0);
-    std::vector<std::string> args = {exe, "run", config, "--out", runDir};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
-}
 
 // "FILE -s a=1 -s b=2": where a sweep came from, for the error that refuses another one.
 std::string sourceText(const std::string& file, const std::vector<std::string>& overrides) {
@@ -199,58 +158,6 @@ Options resolvedSlurmOptions(Options options) {
   return options;
 }
 
-// Whether the child that ran configuration `c` into DIR/<id>/ succeeded; if not, says why (its
-// error.log's last line). A success's empty error.log is removed.
-bool finished(const fs::path& dir, const SweepConfiguration& c, int status) {
-  const fs::path runDir = dir / c.id;
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && fs::exists(runDir / "manifest.json")) {
-    fs::remove(runDir / "error.log");
-    return true;
-  }
-  log::warning("configuration " + c.id + " (" + c.name + ") failed: " + lastLine(runDir / "error.log") +
-               "\n  (see " + (runDir / "error.log").string() + ")");
-  return false;
-}
-
-// Runs the pending configurations, `jobs` child processes at a time, each into a fresh
-// DIR/<id>/ (an interrupted run is redone from scratch), with progress; returns the failed ones.
-std::vector<const SweepConfiguration*> runPending(
-    const fs::path& dir, const std::string& exe,
-    const std::vector<const SweepConfiguration*>& pending, int jobs) {
-  ProgressBar progress("sweep");
-  std::map<pid_t, const SweepConfiguration*> running;
-  std::vector<const SweepConfiguration*> failed;
-  std::size_t next = 0, done = 0;
-  auto detail = [&] {
-    return std::to_string(done) + "/" + std::to_string(pending.size()) + " configurations" +
-           (failed.empty() ? "" : ", " + std::to_string(failed.size()) + " failed");
-  };
-  while (next < pending.size() || !running.empty()) {
-    while (next < pending.size() && int(running.size()) < jobs) {
-      const SweepConfiguration& c = *pending[next++];
-      const fs::path runDir = dir / c.id;
-      fs::remove_all(runDir);
-      fs::create_directories(runDir);
-      running[startRun(exe, (dir / "configs" / (c.id + ".toml")).string(), runDir.string())] = &c;
-    }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    if (pid < 0) {
-      if (errno == EINTR) continue;
-      throw Error("sweep: waitpid failed");
-    }
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const SweepConfiguration& c = *it->second;
-    running.erase(it);
-    ++done;
-    if (!finished(dir, c, status)) failed.push_back(&c);
-    progress.update(double(done) / double(pending.size()), detail());
-  }
-  progress.finish(detail());
-  return failed;
-}
-
 // The sweep directory can be written and holds no single run.
 void checkDirectory(const fs::path& dir, const Options& options) {
   requireOutputDirectory(dir.string(), options.out.empty() ? "sweep directory" : "--out");
@@ -290,7 +197,11 @@ int sweepCommand(const Options& given) {
   log::info("sweep " + stem + ": " + std::to_string(configs.size()) + " configurations, " +
             std::to_string(configs.size() - pending.size()) + " complete, " + std::to_string(pending.size()) +
             " to run, " + std::to_string(options.jobs) + " at a time, into " + dir.string());
-  const std::vector<const SweepConfiguration*> failed = runPending(dir, exe, pending, options.jobs);
+  std::vector<ChildRun> runs;
+  for (const SweepConfiguration* c : pending)
+    runs.push_back({(dir / "configs" / (c->id + ".toml")).string(), dir / c->id, c->id + " (" + c->name + ")"});
+  std::vector<const SweepConfiguration*> failed;
+  for (const std::size_t index : runChildren(exe, runs, options.jobs, "sweep")) failed.push_back(pending[index]);
 
   const SummaryResult summary = writeSweepSummary(dir.string());
   reportSkipped(dir.string(), summary);

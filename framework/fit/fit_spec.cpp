@@ -9,46 +9,13 @@
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment.h"
 #include "framework/experiment/experiment_file.h"
+#include "framework/experiment/named_views.h"
 
 namespace lpvlab {
 
 namespace {
 
 const std::vector<std::string> kStages = {"injection", "occlusion", "propagation", "rendering"};
-
-std::string lineOf(const toml::node& node) {
-  const auto& src = node.source();
-  return src.begin.line > 0 ? ":" + std::to_string(src.begin.line) : "";
-}
-
-// [[fit.views]] / [[fit.held_out]]: each a table with a name and experiment keys.
-std::vector<FitViewSpec> readViews(const toml::table& fit, const std::string& key,
-                                   const std::string& file) {
-  std::vector<FitViewSpec> out;
-  const toml::node* node = fit.get(key);
-  if (!node) return out;
-  const toml::array* array = node->as_array();
-  if (!array || !array->is_array_of_tables())
-    throw Error(file + lineOf(*node) + ": key 'fit." + key + "': expected an array of tables "
-                "([[fit." + key + "]] with a name and experiment keys)");
-  for (std::size_t i = 0; i < array->size(); ++i) {
-    const toml::table& t = *array->get(i)->as_table();
-    const std::string where = file + lineOf(t) + ": key 'fit." + key + "[" + std::to_string(i) + "]";
-    const toml::node* name = t.get("name");
-    if (!name || !name->is_string())
-      throw Error(where + ".name': every view needs a name (a string)");
-    FitViewSpec view{name->as_string()->get(), t};
-    view.keys.erase("name");
-    for (const FitViewSpec& other : out)
-      if (other.name == view.name) throw Error(where + ".name': '" + view.name + "' is used twice");
-    for (const auto& [k, v] : view.keys)
-      if (k.str() == "fit" || k.str() == "sweep")
-        throw Error(where + "." + std::string(k.str()) + "': a view cannot have a [" +
-                    std::string(k.str()) + "] table");
-    out.push_back(std::move(view));
-  }
-  return out;
-}
 
 const nlohmann::json* findKey(const nlohmann::json& config, const std::string& stage,
                               const std::string& name) {
@@ -91,13 +58,7 @@ double experimentValue(const FitParameter& p, const nlohmann::json& config, cons
 
 }  // namespace
 
-toml::table FitSpec::viewTable(const FitViewSpec& view) const {
-  // Whole tables are replaced, not merged: a view's camera given by position must not inherit
-  // the file's camera name (and a view's scene is not mixed with the file's).
-  toml::table t = base;
-  for (const auto& [key, node] : view.keys) t.insert_or_assign(key, node);
-  return t;
-}
+toml::table FitSpec::viewTable(const FitViewSpec& view) const { return withView(base, view); }
 
 const char* residualName(ResidualKind kind) {
   return kind == ResidualKind::Linear ? "linear" : kind == ResidualKind::Relative ? "relative" : "log";
@@ -128,8 +89,8 @@ FitSpec readFitSpec(toml::table root, const std::string& path) {
   if (root.contains("sweep")) throw Error(path + ": a fit file cannot have a [sweep] table");
   spec.base = std::move(root);
 
-  spec.views = readViews(fit, "views", path);
-  spec.heldOut = readViews(fit, "held_out", path);
+  spec.views = readNamedViews(fit, "fit", "views", path);
+  spec.heldOut = readNamedViews(fit, "fit", "held_out", path);
   if (spec.views.empty())
     throw Error(path + ": key 'fit.views': no views to fit on; add at least one [[fit.views]] "
                 "with a name (and the experiment keys that make it a view, none for the file's own)");

@@ -28,6 +28,8 @@
 
 #include <toml++/toml.h>
 
+#include "framework/experiment/named_views.h"
+
 namespace lpvlab {
 
 struct FitParameter {
@@ -38,10 +40,7 @@ struct FitParameter {
   double step = 0.0;      // relative central-difference step; 0: the fit's `step`
 };
 
-struct FitViewSpec {
-  std::string name;
-  toml::table keys;       // experiment tables of this view, replacing the file's
-};
+using FitViewSpec = NamedView;  // [[fit.views]], [[fit.held_out]]
 
 enum class ResidualKind { Linear, Relative, Log };
 enum class LossKind { None, Huber, Cauchy };
