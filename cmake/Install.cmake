@@ -12,7 +12,7 @@ include(CMakePackageConfigHelpers)
 
 set(LPVLAB_EXPORTED
     lpvlab_core lpvlab_math lpvlab_scene lpvlab_animation lpvlab_io lpvlab_metrics lpvlab_gl
-    lpvlab_pipeline lpvlab_reference lpvlab_raster lpvlab_particles lpvlab_experiment lpvlab_fit
+    lpvlab_pipeline lpvlab_reference lpvlab_raster lpvlab_particles lpvlab_experiment lpvlab_fit lpvlab_explain lpvlab_tune
     lpvlab_many_lights lpvlab_radiosity lpvlab_gl_kernels lpvlab_variants lpvlab_glad lpvlab_gl_headers lpvlab_cli)
 install(TARGETS lpvlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # lpvlab-gpubench and its SPIR-V when they were built (the README's run command builds lpvlab alone).

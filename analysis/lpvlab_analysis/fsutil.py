@@ -45,3 +45,19 @@ def write_with(path, writer):
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
+
+
+def load_json(directory, name, required_key, what):
+    """DIR/name as JSON, refused (SummaryError naming the file) when it cannot be read or lacks a
+    non-empty `required_key` ("no <required_key> (not written by <what>?)")."""
+    import json
+    from .summary import SummaryError
+    path = os.path.join(directory, name)
+    try:
+        with open(path) as f:
+            result = json.load(f)
+    except (OSError, ValueError) as exc:
+        raise SummaryError(f"{path}: cannot be read ({exc})") from exc
+    if not isinstance(result, dict) or not result.get(required_key):
+        raise SummaryError(f"{path}: no {required_key} (not written by {what}?)")
+    return result

@@ -30,6 +30,7 @@ import pandas as pd
 from . import equal_time as ET
 from . import fsutil
 from . import gpu_estimate as G
+from . import explain
 from . import grid_slices
 from . import images
 from . import plots
@@ -39,6 +40,7 @@ from . import summary as S
 from . import tables
 from . import templating
 from . import thesis_tables as T
+from . import tuning
 
 # Every table's columns sort by a click on their header (numbers numerically, then text; a second
 # click reverses), dependency-free. The header is the table's <thead> row, else its first row.
@@ -319,6 +321,14 @@ def build_report(sweep_dir, out_dir=None, metric=None, use_exr=True,
     indirect method's own stages, "total", the whole frame, or "gpu-estimate", the method's GL
     kernels estimated on the GPU of gpus.toml key `gpu`)."""
     sweep_dirs = list(sweep_dir) if isinstance(sweep_dir, (list, tuple)) else [sweep_dir]
+    # An explanation (lpvlab explain's directory) and a tune have pages of their own.
+    for kind in (explain, tuning):
+        if len(sweep_dirs) == 1 and kind.is_page_of(sweep_dirs[0]) and \
+                not os.path.isfile(os.path.join(sweep_dirs[0], "summary.csv")):
+            index = kind.build_page(sweep_dirs[0], out_dir or os.path.join(sweep_dirs[0], "report"), CSS,
+                                    SORTABLE_TABLES_JS + IMAGE_CONTROLS_JS)
+            _log(f"wrote {index}")
+            return index
     if len(sweep_dirs) > 1 and not out_dir:
         raise S.SummaryError("a report of several sweeps needs --out (where to write it)")
     gpus = G.load_gpus(gpu_table)
@@ -428,7 +438,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description="Build an HTML report (plots, ablation table, images) of an lpvlab sweep.")
     ap.add_argument("dir", nargs="+",
                     help="sweep directory containing summary.csv and one run directory per configuration; "
-                         "several: one report of them all (needs --out)")
+                         "several: one report of them all (needs --out); or an explanation's directory "
+                         "(lpvlab explain: explain.json) or a tune's (lpvlab tune: tune.json)")
     ap.add_argument("--metric", default=None, help=f"error metric column (default {S.DEFAULT_METRIC})")
     ap.add_argument("--out", default=None, help="output directory (default DIR/report)")
     ap.add_argument("--no-exr", action="store_true", help="do not read EXRs; use combined.png and the error map only")

@@ -40,6 +40,9 @@ struct Options {
   std::vector<std::string> thresholds;    // compare: NAME=VALUE bounds; exit 3 beyond one
   bool json = false;                      // compare, list: JSON instead of the text
   bool force = false;                     // run, fit, sweep: replace a finished run, fit or other sweep in --out
+  std::optional<double> tuneBudgetMs;     // tune: --budget-ms (replaces the file's goal)
+  std::optional<double> tuneError;        // tune: --error
+  int explainVpls = 2048;                 // explain: VPLs per draw (rsm_vpl_subset.h)
   std::string shell;                      // completion: the shell whose script to print
 };
 
@@ -61,7 +64,9 @@ int sweepCommand(const Options& options);    // options.out: the sweep directory
 int summaryCommand(const Options& options);  // options.out: the sweep directory
 int reportCommand(const Options& options);
 int compareCommand(const Options& options);   // options.out: the sweep directory
-int fitCommand(const Options& options);      // options.out: the fit's directory
+int fitCommand(const Options& options);
+int explainCommand(const Options& options);
+int tuneCommand(const Options& options);  // options.out: the tune's directory  // options.out: the explanation's directory      // options.out: the fit's directory
 int listCommand(bool json);  // json: `lpvlab list --json`
 int infoCommand(const Options& options);  // options.experiment holds the scene
 

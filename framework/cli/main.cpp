@@ -1,6 +1,7 @@
 // lpvlab's command line: `lpvlab run [FILE]`, `lpvlab bench [FILE]`, `lpvlab list`,
 // `lpvlab info SCENE`, `lpvlab reference [FILE]`, `lpvlab sweep FILE`, `lpvlab summary DIR`,
-// `lpvlab report DIR`, `lpvlab fit FILE`, `lpvlab compare TEST REFERENCE`,
+// `lpvlab report DIR`, `lpvlab fit FILE`, `lpvlab explain FILE`, `lpvlab tune FILE`,
+// `lpvlab compare TEST REFERENCE`,
 // `lpvlab completion bash`.
 // Every failure below this point is an lpvlab::Error (or a library exception); it is printed
 // once, as "lpvlab: error: <where>: <what>", and the exit code is 1; a usage error (an unknown
@@ -167,6 +168,46 @@ Command addFit(CLI::App& app, Options& o) {
   return {fit, [&o] { return cli::fitCommand(o); }};
 }
 
+Command addExplain(CLI::App& app, Options& o) {
+  CLI::App* explain = app.add_subcommand(
+      "explain",
+      "LPV's error against its reference split by stage (injection, occlusion, propagation, "
+      "rendering): one frame rendered again with each stage replaced by an exact counterpart "
+      "computed on the CPU; writes DIR/explain.json and DIR/explain.exr (docs/explain.md)");
+  explain->add_option("experiment", o.experiment, "Experiment file (default: the Cornell box)");
+  explain->add_option("-o,--out", o.out, "Output directory (default: runs/<name>-explain)");
+  explain->add_flag("--force", o.force, "Replace a finished explanation in the output directory");
+  explain->add_option("-s,--set", o.overrides, "Override one parameter (repeatable)");
+  explain
+      ->add_option("--vpls", o.explainVpls,
+                   "At most this many of the RSM's VPLs per draw (two draws): where the RSM holds "
+                   "more, one per block of texels, chosen by flux (default 2048)")
+      ->check(CLI::Range(1, 1 << 24));
+  return {explain, [&o] { return cli::explainCommand(o); }};
+}
+
+Command addTune(CLI::App& app, Options& o) {
+  CLI::App* tune = app.add_subcommand(
+      "tune",
+      "Search an experiment's [tune.space] for the least error within a frame-time budget, or the "
+      "least time within an error, by successive halving over ever better references; writes "
+      "DIR/tune.json, DIR/pareto.csv and DIR/chosen.toml (resumable; docs/tuning.md)");
+  tune->add_option("experiment", o.experiment, "Experiment file (TOML) with a [tune] table")->required();
+  tune->add_option("-o,--out", o.out, "Tune directory (default: runs/<file stem>-tune)");
+  tune->add_flag("--force", o.force, "Replace another or a finished tune in the directory");
+  tune->add_option("-s,--set", o.overrides, "Override one parameter (repeatable)");
+  tune->add_option("--budget-ms", o.tuneBudgetMs, "The goal: the least error within this median frame time (ms)")
+      ->check(CLI::PositiveNumber);
+  tune->add_option("--error", o.tuneError, "The goal: the least time within this error (the [tune] metric)")
+      ->check(CLI::PositiveNumber);
+  tune->add_option("-j,--jobs", o.jobs, "Runs at a time (default 1: timings are what a tune compares)")
+      ->check(CLI::Range(1, 256));
+  return {tune, [&o] {
+            if (o.tuneBudgetMs && o.tuneError) throw Error("--budget-ms and --error: give one goal, not both");
+            return cli::tuneCommand(o);
+          }};
+}
+
 Command addCompare(CLI::App& app, Options& o) {
   CLI::App* compare = app.add_subcommand(
       "compare",
@@ -273,7 +314,9 @@ int main(int argc, char** argv) {
       lpvlab::addRun(app, options),       lpvlab::addBench(app, options),
       lpvlab::addReference(app, options), lpvlab::addSweep(app, options),
       lpvlab::addSummary(app, options),   lpvlab::addReport(app, options),
-      lpvlab::addFit(app, options),       lpvlab::addCompare(app, options),
+      lpvlab::addFit(app, options),       lpvlab::addExplain(app, options),
+      lpvlab::addTune(app, options),
+      lpvlab::addCompare(app, options),
       lpvlab::addList(app, options),      lpvlab::addInfo(app, options),
       lpvlab::addCompletion(app, options)};
   try {

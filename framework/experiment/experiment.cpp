@@ -198,7 +198,8 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
     checkSweep(root, path.empty() ? "built-in default experiment" : path);
     root.erase("sweep");
   }
-  root.erase("fit");
+  root.erase("fit");   // lpvlab fit's and lpvlab tune's own tables: the rest is the experiment
+  root.erase("tune");
   return loadExperiment(root, path, loadScene);
 }
 

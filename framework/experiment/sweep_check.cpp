@@ -22,6 +22,7 @@ std::vector<std::string> checkConfigurations(
     toml::table table = root;
     table.erase("sweep");
     table.erase("fit");
+    table.erase("tune");
     for (const std::string& o : c.overrides) applyOverride(table, o);
     try {
       const Experiment e = loadExperiment(table, file, std::ref(scenes));

@@ -6,6 +6,16 @@
 
 namespace lpvlab {
 
+Image toImage(const HostImage& rgba, int channels, int firstChannel) {
+  const int w = rgba.width, h = rgba.height;
+  Image image(w, h, channels);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < channels; ++c)
+        image.at(x, h - 1 - y, c) = rgba.texels[std::size_t(y) * w + x][firstChannel + c];
+  return image;
+}
+
 void downloadFloats(const gl::Buffer& buffer, std::size_t floats, std::vector<float>& host) {
   gl::barrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   host.resize(floats);

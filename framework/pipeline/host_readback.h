@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "framework/gl/resources.h"
+#include "framework/io/image.h"
 
 namespace lpvlab {
 
@@ -24,6 +25,10 @@ struct HostDepthImage {
   int width = 0, height = 0, layers = 1;
   std::vector<float> depths;  // depths[x + width * (y + height * layer)]
 };
+
+// An RGBA image (bottom row first, as GL stores it) flipped to top row first, keeping `channels`
+// of its RGBA from `firstChannel` on: a host image as lpvlab's outputs hold it.
+Image toImage(const HostImage& rgba, int channels, int firstChannel = 0);
 
 // A frame's reflective shadow maps on the host (LightMaps' RSM textures), one layer per view.
 struct RsmImages {

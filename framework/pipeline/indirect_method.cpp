@@ -44,6 +44,15 @@ GridDump IndirectMethod::dumpGrid() const {
   throw Error("indirect method \"" + name() + "\" keeps no light grid to dump");
 }
 
+std::string IndirectMethod::explainRefusal() const {
+  return "indirect method \"" + name() + "\" keeps no light grid whose stages could be replaced "
+         "one at a time";
+}
+
+Image IndirectMethod::renderFromGrids(const GridFill&) {
+  throw Error(explainRefusal());
+}
+
 std::string IndirectMethod::derivativeRefusal(const std::string& key) const {
   if (key.rfind('.') == std::string::npos) return "'" + key + "' is not <table>.<name>";
   return "indirect method \"" + name() + "\" has no kernels on dual numbers";

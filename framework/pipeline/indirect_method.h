@@ -33,6 +33,7 @@ namespace lpvlab {
 
 struct Camera;
 struct GBuffer;
+struct GridGeometry;
 struct LightMaps;
 struct PipelineSettings;
 struct Scene;
@@ -141,6 +142,20 @@ public:
   // injection flux balance): manifest entries, none by default. A "warnings" array among them
   // (sentences) joins the run's warnings instead.
   virtual nlohmann::json audit() { return nlohmann::json::object(); }
+
+  // lpvlab explain's grid oracles (framework/explain/, docs/explain.md): why this method's frame
+  // cannot be explained stage by stage, or "" if it can. By default none can (no light grid).
+  virtual std::string explainRefusal() const;
+  // Fills one level's accumulated light grid: given its placement and SH coefficients per
+  // channel, the floats in grid.glsl's layout.
+  using GridFill = std::function<std::vector<float>(const GridGeometry& geometry, int coefficients)>;
+  // After a frame: the indirect image (RGB, top row first) the method's own rendering makes from
+  // the grids `fill` gives every level, in place of the propagated ones. Only where
+  // explainRefusal() is "".
+  virtual Image renderFromGrids(const GridFill& fill);
+  // Whether its propagation blocks light by the scene's geometry (LPV with a GV): the exact grid
+  // it is compared with is then the one with visibility.
+  virtual bool gridBlocksLight() const { return false; }
 
   // Derivatives through a frame (dual_frame.h): why d indirect / d `key` ("<table>.<name>")
   // cannot be carried through this method's frames, or "" if it can. By default none can.

@@ -10,22 +10,6 @@
 
 namespace lpvlab {
 
-namespace {
-
-// An RGBA image (bottom row first, as GL stores it) flipped to top row first, keeping `channels`
-// of its RGBA from `firstChannel` on.
-Image toImage(const HostImage& rgba, int channels, int firstChannel = 0) {
-  const int w = rgba.width, h = rgba.height;
-  Image image(w, h, channels);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < channels; ++c)
-        image.at(x, h - 1 - y, c) = rgba.texels[std::size_t(y) * w + x][firstChannel + c];
-  return image;
-}
-
-}  // namespace
-
 const std::vector<std::string>& Pipeline::stageNames() {
   static const std::vector<std::string> names = {"shadow_maps", "rsm", "gbuffer", "direct"};
   return names;
@@ -243,6 +227,8 @@ std::vector<NamedImage> Pipeline::readOutputs() const {
 }
 
 const LightMaps& Pipeline::lightMaps() const { return lightMapsPass_->lightMaps(); }
+
+const GBuffer& Pipeline::gbuffer() const { return gbufferPass_->gbuffer(); }
 
 nlohmann::json Pipeline::computeReport() const {
   nlohmann::json report = {{"backend", backendName(backend_)},

@@ -121,6 +121,10 @@ public:
   const IndirectMethod& method() const { return *method_; }
   // Diagnostics (tests, audits): the last frame's light maps (shadow maps and RSMs).
   const LightMaps& lightMaps() const;
+  // Diagnostics (lpvlab explain): the last frame's G-buffer, and its raster images on the host
+  // (read back from GL once per frame, or made there by the ray-cast raster passes).
+  const GBuffer& gbuffer() const;
+  HostReadback& host() const { return hostReadback_; }
   // Whether the frame renders a raster input (raster_inputs.h).
   bool renders(std::string_view rasterInput) const;
   // The backend the run resolved ([compute] backend) and where each stage's kernels run:

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <random>
@@ -294,6 +295,91 @@ TEST_F(KillResume, AKilledSequenceResumesToTheUninterruptedFrames) {
         a["sequence"]["frame_records"][std::size_t(frame)].value("temporal", nlohmann::json()))
         << stem;
   }
+}
+
+}  // namespace
+}  // namespace lpvlab
+
+namespace lpvlab {
+namespace {
+
+// Armed once `dir` (searched recursively) holds a file named `name`, or ending so: a checkpoint.
+std::function<Armed()> whenSomeFileEndsWith(const fs::path& dir, const std::string& name) {
+  return [dir, name] {
+    return Armed([dir, name] {
+      std::error_code ignored;
+      if (!fs::exists(dir, ignored)) return false;
+      for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir, ignored)) {
+        const std::string file = e.path().filename().string();
+        if (file.size() >= name.size() && file.compare(file.size() - name.size(), name.size(), name) == 0)
+          return true;
+      }
+      return false;
+    });
+  };
+}
+
+// The oracles' images are checkpointed as they are rendered: a killed explanation resumes with
+// them, and its budget is the uninterrupted one's to the bit (every oracle is deterministic).
+TEST_F(KillResume, AKilledExplanationResumesToTheUninterruptedBudget) {
+  setenv("LPVLAB_CACHE_DIR", (dir_ / "cache").c_str(), 1);
+  const std::vector<std::string> small = {"-s", "output.width=64", "-s", "output.height=64",
+                                          "-s", "light_maps.rsm_resolution=64", "-s", "grid.resolution=16",
+                                          "-s", "reference.samples=8", "--vpls", "512"};
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  std::vector<std::string> args = {"explain", "--out", whole.string()};
+  args.insert(args.end(), small.begin(), small.end());
+  double seconds = 0.0;
+  ASSERT_TRUE(runLpvlab(args, dir_ / "whole.log", 1e9)) << test::readFile(dir_ / "whole.log");
+  fs::remove_all(whole);
+  ASSERT_TRUE(runLpvlab(args, dir_ / "whole.log", 1e9, &seconds, whenSomeFileEndsWith(whole / "partial", ".exr")()));
+  args[2] = killed.string();
+  const int landed = killRepeatedlyThenFinish(args, dir_ / "killed.log", whenSomeFileEndsWith(killed / "partial", ".exr"),
+                                              0.8 * seconds, 3, random_, [&] { return fs::exists(killed / "explain.json"); });
+  unsetenv("LPVLAB_CACHE_DIR");
+  std::cout << landed << " kills landed in the " << seconds << " s after the first oracle's image\n";
+  EXPECT_GE(landed, 1);
+  EXPECT_NE(test::readFile(dir_ / "killed.log").find("from the checkpoint"), std::string::npos);
+  EXPECT_FALSE(fs::exists(killed / "partial"));
+  EXPECT_EQ(leftoverTemporaries(killed), std::vector<fs::path>{});
+  EXPECT_EQ(readJson(whole / "explain.json").at("budgets"), readJson(killed / "explain.json").at("budgets"));
+}
+
+// A killed tune resumes with the runs it finished: it measures, promotes and chooses as the
+// uninterrupted one did (the errors are deterministic, the times are not: a budget every candidate
+// meets ranks them by error alone).
+TEST_F(KillResume, AKilledTuneResumesToTheUninterruptedChoice) {
+  // A cache of its own for each tune: a reference cached with more samples than a rung asks for
+  // is used as it is, so the second tune would compare its first rung with the first's last.
+  setenv("LPVLAB_CACHE_DIR", (dir_ / "cache_whole").c_str(), 1);
+  const fs::path file = write("tune.toml",
+                              "[output]\nwidth = 32\nheight = 32\n[grid]\nresolution = 8\n"
+                              "[light_maps]\nrsm_resolution = 32\n"
+                              "[tune]\nbudget_ms = 1000000.0\ncandidates = 4\neta = 2\nrungs = [2, 4]\n"
+                              "[tune.space]\n\"grid.resolution\" = [6, 8, 10, 12]\n"
+                              "\"propagation.iterations\" = [2, 4, 8]\n");
+  const fs::path whole = dir_ / "whole", killed = dir_ / "killed";
+  double seconds = 0.0;
+  ASSERT_TRUE(runLpvlab({"tune", file.string(), "--out", whole.string()}, dir_ / "whole.log", 1e9, &seconds,
+                        whenSomeFileEndsWith(whole / "rungs", "manifest.json")()))
+      << test::readFile(dir_ / "whole.log");
+  setenv("LPVLAB_CACHE_DIR", (dir_ / "cache_killed").c_str(), 1);
+  const int landed = killRepeatedlyThenFinish(
+      {"tune", file.string(), "--out", killed.string()}, dir_ / "killed.log",
+      whenSomeFileEndsWith(killed / "rungs", "manifest.json"), 0.8 * seconds, 3, random_,
+      [&] { return fs::exists(killed / "tune.json"); });
+  unsetenv("LPVLAB_CACHE_DIR");
+  std::cout << landed << " kills landed in the " << seconds << " s after a tune's first run\n";
+  EXPECT_GE(landed, 1);
+  const nlohmann::json a = readJson(whole / "tune.json"), b = readJson(killed / "tune.json");
+  ASSERT_EQ(a.at("rungs").size(), b.at("rungs").size());
+  for (std::size_t r = 0; r < a["rungs"].size(); ++r) {
+    EXPECT_EQ(a["rungs"][r].at("promoted"), b["rungs"][r].at("promoted")) << r;
+    std::map<std::string, double> errors;
+    for (const nlohmann::json& x : a["rungs"][r]["results"]) errors[x["id"]] = x["error"];
+    for (const nlohmann::json& x : b["rungs"][r]["results"]) EXPECT_EQ(errors.at(x["id"]), x["error"].get<double>());
+  }
+  EXPECT_EQ(a.at("candidates"), b.at("candidates"));
 }
 
 }  // namespace

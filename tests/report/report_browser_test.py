@@ -1,4 +1,5 @@
-"""`lpvlab report`'s page in a real browser (headless Chromium through Selenium).
+"""`lpvlab report`'s pages in a real browser (headless Chromium through Selenium): a sweep's, an
+explanation's (`lpvlab explain`, class ExplanationInBrowser) and a tune's (`lpvlab tune`, TuneInBrowser).
 
 Usage: report_browser_test.py LPVLAB_EXECUTABLE [--sweep DIR] [--screenshot PNG]
 Runs a small sweep whose configurations compare with a path-traced reference (or takes the sweep
@@ -51,6 +52,33 @@ def browser():
     return webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
 
 
+def run_lpvlab(work, *commands):
+    """Runs each lpvlab command (a list of arguments) with the reference cache in `work`."""
+    env = dict(os.environ, LPVLAB_CACHE_DIR=os.path.join(work, "cache"))
+    for args in commands:
+        r = subprocess.run([ARGS.lpvlab, *args], env=env, capture_output=True, text=True)
+        if r.returncode != 0:
+            raise AssertionError(f"lpvlab {' '.join(args)}: {r.stderr}")
+
+
+def open_page(index):
+    """A browser showing `index` once every image has finished loading (loaded or not)."""
+    driver = browser()
+    driver.get("file://" + urllib.parse.quote(index))
+    driver.set_script_timeout(30)
+    driver.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        Promise.all([...document.images].map(img => img.complete ? null :
+            new Promise(r => { img.onload = img.onerror = r; }))).then(() => done());
+    """)
+    return driver
+
+
+def image_states(driver):
+    """[src, complete, natural width] of every image of the page."""
+    return driver.execute_script("return [...document.images].map(i => [i.src, i.complete, i.naturalWidth]);")
+
+
 class ReportInBrowser(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -62,23 +90,11 @@ class ReportInBrowser(unittest.TestCase):
             with open(path, "w") as f:
                 f.write(EXPERIMENT)
             cls.sweep = os.path.join(cls.work, "sweep")
-            env = dict(os.environ, LPVLAB_CACHE_DIR=os.path.join(cls.work, "cache"))
-            for args in (["sweep", path, "--out", cls.sweep], ["report", cls.sweep]):
-                r = subprocess.run([ARGS.lpvlab, *args], env=env, capture_output=True, text=True)
-                if r.returncode != 0:
-                    raise AssertionError(f"lpvlab {' '.join(args)}: {r.stderr}")
+            run_lpvlab(cls.work, ["sweep", path, "--out", cls.sweep], ["report", cls.sweep])
         with open(os.path.join(cls.sweep, "sweep.json")) as f:
             cls.configurations = len(json.load(f)["configurations"])
         cls.index = os.path.join(cls.sweep, "report", "index.html")
-        cls.driver = browser()
-        cls.driver.get("file://" + urllib.parse.quote(cls.index))
-        # Images load asynchronously: wait until every one has finished, loaded or not.
-        cls.driver.set_script_timeout(30)
-        cls.driver.execute_async_script("""
-            const done = arguments[arguments.length - 1];
-            Promise.all([...document.images].map(img => img.complete ? null :
-                new Promise(r => { img.onload = img.onerror = r; }))).then(() => done());
-        """)
+        cls.driver = open_page(cls.index)
 
     @classmethod
     def tearDownClass(cls):
@@ -86,8 +102,7 @@ class ReportInBrowser(unittest.TestCase):
         shutil.rmtree(cls.work, ignore_errors=True)
 
     def test_every_image_loads(self):
-        images = self.driver.execute_script(
-            "return [...document.images].map(i => [i.src, i.complete, i.naturalWidth]);")
+        images = image_states(self.driver)
         self.assertGreater(len(images), 4)  # plots, the reference and each configuration's images
         for src, complete, width in images:
             self.assertTrue(complete and width > 0, f"image did not load: {src}")
@@ -168,6 +183,106 @@ class ReportInBrowser(unittest.TestCase):
             self.skipTest("no --screenshot asked for")
         self.driver.set_window_size(1280, ARGS.screenshot_height)
         self.assertTrue(self.driver.save_screenshot(ARGS.screenshot))
+
+
+class ExplanationInBrowser(unittest.TestCase):
+    """`lpvlab explain` on a small Cornell box and `lpvlab report` of its directory: the error
+    budget's page (analysis/lpvlab_analysis/explain.py)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="lpvlab-explain-browser-")
+        cls.dir = os.path.join(cls.work, "explained")
+        small = ["-s", "output.width=64", "-s", "output.height=64", "-s", "grid.resolution=12",
+                 "-s", "light_maps.rsm_resolution=64", "-s", "reference.samples=8", "--vpls", "128"]
+        run_lpvlab(cls.work, ["explain", *small, "--out", cls.dir], ["report", cls.dir])
+        cls.driver = open_page(os.path.join(cls.dir, "report", "index.html"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_the_chart_and_the_chain_load_and_the_stages_are_tabulated(self):
+        images = image_states(self.driver)
+        self.assertEqual(len(images), 1 + 5)  # the chart, the reference and the chain's four images
+        for src, complete, width in images:
+            self.assertTrue(complete and width > 0, f"image did not load: {src}")
+        stages = self.driver.execute_script(
+            "return [...document.querySelectorAll('table')[1].tBodies[0].rows].map(r => r.cells[0].textContent);")
+        self.assertEqual([s.split(" ")[0] for s in stages], ["propagation", "rendering", "occlusion", "injection"])
+
+    def test_a_click_flips_an_oracle_with_the_reference(self):
+        img = self.driver.find_elements("css selector", "img.flip")[0]
+        own, reference = img.get_attribute("src"), img.get_attribute("data-flip")
+        img.click()
+        self.assertTrue(img.get_attribute("src").endswith(reference.lstrip("./")))
+        img.click()
+        self.assertEqual(img.get_attribute("src"), own)
+
+    def test_no_overflow_and_no_console_error(self):
+        self.driver.set_window_size(1280, 1000)
+        page, window = self.driver.execute_script(
+            "return [document.documentElement.scrollWidth, document.documentElement.clientWidth];")
+        self.assertLessEqual(page, window)
+        errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+        self.assertEqual(errors, [])
+
+
+TUNE = """
+[output]
+width = 32
+height = 32
+[grid]
+resolution = 8
+[light_maps]
+rsm_resolution = 32
+[tune]
+budget_ms = "baseline"
+candidates = 2
+eta = 2
+rungs = [2, 4]
+[tune.space]
+"grid.resolution" = [6, 10]
+"""
+
+
+class TuneInBrowser(unittest.TestCase):
+    """`lpvlab tune` on a tiny Cornell box and `lpvlab report` of its directory: the tune's page
+    (analysis/lpvlab_analysis/tuning.py)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="lpvlab-tune-browser-")
+        path = os.path.join(cls.work, "tune.toml")
+        with open(path, "w") as f:
+            f.write(TUNE)
+        cls.dir = os.path.join(cls.work, "tuned")
+        run_lpvlab(cls.work, ["tune", path, "--out", cls.dir], ["report", cls.dir])
+        cls.driver = open_page(os.path.join(cls.dir, "report", "index.html"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_the_plot_loads_and_the_last_rung_is_tabulated(self):
+        images = image_states(self.driver)
+        self.assertEqual(len(images), 1)
+        for src, complete, width in images:
+            self.assertTrue(complete and width > 0, f"image did not load: {src}")
+        ids = self.driver.execute_script(
+            "return [...document.querySelector('table').tBodies[0].rows].map(r => r.cells[0].textContent);")
+        self.assertIn("baseline", ids)
+
+    def test_links_resolve_no_overflow_and_no_console_error(self):
+        for href in self.driver.execute_script("return [...document.links].map(a => a.href);"):
+            self.assertTrue(os.path.exists(urllib.parse.unquote(urllib.parse.urlparse(href).path)), href)
+        page, window = self.driver.execute_script(
+            "return [document.documentElement.scrollWidth, document.documentElement.clientWidth];")
+        self.assertLessEqual(page, window)
+        errors = [e for e in self.driver.get_log("browser") if e["level"] in ("SEVERE", "ERROR")]
+        self.assertEqual(errors, [])
 
 
 def missing():

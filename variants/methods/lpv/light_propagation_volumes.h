@@ -64,6 +64,9 @@ public:
   nlohmann::json describe(const std::map<std::string, double>& medianStageMs) const override;
   std::vector<std::string> summaryKeys() const override;
   nlohmann::json audit() override;
+  std::string explainRefusal() const override;
+  Image renderFromGrids(const GridFill& fill) override;
+  bool gridBlocksLight() const override;
   std::string derivativeRefusal(const std::string& key) const override;
   FrameDerivatives renderDerivatives(const std::vector<std::string>& seeds,
                                      const std::function<void()>& renderFrame) override;

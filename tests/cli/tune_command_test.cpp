@@ -1,0 +1,102 @@
+// `lpvlab tune` as a user runs it, on a tiny Cornell box: it writes tune.json, pareto.csv and
+// chosen.toml, whose configuration runs when included and is the best within the goal of those
+// measured at the last rung; an interrupted tune resumes with the runs it has; another tune in
+// the directory is refused; a bad [tune] table is one error naming the key.
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "executable_support.h"
+#include "io/temp_dir.h"
+
+namespace lpvlab {
+namespace {
+
+namespace fs = std::filesystem;
+using test::quoted;
+
+const char* kTune = R"(
+[output]
+width = 32
+height = 32
+[grid]
+resolution = 8
+[light_maps]
+rsm_resolution = 32
+[tune]
+budget_ms = "baseline"
+candidates = 3
+eta = 2
+rungs = [2, 4]
+[tune.space]
+"grid.resolution" = [6, 10]
+"propagation.iterations" = { min = 2, max = 12 }
+[[tune.held_out]]
+name = "lower"
+camera = { position = [0.278, 0.2, -0.4], look_at = [0.278, 0.25, 0.3], fov_deg = 50.0 }
+)";
+
+TEST(TuneCommand, ChoosesWithinTheGoalWritesItsFilesAndResumes) {
+  test::TempDir dir;
+  std::ofstream(dir.file("tune.toml")) << kTune;
+  const fs::path out = dir.path() / "tuned";
+  const std::string args = "tune tune.toml --out " + quoted(out.string());
+  const test::LpvlabResult r = test::runLpvlab(args, dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const nlohmann::json result = nlohmann::json::parse(test::readFile(out / "tune.json"));
+  ASSERT_EQ(result["rungs"].size(), 2u);
+  EXPECT_EQ(result["rungs"][0]["results"].size(), 4u);  // the baseline and 3 candidates
+  EXPECT_EQ(result["rungs"][0]["promoted"].size(), 2u);  // ceil(3 / 2)
+  EXPECT_EQ(result["rungs"][1]["results"].size(), 3u);  // the baseline and the 2 promoted
+  // The chosen one is the most accurate of the last rung's within its budget (the baseline's time).
+  const double budget = result["rungs"][1]["budget_ms"].get<double>();
+  double best = 1e300;
+  for (const nlohmann::json& x : result["rungs"][1]["results"])
+    if (x["ms"].get<double>() <= budget) best = std::min(best, x["error"].get<double>());
+  ASSERT_TRUE(result["chosen"].is_object()) << r.out;
+  EXPECT_EQ(result["chosen"]["error"].get<double>(), best);
+  EXPECT_TRUE(result["held_out"]["lower"]["chosen"].is_object());
+  EXPECT_TRUE(result["held_out"]["lower"]["baseline"].is_object());
+  EXPECT_NE(test::readFile(out / "pareto.csv").find("rung,samples,id,error,ms"), std::string::npos);
+
+  // chosen.toml is a file an experiment includes.
+  std::ofstream(dir.file("use.toml")) << "include = [\"" << (out / "chosen.toml").string()
+                                      << "\"]\n[output]\nwidth = 32\nheight = 32\n";
+  const test::LpvlabResult use = test::runLpvlab(
+      "run use.toml -s timing.warmup=0 -s timing.repeats=1 --out " + quoted((dir.path() / "use").string()),
+      dir.path(), dir.path());
+  EXPECT_EQ(use.exitCode, 0) << use.err;
+
+  // Interrupted: the last rung's summary and one of its runs gone; the rest is reused.
+  fs::remove(out / "tune.json");
+  fs::remove_all(out / "rungs" / "1" / "baseline");
+  const test::LpvlabResult resumed = test::runLpvlab(args, dir.path(), dir.path());
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("4 runs, 4 already done"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("3 runs, 2 already done"), std::string::npos) << resumed.err;
+  // Finished: not redone without --force; another tune is refused.
+  const test::LpvlabResult again = test::runLpvlab(args, dir.path(), dir.path());
+  EXPECT_EQ(again.exitCode, 1);
+  EXPECT_NE(again.err.find("--force"), std::string::npos) << again.err;
+}
+
+TEST(TuneCommand, ABadTableIsOneErrorNamingTheKey) {
+  test::TempDir dir;
+  std::ofstream(dir.file("bad.toml")) << "[tune]\nbudget_ms = 10.0\n[tune.space]\n\"grid.resolution\" = [8, -3]\n";
+  const test::LpvlabResult r = test::runLpvlab("tune bad.toml --out " + quoted((dir.path() / "x").string()),
+                                               dir.path(), dir.path());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("grid.resolution"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "x" / "tune_state.json")) << "checked before anything was written";
+  const test::LpvlabResult both =
+      test::runLpvlab("tune bad.toml --budget-ms 5 --error 0.1", dir.path(), dir.path());
+  EXPECT_NE(both.exitCode, 0);
+  EXPECT_NE(both.err.find("one goal"), std::string::npos) << both.err;
+}
+
+}  // namespace
+}  // namespace lpvlab
