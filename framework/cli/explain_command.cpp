@@ -145,7 +145,7 @@ int explainCommand(const Options& options) {
   settings.checkpoint = checkpointIn(dir / "partial", checkpointKey(options));
   const ExplainedFrame explained = explainFrame(pipeline, rays.embree(), settings);
 
-  const Image mask = coverageMask(findAov(aovs, "depth"));
+  const Image& mask = explained.mask;
   nlohmann::json result = {
       {"experiment", experiment.name},
       {"file", experiment.file},

@@ -67,12 +67,6 @@ nlohmann::json versions(const GlContext& context) {
   return v;
 }
 
-double mean(const Image& image) {
-  double sum = 0.0;
-  for (float v : image.pixels) sum += v;
-  return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
-}
-
 }  // namespace
 
 Image coverageMask(const Image& depth) {
@@ -123,7 +117,7 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
     const Image& b = findAov(ref.aovs, theirs);
     const Image& variance = findAov(ref.aovs, theirs + "_variance");
     const ComparisonResult z = compareToExact(b, variance, a);
-    const double meanRun = mean(a), meanReference = mean(b);
+    const double meanRun = imageMean(a), meanReference = imageMean(b);
     nlohmann::json& pair = out["comparison"][mine + "_vs_" + theirs];
     pair = {{"mean_run", meanRun},
             {"mean_reference", meanReference},

@@ -9,12 +9,6 @@ namespace lpvlab {
 
 namespace {
 
-double mean(const Image& image) {
-  double sum = 0.0;
-  for (float v : image.pixels) sum += v;
-  return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
-}
-
 Image plus(const Image& a, const Image* b) {
   if (!b) return a;
   Image out = a;
@@ -31,8 +25,8 @@ nlohmann::json finiteOrString(double value) {
 
 ErrorFigures errorFigures(const Image& test, const Image& reference, const Image& mask) {
   const MetricSet metrics = computeMetrics(test, reference, &mask);
-  const double reference_mean = mean(reference);
-  return {metrics.blockNrmse, metrics.rmse, reference_mean > 0.0 ? mean(test) / reference_mean : 0.0};
+  const double reference_mean = imageMean(reference);
+  return {metrics.blockNrmse, metrics.rmse, reference_mean > 0.0 ? imageMean(test) / reference_mean : 0.0};
 }
 
 nlohmann::json toJson(const ErrorFigures& figures) {
@@ -110,9 +104,9 @@ nlohmann::json errorBudget(const ExplainImages& images, const Image* direct, con
                    {"against_replacement", toJson(errors.back())}});
   out["terms"] = terms;
   out["total"] = toJson(errors.front());
-  const double visibleMean = mean(images.gatherVisible);
+  const double visibleMean = imageMean(images.gatherVisible);
   // Leakage: the light an exact gather without visibility adds to the one with it.
-  out["leakage_factor"] = visibleMean > 0.0 ? mean(images.gather) / visibleMean : 0.0;
+  out["leakage_factor"] = visibleMean > 0.0 ? imageMean(images.gather) / visibleMean : 0.0;
   out["occlusion_ignored"] = toJson(errorFigures(plus(images.gather, direct), reference, mask));
   out["chain"] = nlohmann::json::array();
   for (const Link& link : chain) out["chain"].push_back(link.name);

@@ -71,18 +71,11 @@ Image average(const Image& a, const Image& b) {
 // The noise of the mean of two independent draws: half their difference's block RMSE, over the
 // mean of their mean (block nRMSE's normalisation). Zero for identical draws.
 double noiseOfMean(const Image& a, const Image& b, const Image& mean, const Image& mask) {
-  double sum = 0.0;
-  for (float v : mean.pixels) sum += v;
-  if (!(sum > 0.0)) return 0.0;
+  const double meanOfMean = imageMean(mean);
+  if (!(meanOfMean > 0.0)) return 0.0;
   const MetricSet m = computeMetrics(a, b, &mask);  // normalised by b's mean
-  double sumB = 0.0;
-  for (float v : b.pixels) sumB += v;
-  return 0.5 * m.blockNrmse * sumB / sum;
+  return 0.5 * m.blockNrmse * imageMean(b) / meanOfMean;
 }
-
-}  // namespace
-
-namespace {
 
 // The pixels the camera sees (the G-buffer's position.w), top row first as the outputs are.
 Image coveredPixels(const HostGBuffer& g) {
@@ -165,13 +158,14 @@ ExplainedFrame explainFrame(Pipeline& pipeline, const EmbreeScene& scene,
   HostReadback& host = pipeline.host();
   const RsmImages rsm{&host.image(maps.rsmPosition), &host.image(maps.rsmNormal), &host.image(maps.rsmFlux)};
   const HostGBuffer g = hostGBuffer(host, pipeline.gbuffer());
-  const Image mask = coveredPixels(g);
+  ExplainedFrame out;
+  out.mask = coveredPixels(g);
+  const Image& mask = out.mask;
   const RsmVplSubset draws[2] = {
       rsmVplSubset(rsm, maps.views, maps.rsmResolution, settings.vplsPerDraw, settings.seed, 0),
       rsmVplSubset(rsm, maps.views, maps.rsmResolution, settings.vplsPerDraw, settings.seed, 1)};
   const int drawCount = draws[0].blockSide > 1 ? 2 : 1;  // else both draws are every texel
 
-  ExplainedFrame out;
   // The method's own image and grid, before the oracles' renders replace them.
   out.images.method = findAov(pipeline.readOutputs(), "indirect");
   const double cells = gridCells(method);

@@ -36,6 +36,7 @@ struct ExplainSettings {
 
 struct ExplainedFrame {
   ExplainImages images;
+  Image mask;                    // the pixels the camera sees (1 channel), which every figure covers
   bool gridBlocksLight = false;  // the method's propagation blocks light (IndirectMethod)
   nlohmann::json vpls;           // how many, from how many covered texels, the block side
   nlohmann::json seconds;        // CPU wall time per oracle

@@ -162,6 +162,12 @@ const Image* findAovOrNull(const std::vector<NamedImage>& aovs, const std::strin
   return nullptr;
 }
 
+double imageMean(const Image& image) {
+  double sum = 0.0;
+  for (float v : image.pixels) sum += v;
+  return image.pixels.empty() ? 0.0 : sum / double(image.pixels.size());
+}
+
 const Image& findAov(const std::vector<NamedImage>& aovs, const std::string& name) {
   if (const Image* found = findAovOrNull(aovs, name)) return *found;
   std::string names;

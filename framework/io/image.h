@@ -35,6 +35,9 @@ const Image& findAov(const std::vector<NamedImage>& aovs, const std::string& nam
 // The AOV called `name`, or null when there is none.
 const Image* findAovOrNull(const std::vector<NamedImage>& aovs, const std::string& name);
 
+// The mean over every pixel and channel (background included); 0 for an empty image.
+double imageMean(const Image& image);
+
 // Writes all AOVs (same size) into one multi-channel float EXR; `metadata` key/values become
 // string attributes in the header (e.g. the run's configuration hash).
 void writeExr(const std::string& path, const std::vector<NamedImage>& aovs,

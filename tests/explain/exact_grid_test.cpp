@@ -26,6 +26,16 @@ GridGeometry unitGrid(int cells, float size) {
   return g;
 }
 
+// A scene of one white material, for quads to be added to.
+Scene whiteScene(const std::string& source) {
+  Scene scene;
+  scene.source = source;
+  Material white;
+  white.name = "white";
+  scene.materials.push_back(white);
+  return scene;
+}
+
 // The radiance the trilinear kernel gives a white Lambertian point at `p` facing `n`.
 glm::vec3 renderedAt(const std::vector<float>& grid, const GridGeometry& geometry, int coefficients,
                      const glm::vec3& p, const glm::vec3& n) {
@@ -103,11 +113,7 @@ TEST(ExactGrid, AVplInsideACellIsSpreadOverItsCrossSection) {
 // A closed convex box: every VPL on its inner walls sees every cell centre inside it, so the grid
 // with visibility is the grid without. A wall across the middle then hides the far half.
 TEST(ExactGrid, VisibilityChangesNothingInAConvexBoxAndHidesBehindAWall) {
-  Scene scene;
-  scene.source = "test:box";
-  Material white;
-  white.name = "white";
-  scene.materials.push_back(white);
+  Scene scene = whiteScene("test:box");
   const float a = 1.0f;
   const auto wall = [&](const char* name, std::array<glm::vec3, 4> corners) {
     scene.meshes.push_back(testing::quad(name, 0, corners));
@@ -183,11 +189,7 @@ namespace {
 
 // A cell the wall cuts through sees the VPL from half its visibility points: half the light.
 TEST(ExactGrid, ACellAWallCutsSeesTheLightFromItsOpenPart) {
-  Scene scene;
-  scene.source = "test:wall";
-  Material white;
-  white.name = "white";
-  scene.materials.push_back(white);
+  Scene scene = whiteScene("test:wall");
   // The plane z = 0 facing +z and -z, far wider than the grid.
   scene.meshes.push_back(testing::quad("wall", 0, {glm::vec3(-9, -9, 0), glm::vec3(9, -9, 0), glm::vec3(9, 9, 0), glm::vec3(-9, 9, 0)}));
   scene.meshes.push_back(testing::quad("back", 0, {glm::vec3(-9, -9, 0), glm::vec3(-9, 9, 0), glm::vec3(9, 9, 0), glm::vec3(9, -9, 0)}));
