@@ -27,7 +27,8 @@ install(DIRECTORY "${CMAKE_SOURCE_DIR}/shaders" "${CMAKE_SOURCE_DIR}/experiments
         DESTINATION share/lpvlab)
 install(DIRECTORY "${CMAKE_BINARY_DIR}/spirv/" DESTINATION share/lpvlab/spirv OPTIONAL
         FILES_MATCHING PATTERN "*.spv")
-install(FILES "${CMAKE_SOURCE_DIR}/analysis/report.py" "${CMAKE_SOURCE_DIR}/analysis/pyproject.toml"
+install(FILES "${CMAKE_SOURCE_DIR}/analysis/report.py" "${CMAKE_SOURCE_DIR}/analysis/gpu_estimate.py"
+              "${CMAKE_SOURCE_DIR}/analysis/pyproject.toml"
         DESTINATION share/lpvlab/analysis)
 install(DIRECTORY "${CMAKE_SOURCE_DIR}/analysis/lpvlab_analysis" DESTINATION share/lpvlab/analysis
         PATTERN "__pycache__" EXCLUDE)

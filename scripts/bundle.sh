@@ -130,7 +130,7 @@ cp "$source_dir/scripts/gpu-check.sh" "$partial/bin/gpu-check"
 
 cp -r "$source_dir/shaders" "$source_dir/experiments" "$partial/share/lpvlab/"
 mkdir -p "$partial/share/lpvlab/analysis"
-cp "$source_dir/analysis/report.py" "$partial/share/lpvlab/analysis/"
+cp "$source_dir/analysis/report.py" "$source_dir/analysis/gpu_estimate.py" "$partial/share/lpvlab/analysis/"
 cp -r "$source_dir/analysis/lpvlab_analysis" "$partial/share/lpvlab/analysis/"
 find "$partial/share/lpvlab" -name __pycache__ -type d -prune -exec rm -rf {} +
 cp "$source_dir/README.md" "$partial/share/lpvlab/"

@@ -34,6 +34,25 @@ def pareto(points):
     return front
 
 
+def is_estimated(result):
+    """Whether the tune's times are the GPU estimate (time = "gpu-estimate"), not measured."""
+    return result.get("time") == "gpu-estimate"
+
+
+def time_label(result):
+    """The time axis: what was timed, how, and where; or that it is an estimate, and of what."""
+    if is_estimated(result):
+        return f"GPU-estimated method time per frame on {result.get('gpu', '?')} (ms; an estimate, not a measurement)"
+    return f"median {result['time']} time per frame (ms; each run's own clock, on {result['host']['cpu']})"
+
+
+def time_note(result):
+    """The page's sentence on the times."""
+    if is_estimated(result):
+        return f"Times: {result['clock']}. The runs themselves ran on {result['host']['cpu']}"
+    return f"Times: {result['clock']}, on {result['host']['cpu']}"
+
+
 def figure(result):
     """Error against time: every rung's candidates (lighter for earlier rungs), the last rung's
     Pareto front, the budget, the chosen configuration and the baseline."""
@@ -55,7 +74,7 @@ def figure(result):
     if result.get("chosen"):
         c = result["chosen"]
         ax.scatter([c["ms"]], [c["error"]], marker="*", s=220, color="#ff7f0e", edgecolors="k", label="chosen")
-    ax.set_xlabel(f"median {result['time']} time per frame (ms; each run's own clock, on {result['host']['cpu']})")
+    ax.set_xlabel(time_label(result))
     ax.set_ylabel(f"{result['metric']} (lower is better)")
     ax.set_title(result["goal"], fontsize=10)
     ax.legend(fontsize=8)
@@ -79,7 +98,8 @@ def build_page(directory, out_dir, css, js):
     links = [(os.path.relpath(os.path.join(directory, n), out_dir), n)
              for n in ("tune.json", "pareto.csv", "chosen.toml") if os.path.isfile(os.path.join(directory, n))]
     page = templating.environment().get_template("tune.html.j2").render(
-        css=css, js=js, result=result, rows=rows, plot=os.path.relpath(plot, out_dir), links=links,
+        css=css, js=js, result=result, rows=rows, time_note=time_note(result),
+        time_column="GPU-estimated ms" if is_estimated(result) else f"{result['time']} ms", plot=os.path.relpath(plot, out_dir), links=links,
         chosen_name=name_of(result, result["chosen"]["id"]) if result.get("chosen") else None,
         directory=os.path.abspath(directory),
         generated=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"))

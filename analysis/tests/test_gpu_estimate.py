@@ -1,6 +1,8 @@
 """The GPU estimate (gpu_estimate.py): the shipped GPU table, the roofline bound, how the
 estimate follows the counters, the comparison with the thesis's tables, errors naming the file
 and key, and the report's labelled section."""
+import contextlib
+import io
 import math
 import os
 import tempfile
@@ -9,6 +11,7 @@ import unittest
 import pandas as pd
 
 from lpvlab_analysis import gpu_estimate as G
+from lpvlab_analysis import summary as S
 from lpvlab_analysis import thesis_tables as T
 
 
@@ -249,3 +252,54 @@ class ReportSectionTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class RunEstimatesTest(unittest.TestCase):
+    """lpvlab-gpu-estimate (run_estimates.py), which `lpvlab tune` runs with time = "gpu-estimate"."""
+
+    TABLE = ("[m]\nname = 'Measured GPU'\nfma_per_s = 1e12\nbytes_per_s = 100e9\n"
+             "[[m.measured]]\nfamily = 'propagation'\nsh_order = 1\nunits_per_s = 1.25e8\n"
+             "multiply_adds_per_unit = 10\nbytes_per_unit = 400\nsource = 'test'\n")
+
+    def _run(self, csv_text, gpu="m"):
+        from lpvlab_analysis import run_estimates as R
+        d = tempfile.mkdtemp()
+        rows, out = os.path.join(d, "rows.csv"), os.path.join(d, "out.json")
+        with open(rows, "w") as f:
+            f.write(csv_text)
+        status = R.main([rows, "--gpu", gpu, "--table", _table(self.TABLE), "--out", out])
+        if status != 0:
+            return status, None
+        import json
+        with open(out) as f:
+            return status, json.load(f)
+
+    def test_the_estimate_of_a_run_is_the_reports_speed_axis(self):
+        # Propagation: 1e9 bytes at 100 GB/s is a 10 ms bound; the GPU was measured at half its
+        # roofline (1.25e8 of 2.5e8 units/s), so 20 ms calibrated. Injection was never measured:
+        # its roofline bound, 2 ms. The raster passes (rsm) are the pipeline's, not the method's.
+        csv = ("id,param.grid.sh_order,gpu_work.propagation.multiply_adds,gpu_work.propagation.bytes,"
+               "gpu_work.injection.bytes,gpu_work.rsm.bytes\n"
+               "0,1,1e6,1e9,2e8,5e9\n1,1,1e6,2e9,2e8,5e9\n2,1,,,,\n")
+        status, out = self._run(csv)
+        self.assertEqual(status, 0)
+        self.assertAlmostEqual(out["runs"]["0"], 22.0)
+        self.assertAlmostEqual(out["runs"]["1"], 42.0)  # the bound follows the bytes
+        self.assertIsNone(out["runs"]["2"])              # nothing counted: no estimate, not 0 ms
+        self.assertEqual(out["gpu"], "Measured GPU")
+        self.assertIn("estimate", out["words"])
+        self.assertIn("not a measurement", out["words"])
+        # The report's own estimate of the same rows gives the same figures.
+        df = pd.read_csv(io.StringIO(csv))
+        report_ms = S.with_speed(df, "gpu-estimate", G.load_gpus(_table(self.TABLE))[0])[S.SPEED_COL]
+        self.assertAlmostEqual(report_ms[0], out["runs"]["0"])
+
+    def test_no_rows_checks_the_gpu_and_an_unknown_gpu_is_refused_by_name(self):
+        status, out = self._run("id,param.grid.sh_order\n")
+        self.assertEqual((status, out["runs"]), (0, {}))
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err):
+            status, _ = self._run("id,param.grid.sh_order\n", gpu="nope")
+        self.assertEqual(status, 2)
+        self.assertIn("--gpu nope: not a GPU of", err.getvalue())
+        self.assertIn("it has m", err.getvalue())

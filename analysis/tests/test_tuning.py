@@ -59,6 +59,23 @@ class Tuning(unittest.TestCase):
             self.assertIn("3.00", page)  # baseline / chosen on the held-out view
             self.assertTrue(os.path.isfile(os.path.join(root, "report", "img", "pareto.png")))
 
+    def test_an_estimated_tune_says_its_times_are_an_estimate_and_on_which_gpu(self):
+        result = dict(RESULT, time="gpu-estimate", gpu="h100_sxm",
+                      clock="an estimate from counted work, not a measurement: the indirect method's GL kernels")
+        fig = T.figure(result)
+        label = fig.axes[0].get_xlabel()
+        plt.close(fig)
+        self.assertIn("h100_sxm", label)
+        self.assertIn("not a measurement", label)
+        self.assertNotIn("test CPU", label)  # not timed there
+        with tempfile.TemporaryDirectory() as root:
+            with open(os.path.join(root, "tune.json"), "w") as f:
+                json.dump(result, f)
+            with open(report.build_report(root)) as f:
+                page = f.read()
+            self.assertIn("GPU-estimated ms", page)
+            self.assertIn("not a measurement", page)
+
     def test_a_directory_without_rungs_is_refused(self):
         with tempfile.TemporaryDirectory() as root:
             with open(os.path.join(root, "tune.json"), "w") as f:

@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "framework/cli/analysis_program.h"
 #include "framework/cli/child_runs.h"
 #include "framework/cli/commands.h"
 #include "framework/core/atomic_file.h"
@@ -30,6 +31,7 @@
 #include "framework/experiment/experiment_file.h"
 #include "framework/experiment/sweep_check.h"
 #include "framework/experiment/sweep_expansion.h"
+#include "framework/experiment/work_columns.h"
 #include "framework/io/provenance.h"
 #include "framework/tune/successive_halving.h"
 #include "framework/tune/tune_space.h"
@@ -80,23 +82,104 @@ std::size_t runMeasurements(const std::vector<Measurement>& all, int jobs, const
   return pending.empty() ? 0 : runChildren(executablePath().string(), pending, jobs, what).size();
 }
 
-// A finished run's error and median time, or nullopt where it failed or lacks the figure.
-std::optional<std::pair<double, double>> figures(const TuneSpec& spec, const fs::path& runDir) {
+// time = "gpu-estimate": per finished run (by its directory) the estimate in ms of its indirect
+// method's GL kernels on spec.gpu, from the work its manifest counted. The analysis package
+// computes it (analysis/gpu_estimate.py), the same estimate as `lpvlab report --time
+// gpu-estimate`; `words` says how it was estimated.
+struct GpuEstimates {
+  std::map<std::string, double> ms;
+  std::string words, gpu;
+};
+
+GpuEstimates estimateGpuTimes(const TuneSpec& spec, const std::vector<Measurement>& all, const fs::path& stem) {
+  std::vector<std::map<std::string, double>> rows;
+  std::vector<std::string> directories;
+  std::set<std::string> columns;
+  for (const Measurement& m : all) {
+    std::ifstream in(m.directory / "manifest.json");
+    const nlohmann::json manifest = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (!manifest.is_object()) continue;
+    std::map<std::string, double> row;
+    for (const auto& [key, value] : workColumns(manifest))
+      if (key.rfind("gpu_work.", 0) == 0) row[key] = value, columns.insert(key);
+    const nlohmann::json::json_pointer order("/configuration/grid/sh_order");
+    row["param.grid.sh_order"] = manifest.contains(order) ? manifest[order].get<double>() : 1.0;
+    rows.push_back(row);
+    directories.push_back(m.directory.string());
+  }
+  columns.insert("param.grid.sh_order");
+  std::ostringstream csv;
+  csv << "id";
+  for (const std::string& c : columns) csv << "," << c;
+  csv << "\n" << std::setprecision(17);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    csv << i;
+    for (const std::string& c : columns)
+      if (rows[i].count(c)) csv << "," << rows[i].at(c);
+      else csv << ",";
+    csv << "\n";
+  }
+  const fs::path csvPath = stem.string() + ".csv", jsonPath = stem.string() + ".json";
+  fs::create_directories(csvPath.parent_path());
+  writeTextAtomically(csvPath.string(), csv.str());
+  const int status = runAnalysisProgram("gpu-estimate", {csvPath.string(), "--gpu", spec.gpu, "--out", jsonPath.string()});
+  if (status != 0)
+    throw Error("tune: the GPU estimate of " + csvPath.string() + " failed (exit " + std::to_string(status) +
+                "; its message is above)");
+  std::ifstream in(jsonPath);
+  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+  if (!result.is_object() || !result.contains("runs")) throw Error(jsonPath.string() + ": not the GPU estimate's output");
+  GpuEstimates out{{}, result.value("words", ""), result.value("gpu", spec.gpu)};
+  for (std::size_t i = 0; i < directories.size(); ++i)
+    if (const auto& ms = result["runs"][std::to_string(i)]; ms.is_number()) out.ms[directories[i]] = ms.get<double>();
+  return out;
+}
+
+// A finished run's error and median time (with time = "gpu-estimate" its estimate), or nullopt
+// where it failed or lacks the figure.
+std::optional<std::pair<double, double>> figures(const TuneSpec& spec, const fs::path& runDir,
+                                                 const GpuEstimates& estimates) {
   std::ifstream in(runDir / "manifest.json");
   if (!in) return std::nullopt;
   const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
   const nlohmann::json::json_pointer error("/reference/comparison/" + spec.pair + "/metrics/" + spec.metric);
+  if (m.is_discarded() || !m.contains(error) || !m[error].is_number()) return std::nullopt;
+  if (spec.time == "gpu-estimate") {
+    const auto ms = estimates.ms.find(runDir.string());
+    if (ms == estimates.ms.end()) return std::nullopt;
+    return std::make_pair(m[error].get<double>(), ms->second);
+  }
   const nlohmann::json::json_pointer ms("/timing/stage_ms/" + spec.time + "/median");
-  if (m.is_discarded() || !m.contains(error) || !m.contains(ms) || !m[error].is_number()) return std::nullopt;
+  if (!m.contains(ms)) return std::nullopt;
   return std::make_pair(m[error].get<double>(), m[ms].get<double>());
 }
 
+// The measurements' figures: their GPU estimates first with time = "gpu-estimate" (into
+// DIR/estimates/<what>.{csv,json}).
+GpuEstimates estimatesOf(const TuneSpec& spec, const std::vector<Measurement>& all, const fs::path& stem) {
+  return spec.time == "gpu-estimate" ? estimateGpuTimes(spec, all, stem) : GpuEstimates{};
+}
+
+// time = "gpu-estimate": the GPU is one the estimate knows, before anything runs (an estimate of
+// no runs, in a directory of its own that is then removed).
+void checkGpu(const TuneSpec& spec) {
+  const fs::path scratch = fs::temp_directory_path() / ("lpvlab-tune-gpu-" + Hasher().text(spec.file).text(spec.gpu).hex());
+  try {
+    estimateGpuTimes(spec, {}, scratch / "check");
+  } catch (const Error&) {
+    fs::remove_all(scratch);
+    throw Error(spec.file + ": key 'tune.gpu': '" + spec.gpu + "': the GPU estimate refused it (its message is above)");
+  }
+  fs::remove_all(scratch);
+}
+
 // Per candidate, the mean over its views; candidates with a failed view are left out (named).
-std::vector<RungResult> results(const TuneSpec& spec, const std::vector<Measurement>& all) {
+std::vector<RungResult> results(const TuneSpec& spec, const std::vector<Measurement>& all,
+                                const GpuEstimates& estimates) {
   std::map<std::string, std::vector<std::pair<double, double>>> byCandidate;
   std::map<std::string, bool> failed;
   for (const Measurement& m : all) {
-    const auto f = figures(spec, m.directory);
+    const auto f = figures(spec, m.directory, estimates);
     if (f) byCandidate[m.candidate->id].push_back(*f);
     else failed[m.candidate->id] = true;
   }
@@ -107,8 +190,9 @@ std::vector<RungResult> results(const TuneSpec& spec, const std::vector<Measurem
     for (const auto& [error, ms] : list) r.error += error / double(list.size()), r.ms += ms / double(list.size());
     out.push_back(r);
   }
+  const std::string time = spec.time == "gpu-estimate" ? "GPU estimate" : spec.time + " time";
   for (const auto& [id, _] : failed)
-    log::warning("candidate " + id + ": a run failed or has no " + spec.pair + "." + spec.metric +
+    log::warning("candidate " + id + ": a run failed or has no " + spec.pair + "." + spec.metric + " or " + time +
                  " (its error.log): left out");
   return out;
 }
@@ -180,17 +264,18 @@ struct RungRecord {
   std::vector<RungResult> results;
   std::vector<std::string> promoted;
   TuneGoal goal;  // the spec's, with budget_ms = "baseline" the baseline's time at this rung
+  std::string estimateWords;  // time = "gpu-estimate": how the times were estimated
 };
 
 void printTable(const std::vector<RungResult>& results, const std::map<std::string, const TuneCandidate*>& byId,
                 const TuneGoal& goal, const TuneSpec& spec) {
   std::cout << "  " << std::left << std::setw(12) << "candidate" << std::right << std::setw(12)
-            << spec.metric << std::setw(10) << (spec.time + " ms") << "  configuration\n";
+            << spec.metric << std::setw(18) << (spec.time + " ms") << "  configuration\n";
   std::vector<RungResult> sorted = results;
   std::stable_sort(sorted.begin(), sorted.end(), [&](const RungResult& a, const RungResult& b) { return goal.better(a, b); });
   for (const RungResult& r : sorted)
     std::cout << "  " << std::left << std::setw(12) << r.id << std::right << std::fixed << std::setprecision(4)
-              << std::setw(12) << r.error << std::setprecision(1) << std::setw(10) << r.ms << "  "
+              << std::setw(12) << r.error << std::setprecision(3) << std::setw(18) << r.ms << "  "
               << (goal.feasible(r) ? "" : "(over the goal) ") << byId.at(r.id)->name() << "\n";
 }
 
@@ -206,8 +291,9 @@ nlohmann::json measureHeldOut(const TuneSpec& spec, const fs::path& dir, const T
     for (const TuneCandidate* c : {&chosen, &baseline})
       all.push_back(measurement(spec, dir, *c, view, last, "held_out"));
   runMeasurements(all, options.jobs, "tune: held-out views");
+  const GpuEstimates estimates = estimatesOf(spec, all, dir / "estimates" / "held_out");
   for (const Measurement& m : all) {
-    const auto f = figures(spec, m.directory);
+    const auto f = figures(spec, m.directory, estimates);
     nlohmann::json& entry = out[m.view->name];
     const std::string who = m.candidate == &chosen ? "chosen" : "baseline";
     entry[who] = f ? nlohmann::json{{"error", f->first}, {"ms", f->second}} : nlohmann::json(nullptr);
@@ -233,20 +319,34 @@ void writePareto(const fs::path& dir, const std::vector<RungRecord>& rungs,
   writeTextAtomically((dir / "pareto.csv").string(), csv.str());
 }
 
+// What the time is: "method time", "total time", "GPU-estimated method time on h100_sxm".
+std::string timeWords(const TuneSpec& spec) {
+  return spec.time == "gpu-estimate" ? "GPU-estimated method time on " + spec.gpu : spec.time + " time";
+}
+
+std::string goalWords(const TuneSpec& spec) {
+  std::ostringstream budget;
+  if (spec.budgetMs) budget << *spec.budgetMs;
+  const std::string metric = spec.pair + "." + spec.metric;
+  if (!spec.budgetMs) return "the least " + timeWords(spec) + " within " + metric + " " + std::to_string(*spec.maxError);
+  return "the least " + metric + " within " +
+         (spec.budgetIsBaseline ? "the baseline's " + timeWords(spec) : budget.str() + " ms of " + timeWords(spec));
+}
+
 int writeTuneOutputs(const TuneSpec& spec, const fs::path& dir,
                      const std::map<std::string, const TuneCandidate*>& byId,
                      const std::vector<RungRecord>& rungs, const Options& options) {
   const TuneGoal& last = rungs.back().goal;
   const std::optional<RungResult> best = choose(rungs.back().results, last);
-  const std::string goalText = spec.budgetMs ? "the least " + spec.pair + "." + spec.metric + " within " +
-                                                   (spec.budgetIsBaseline ? "the baseline's " + spec.time + " time"
-                                                                          : std::to_string(*spec.budgetMs) + " ms (" + spec.time + ")")
-                                             : "the least " + spec.time + " time within " + spec.pair + "." +
-                                                   spec.metric + " " + std::to_string(*spec.maxError);
+  const std::string goalText = goalWords(spec);
   nlohmann::json result = {{"file", spec.file}, {"goal", goalText}, {"metric", spec.pair + "." + spec.metric},
                            {"time", spec.time}, {"eta", spec.eta}, {"host", hostInfo()},
                            {"created_utc", utcTimestamp()}, {"lpvlab", lpvlabRevision()},
                            {"clock", "each run's own (its manifest's timing.clock): CPU wall clock or GL timer queries"}};
+  if (spec.time == "gpu-estimate") {
+    result["clock"] = rungs.back().estimateWords;  // "... (...; an estimate from counted work, not a measurement)"
+    result["gpu"] = spec.gpu;
+  }
   for (const RungRecord& r : rungs) {
     nlohmann::json rung = {{"samples", r.samples}, {"promoted", r.promoted}, {"results", nlohmann::json::array()}};
     if (r.goal.budgetMs) rung["budget_ms"] = *r.goal.budgetMs;
@@ -291,6 +391,7 @@ int tuneCommand(const Options& options) {
   requireOutputDirectory(dir.string(), options.out.empty() ? "output directory" : "--out");
   const std::vector<TuneCandidate> candidates = drawCandidates(spec);
   checkCandidates(spec, candidates);
+  if (spec.time == "gpu-estimate") checkGpu(spec);
   claimDirectory(dir, tuneHash(options), options);
   const TuneGoal goal{spec.budgetMs, spec.maxError};
   std::map<std::string, const TuneCandidate*> byId;
@@ -307,7 +408,8 @@ int tuneCommand(const Options& options) {
     const std::string what = "tune rung " + std::to_string(rung + 1) + "/" + std::to_string(spec.rungs.size()) +
                              " (" + std::to_string(spec.rungs[std::size_t(rung)]) + " spp references)";
     runMeasurements(all, options.jobs, what);
-    RungRecord record{spec.rungs[std::size_t(rung)], results(spec, all), {}, goal};
+    const GpuEstimates estimates = estimatesOf(spec, all, dir / "estimates" / ("rung" + std::to_string(rung + 1)));
+    RungRecord record{spec.rungs[std::size_t(rung)], results(spec, all, estimates), {}, goal, estimates.words};
     std::vector<RungResult> contenders;
     bool baselineMeasured = false;
     for (const RungResult& r : record.results)

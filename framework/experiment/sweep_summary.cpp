@@ -10,6 +10,7 @@
 
 #include "framework/core/error.h"
 #include "framework/experiment/json_path.h"
+#include "framework/experiment/work_columns.h"
 #include "framework/core/atomic_file.h"
 #include "framework/pipeline/pipeline.h"
 
@@ -49,30 +50,6 @@ nlohmann::json withoutArrays(const nlohmann::json& value) {
   for (const auto& [key, child] : value.items())
     if (!child.is_array()) out[key] = withoutArrays(child);
   return out;
-}
-
-// A manifest's work reports (Pipeline::workReport) as summary columns: per stage the units of
-// each kind (work.<stage>.<unit>s), and the multiply-adds and bytes of the modelled kernels; the
-// same of the GL kernels (gpu_work.<stage>.*, from the manifest's gpu_work).
-std::map<std::string, double> workColumns(const nlohmann::json& manifest) {
-  std::map<std::string, double> columns;
-  for (const std::string key : {"work", "gpu_work"}) {
-    const auto work = manifest.find(key);
-    if (work == manifest.end() || !work->is_object()) continue;
-    for (const auto& [stage, counts] : work->items()) {
-      if (!counts.is_array()) continue;
-      const std::string prefix = key + "." + stage + ".";
-      for (const auto& count : counts) {
-        if (!count.contains("unit")) continue;
-        columns[prefix + count["unit"].get<std::string>() + "s"] += count.value("units", 0.0);
-        if (count.value("multiply_adds_per_unit", 0.0) > 0.0)
-          columns[prefix + "multiply_adds"] += count.value("multiply_adds", 0.0);
-        if (count.value("bytes_per_unit", 0.0) > 0.0)
-          columns[prefix + "bytes"] += count.value("bytes", 0.0);
-      }
-    }
-  }
-  return columns;
 }
 
 // A manifest's per-repeat stage times (timing.samples.stage_ms; "gpu_ms" in manifests written

@@ -134,6 +134,11 @@ public:
   // strategy's kernels on dual numbers carry (the fit takes central differences for the others).
   virtual std::vector<std::string> differentiableParameters() const { return {}; }
 
+  // What this strategy's parameters make suspect, as sentences for the run's warnings (stderr,
+  // the manifest's "warnings", summary.csv's column): a configuration that runs, but whose result
+  // is not to be trusted as it stands (standard propagation's face solid angles that gain energy).
+  virtual std::vector<std::string> warnings() const { return {}; }
+
   // Whether what a frame computes depends on the frames before it in this run (a strategy that
   // keeps data between frames, e.g. a GV history). A resumed sequence then renders the frames
   // before its first missing one again, unwritten, so that they match an uninterrupted run.

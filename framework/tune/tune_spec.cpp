@@ -13,7 +13,7 @@ namespace lpvlab {
 
 namespace {
 
-const std::set<std::string> kKeys = {"metric", "time", "budget_ms", "error", "candidates", "eta",
+const std::set<std::string> kKeys = {"metric", "time", "gpu", "budget_ms", "error", "candidates", "eta",
                                      "rungs", "seed", "space", "views", "held_out"};
 
 std::string where(const std::string& file, const std::string& key) {
@@ -125,8 +125,12 @@ TuneSpec readTuneSpec(const std::string& path, const std::vector<std::string>& o
   spec.pair = metric.substr(0, dot);
   spec.metric = metric.substr(dot + 1);
   spec.time = tune["time"].value_or(spec.time);
-  if (spec.time != "method" && spec.time != "total")
-    throw Error(where(path, "time") + ": '" + echoed(spec.time) + "': expected method or total");
+  if (spec.time != "method" && spec.time != "total" && spec.time != "gpu-estimate")
+    throw Error(where(path, "time") + ": '" + echoed(spec.time) + "': expected method, total or gpu-estimate");
+  requireType<std::string>(tune, "gpu", path, "a string (a key of analysis/lpvlab_analysis/gpus.toml)");
+  if (tune.contains("gpu") && spec.time != "gpu-estimate")
+    throw Error(where(path, "gpu") + ": only with time = \"gpu-estimate\" (the GPU whose estimate is the time)");
+  spec.gpu = tune["gpu"].value_or(spec.gpu);
   readGoal(tune, path, spec);
   if (budgetMs) spec.budgetMs = budgetMs, spec.maxError.reset(), spec.budgetIsBaseline = false;
   if (maxError) spec.maxError = maxError, spec.budgetMs.reset(), spec.budgetIsBaseline = false;

@@ -6,6 +6,8 @@
 //   [tune]
 //   metric = "indirect_vs_indirect1.block_nrmse"  # <pair>.<metric> of the runs' comparisons; lower is better
 //   time = "method"             # the frame time bounded: method (its own stages) | total (the frame)
+//                               # | gpu-estimate (the method's GL kernels estimated on `gpu`)
+//   gpu = "h100_sxm"            # with time = "gpu-estimate": a key of analysis's gpus.toml
 //   budget_ms = 40.0            # the least error within this median frame time ("baseline": the
 //                               # baseline's own, measured at each rung beside the candidates), or ...
 //   error = 0.5                 # ... the least time within this error (exactly one; --budget-ms, --error)
@@ -49,7 +51,8 @@ struct TuneSpec {
   toml::table base;                 // the file's table, extends and includes merged, no [tune]
   std::string pair = "indirect_vs_indirect1";
   std::string metric = "block_nrmse";
-  std::string time = "method";
+  std::string time = "method";     // "method", "total" or "gpu-estimate"
+  std::string gpu = "h100_sxm";     // time = "gpu-estimate": the GPU, a key of gpus.toml
   std::optional<double> budgetMs;
   bool budgetIsBaseline = false;    // budget_ms = "baseline": budgetMs is set per rung from it
   std::optional<double> maxError;

@@ -17,6 +17,7 @@ rm -rf "$tmp/analysis/tests"
 /usr/bin/python3 -m venv --system-site-packages "$tmp/venv"
 "$tmp/venv/bin/pip" install --quiet --no-index --no-deps --no-build-isolation "$tmp/analysis"
 "$tmp/venv/bin/lpvlab-report" --help > /dev/null
+"$tmp/venv/bin/lpvlab-gpu-estimate" --help > /dev/null
 "$tmp/venv/bin/python" -c "import lpvlab_analysis.gpu_estimate as g, os; assert os.path.isfile(g.DEFAULT_TABLE)"
 
 cat > "$tmp/s.toml" <<'TOML'

@@ -269,6 +269,16 @@ TEST_F(BadInputs, BlackResultsAndUnconvergedSolvesAreFlaggedInTheOutputManifestA
       test::runLpvlab("run --out inside -s grid.margin=2.0" + openBox, dir_.path(), dir_.path());
   ASSERT_EQ(inside.exitCode, 0) << inside.err;
   EXPECT_EQ(inside.err.find("lpvlab: warning:"), std::string::npos) << inside.err;
+  // Face solid angles that make propagation gain energy (docs/variants.md): flagged, by table.
+  const test::LpvlabResult gaining = test::runLpvlab(
+      "run --out gaining -s output.width=8 -s output.height=8 -s timing.warmup=0 -s timing.repeats=1 "
+      "-s propagation.far_face_solid_angle=1.43 -s propagation.side_face_solid_angle=0.42",
+      dir_.path(), dir_.path());
+  ASSERT_EQ(gaining.exitCode, 0) << gaining.err;
+  EXPECT_NE(gaining.err.find("lpvlab: warning: propagation: damping x 6 (far_face_solid_angle"), std::string::npos)
+      << gaining.err;
+  EXPECT_NE(test::readFile(dir_.path() / "gaining" / "manifest.json").find("propagation gains energy"),
+            std::string::npos);
   // A lit run has no warnings: the box's own spot.
   ASSERT_EQ(test::runLpvlab("run --out lit -s output.width=8 -s output.height=8 -s timing.warmup=0 "
                             "-s timing.repeats=1",

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::quoted;
 
-const char* kTune = R"(
+// A tiny Cornell box: the baseline of the tunes below.
+const std::string kTinyBox = R"(
 [output]
 width = 32
 height = 32
@@ -27,6 +29,9 @@ height = 32
 resolution = 8
 [light_maps]
 rsm_resolution = 32
+)";
+
+const std::string kTune = kTinyBox + R"(
 [tune]
 budget_ms = "baseline"
 candidates = 3
@@ -82,6 +87,55 @@ TEST(TuneCommand, ChoosesWithinTheGoalWritesItsFilesAndResumes) {
   const test::LpvlabResult again = test::runLpvlab(args, dir.path(), dir.path());
   EXPECT_EQ(again.exitCode, 1);
   EXPECT_NE(again.err.find("--force"), std::string::npos) << again.err;
+}
+
+// time = "gpu-estimate": the times are the GPU estimate of each run's counted GL-kernel work
+// (analysis/gpu_estimate.py), which grows with the grid; the budget is the baseline's estimate, so
+// the larger grid is over it and the smaller within it, whatever this machine's timing noise.
+TEST(TuneCommand, AGpuEstimatedTuneRanksByTheEstimateAndSaysSo) {
+  test::TempDir dir;
+  std::ofstream(dir.file("tune.toml")) << kTinyBox << R"(
+[tune]
+budget_ms = "baseline"
+time = "gpu-estimate"
+gpu = "h100_sxm"
+candidates = 3
+rungs = [2]
+[tune.space]
+"grid.resolution" = [6, 12]
+)";
+  const fs::path out = dir.path() / "tuned";
+  const test::LpvlabResult r = test::runLpvlab("tune tune.toml --out " + quoted(out.string()), dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const nlohmann::json result = nlohmann::json::parse(test::readFile(out / "tune.json"));
+  EXPECT_EQ(result["time"], "gpu-estimate");
+  EXPECT_EQ(result["gpu"], "h100_sxm");
+  EXPECT_NE(result["clock"].get<std::string>().find("not a measurement"), std::string::npos) << result["clock"];
+  EXPECT_NE(result["goal"].get<std::string>().find("GPU-estimated"), std::string::npos) << result["goal"];
+  std::map<std::string, double> ms;
+  for (const nlohmann::json& x : result["rungs"][0]["results"]) {
+    const auto& overrides = result["candidates"][x["id"].get<std::string>()];
+    ms[overrides.empty() ? "8" : overrides[0].get<std::string>().substr(std::string("grid.resolution=").size())] =
+        x["ms"].get<double>();
+    EXPECT_EQ(x["feasible"].get<bool>(), x["ms"].get<double>() <= result["rungs"][0]["budget_ms"].get<double>());
+  }
+  ASSERT_EQ(ms.size(), 3u) << result.dump(2);
+  EXPECT_GT(ms["6"], 0.0);
+  EXPECT_LT(ms["6"], ms["8"]);
+  EXPECT_LT(ms["8"], ms["12"]);
+  EXPECT_EQ(result["rungs"][0]["budget_ms"].get<double>(), ms["8"]);
+  ASSERT_TRUE(result["chosen"].is_object());
+  EXPECT_LE(result["chosen"]["ms"].get<double>(), ms["8"]) << "never the grid over the estimated budget";
+
+  // A GPU the estimate does not know: one error naming the key, before anything is written.
+  std::ofstream(dir.file("bad_gpu.toml")) << "[tune]\nbudget_ms = 5.0\ntime = \"gpu-estimate\"\ngpu = \"nope\"\n"
+                                             "[tune.space]\n\"grid.resolution\" = [6]\n";
+  const test::LpvlabResult bad =
+      test::runLpvlab("tune bad_gpu.toml --out " + quoted((dir.path() / "x").string()), dir.path(), dir.path());
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("tune.gpu"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("not a GPU of"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "x" / "tune_state.json"));
 }
 
 TEST(TuneCommand, ABadTableIsOneErrorNamingTheKey) {

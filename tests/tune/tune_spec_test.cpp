@@ -73,6 +73,11 @@ TEST(TuneSpec, BadInputNamesTheKey) {
             std::string::npos);
   EXPECT_NE(errorOf("[tune]\nbudget_ms = 5.0\nmetric = \"rmse\"\n" + space).find("tune.metric"), std::string::npos);
   EXPECT_NE(errorOf("[grid]\nresolution = 8\n").find("no [tune] table"), std::string::npos);
+  EXPECT_NE(errorOf("[tune]\nbudget_ms = 5.0\ntime = \"gpu\"\n" + space).find("tune.time"), std::string::npos);
+  // A GPU names whose estimate the time is: only with time = "gpu-estimate".
+  EXPECT_NE(errorOf("[tune]\nbudget_ms = 5.0\ngpu = \"h100_sxm\"\n" + space).find("tune.gpu"), std::string::npos);
+  EXPECT_NE(errorOf("[tune]\nbudget_ms = 5.0\ntime = \"gpu-estimate\"\ngpu = 3\n" + space).find("tune.gpu"),
+            std::string::npos);
 }
 
 TEST(TuneSpace, TheBaselineFirstThenDistinctDeterministicDraws) {

@@ -226,6 +226,32 @@ TEST(Propagation, EnergyAndFluxThroughAShellFromAnIsotropicSourceOnTheCpu) {
 // ---- c. zero and very many iterations ---------------------------------------------------------
 
 // Zero and a thousand iterations, on both backends.
+// Face solid angles above the geometric ones: an isotropic cell sends 6 (far + 4 side) / (4 pi)
+// of its flux on per iteration, here 1.5, and the strategy says so in its warnings; with the
+// geometric angles it sends exactly its flux and warns of nothing.
+TEST(Propagation, FaceSolidAnglesThatGainEnergyAreMeasuredAndFlagged) {
+  const glm::ivec3 res{9, 9, 9}, centre{4, 4, 4};
+  const double side = 0.42, far = 1.5 * 4.0 * M_PI / 6.0 - 4.0 * side;  // gain 1.5
+  toml::table table = iterationsTable(1);
+  table.insert("far_face_solid_angle", far);
+  table.insert("side_face_solid_angle", side);
+  PropagationRig gaining("standard", res, table, 1, false, ComputeBackend::Cpu);
+  gaining.load(pointSource(res, centre, true));
+  const double injected = flux(gaining.current(), res);
+  gaining.propagate();
+  EXPECT_NEAR(flux(gaining.current(), res) / injected, 1.5, 1e-5);
+  const std::vector<std::string> warnings = gaining.strategy().warnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("multiplies an isotropic cell's light by up to 1.5"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("gains energy"), std::string::npos);
+
+  PropagationRig geometric("standard", res, iterationsTable(1), 1, false, ComputeBackend::Cpu);
+  geometric.load(pointSource(res, centre, true));
+  geometric.propagate();
+  EXPECT_NEAR(flux(geometric.current(), res) / injected, 1.0, 1e-5);
+  EXPECT_TRUE(geometric.strategy().warnings().empty());
+}
+
 TEST(Propagation, ZeroIterationsLeaveTheGridAsInjected) {
   for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu}) {
     PropagationRig rig = standardRig(kRes15, 0, backend);

@@ -138,11 +138,14 @@ nlohmann::json LightPropagationVolumes::audit() {
       rsmAdded < 0.999 * balance.rsmFlux) {
     std::ostringstream percent;
     percent << std::setprecision(3) << 100.0 * (1.0 - rsmAdded / balance.rsmFlux);
-    audit["warnings"] = {percent.str() +
-                         "% of the RSMs' reflected flux fell outside the light grid and was dropped "
-                         "(a fixed grid that misses lit surfaces, or lit surfaces facing out on "
-                         "the scene's bounds: grid.margin = 2 keeps their VPLs)"};
+    audit["warnings"].push_back(percent.str() +
+                                "% of the RSMs' reflected flux fell outside the light grid and was dropped "
+                                "(a fixed grid that misses lit surfaces, or lit surfaces facing out on "
+                                "the scene's bounds: grid.margin = 2 keeps their VPLs)");
   }
+  // What the strategies' own parameters make suspect (Strategy::warnings), named by table.
+  for (const auto& [table, strategy] : strategies_.all())
+    for (const std::string& warning : strategy->warnings()) audit["warnings"].push_back(table + ": " + warning);
   return audit;
 }
 
