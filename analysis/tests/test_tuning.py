@@ -32,6 +32,15 @@ RESULT = {
 }
 
 
+def _page_of(result):
+    """The tune page built from `result` as tune.json."""
+    with tempfile.TemporaryDirectory() as root:
+        with open(os.path.join(root, "tune.json"), "w") as f:
+            json.dump(result, f)
+        with open(report.build_report(root)) as f:
+            return f.read()
+
+
 class Tuning(unittest.TestCase):
     def test_the_front_keeps_only_what_nothing_beats(self):
         self.assertEqual(T.pareto([(3, 1.0, "a"), (4, 2.0, "b"), (9, 0.8, "c"), (5, 0.9, "d")]),
@@ -68,13 +77,21 @@ class Tuning(unittest.TestCase):
         self.assertIn("h100_sxm", label)
         self.assertIn("not a measurement", label)
         self.assertNotIn("test CPU", label)  # not timed there
-        with tempfile.TemporaryDirectory() as root:
-            with open(os.path.join(root, "tune.json"), "w") as f:
-                json.dump(result, f)
-            with open(report.build_report(root)) as f:
-                page = f.read()
-            self.assertIn("GPU-estimated ms", page)
-            self.assertIn("not a measurement", page)
+        page = _page_of(result)
+        self.assertIn("GPU-estimated ms", page)
+        self.assertIn("not a measurement", page)
+
+    def test_the_page_shows_the_fitted_constants_and_whether_they_were_adopted(self):
+        result = dict(RESULT, fit={
+            "directory": "/x/fit", "converged": True, "adopted": False,
+            "parameters": [{"key": "propagation.far_face_solid_angle", "before": 0.4007, "after": 0.2468,
+                            "undetermined": False}],
+            "before": {"id": "a1", "error": 0.9, "ms": 3.1, "feasible": True},
+            "after": {"id": "fitted", "error": 0.95, "ms": 3.1, "feasible": True}})
+        page = _page_of(result)
+        self.assertIn("propagation.far_face_solid_angle", page)
+        self.assertIn("0.2468", page)
+        self.assertIn("not adopted", page)
 
     def test_a_directory_without_rungs_is_refused(self):
         with tempfile.TemporaryDirectory() as root:

@@ -21,6 +21,7 @@
 
 #include "framework/cli/analysis_program.h"
 #include "framework/cli/child_runs.h"
+#include "framework/cli/tune_fit.h"
 #include "framework/cli/commands.h"
 #include "framework/core/atomic_file.h"
 #include "framework/core/error.h"
@@ -237,7 +238,7 @@ void claimDirectory(const fs::path& dir, const std::string& hash, const Options&
         throw Error((options.out.empty() ? "output directory " : "--out ") + dir.string() + ": holds " +
                     (same ? "this tune, finished (tune.json)" : "another tune (another file, -s or goal)") +
                     "; --force replaces it, or choose another directory");
-      for (const char* name : {"configs", "rungs", "held_out"}) fs::remove_all(dir / name);
+      for (const char* name : {"configs", "rungs", "held_out", "estimates", "fit", "fitted"}) fs::remove_all(dir / name);
       for (const char* name : {"tune.json", "pareto.csv", "chosen.toml", "tune_state.json"}) fs::remove(dir / name);
     }
   } else if (fs::exists(dir) && !fs::is_empty(dir) && !options.force) {
@@ -333,6 +334,36 @@ std::string goalWords(const TuneSpec& spec) {
          (spec.budgetIsBaseline ? "the baseline's " + timeWords(spec) : budget.str() + " ms of " + timeWords(spec));
 }
 
+// [tune.fit]: the chosen candidate's constants fitted (tune_fit.h), then the fitted configuration
+// measured on the tuned views at the last rung as the candidates were. It replaces the chosen one
+// where it is within the goal and more accurate: the fit minimises its own residual, not the
+// tune's metric, so it can make the metric worse. Returns the final choice (`fitted` when it
+// replaced it); records both in `result` ("chosen", "fit").
+const TuneCandidate& refineByFit(const TuneSpec& spec, const fs::path& dir, const TuneCandidate& chosen,
+                                 const RungResult& chosenResult, const TuneGoal& goal, const Options& options,
+                                 TuneCandidate& fitted, nlohmann::json& result) {
+  const int last = int(spec.rungs.size()) - 1;
+  TuneFit fit = fitChosenConstants(spec, dir, chosen.overrides, rungOverrides(spec, last));
+  fitted = {"fitted", fit.overrides};
+  std::vector<Measurement> all;
+  for (const NamedView& view : spec.views) all.push_back(measurement(spec, dir, fitted, view, last, "fitted"));
+  runMeasurements(all, options.jobs, "tune: the fitted constants on the tuned views");
+  const std::vector<RungResult> measured = results(spec, all, estimatesOf(spec, all, dir / "estimates" / "fitted"));
+  fit.record["overrides"] = fitted.overrides;
+  fit.record["before"] = toJson(chosenResult, goal);
+  fit.record["after"] = measured.empty() ? nlohmann::json(nullptr) : toJson(measured.front(), goal);
+  const bool adopted = !measured.empty() && goal.feasible(measured.front()) && measured.front().error < chosenResult.error;
+  fit.record["adopted"] = adopted;
+  result["fit"] = fit.record;
+  result["candidates"]["fitted"] = fitted.overrides;
+  result["chosen"] = toJson(adopted ? measured.front() : chosenResult, goal);
+  result["chosen"]["from"] = chosen.id;
+  std::cout << "[tune.fit] " << chosen.id << " with fitted constants: " << spec.metric << " "
+            << chosenResult.error << " -> " << (measured.empty() ? std::string("failed") : std::to_string(measured.front().error))
+            << (adopted ? " (adopted)\n" : " (not adopted: not more accurate within the goal)\n");
+  return adopted ? fitted : chosen;
+}
+
 int writeTuneOutputs(const TuneSpec& spec, const fs::path& dir,
                      const std::map<std::string, const TuneCandidate*>& byId,
                      const std::vector<RungRecord>& rungs, const Options& options) {
@@ -363,8 +394,10 @@ int writeTuneOutputs(const TuneSpec& spec, const fs::path& dir,
     log::warning("no candidate meets the goal (" + goalText + "); wrote " + (dir / "tune.json").string());
     return 3;
   }
-  const TuneCandidate& chosen = *byId.at(best->id);
   result["chosen"] = toJson(*best, last);
+  TuneCandidate fitted;
+  const TuneCandidate& chosen = spec.fit ? refineByFit(spec, dir, *byId.at(best->id), *best, last, options, fitted, result)
+                                         : *byId.at(best->id);
   result["chosen"]["overrides"] = chosen.overrides;
   result["held_out"] = measureHeldOut(spec, dir, chosen, *byId.at("baseline"), options);
   writeTextAtomically((dir / "chosen.toml").string(),

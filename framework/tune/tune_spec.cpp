@@ -8,12 +8,13 @@
 #include "framework/core/parameters.h"
 #include "framework/experiment/experiment_file.h"
 #include "framework/experiment/sweep_expansion.h"
+#include "framework/fit/fit_spec.h"
 
 namespace lpvlab {
 
 namespace {
 
-const std::set<std::string> kKeys = {"metric", "time", "gpu", "budget_ms", "error", "candidates", "eta",
+const std::set<std::string> kKeys = {"metric", "time", "gpu", "fit", "budget_ms", "error", "candidates", "eta",
                                      "rungs", "seed", "space", "views", "held_out"};
 
 std::string where(const std::string& file, const std::string& key) {
@@ -95,6 +96,39 @@ void readRungs(const toml::table& tune, const std::string& file, TuneSpec& spec)
   }
 }
 
+// [tune.fit] as the [fit] table of `lpvlab fit` on the tuned views, checked as the fit checks
+// its file (on the baseline: keys that exist, bounds, settings) before anything runs.
+void readFit(const toml::table& tune, const std::string& file, TuneSpec& spec) {
+  const toml::node* node = tune.get("fit");
+  if (!node) return;
+  const toml::table* fit = node->as_table();
+  if (!fit) throw Error(where(file, "fit") + ": expected a table ([tune.fit], as a [fit] table)");
+  for (const char* own : {"views", "held_out"})
+    if (fit->contains(own))
+      throw Error(where(file, std::string("fit.") + own) + ": the fit runs on the tune's own views ([[tune.views]]); "
+                  "the tune measures its held-out views itself");
+  toml::table table = *fit;
+  toml::array views;
+  if (const toml::node* tuned = tune.get("views"))
+    if (const toml::array* list = tuned->as_array())
+      for (const toml::node& view : *list)
+        if (const toml::table* t = view.as_table()) {
+          toml::table absolute = *t;
+          absolutizeSceneFile(absolute, file);
+          views.push_back(std::move(absolute));
+        }
+  if (views.empty()) views.push_back(toml::table{{"name", "file"}});
+  table.insert_or_assign("views", std::move(views));
+  toml::table root = spec.base;
+  root.insert_or_assign("fit", table);
+  try {
+    readFitSpec(root, file);
+  } catch (const Error& e) {
+    throw Error(where(file, "fit") + ": as lpvlab fit's [fit] table: " + e.what());
+  }
+  spec.fit = std::move(table);
+}
+
 }  // namespace
 
 TuneSpec readTuneSpec(const std::string& path, const std::vector<std::string>& overrides,
@@ -150,6 +184,7 @@ TuneSpec readTuneSpec(const std::string& path, const std::vector<std::string>& o
   spec.views = readNamedViews(tune, "tune", "views", path);
   spec.heldOut = readNamedViews(tune, "tune", "held_out", path);
   if (spec.views.empty()) spec.views.push_back({"file", {}});
+  readFit(tune, path, spec);
   return spec;
 }
 

@@ -21,6 +21,9 @@
 //   "occlusion.type" = ["none", "geometry_volume"]
 //   "injection.shift" = { min = 0.0, max = 2.0, step = 0.25 }   # step: values on its grid
 //   "propagation.iterations" = { min = 4, max = 64, log = true }  # integers stay integers
+//   [tune.fit]                  # optional: the chosen configuration's constants then fitted
+//   parameters = [{ key = "propagation.far_face_solid_angle", lower = 0.0, upper = 2.1 }]
+//                               # ... as a [fit] table (lpvlab fit), on the tuned views
 //   [[tune.views]]              # tuned on, as [[fit.views]] (none: the file's own view)
 //   [[tune.held_out]]           # measured for the chosen configuration and the baseline only
 //
@@ -63,6 +66,9 @@ struct TuneSpec {
   std::vector<TuneDimension> space;
   std::vector<NamedView> views;     // the file's own view when none is given
   std::vector<NamedView> heldOut;
+  // [tune.fit]: the [fit] table of `lpvlab fit` on the chosen configuration, with the tuned
+  // views as its [[fit.views]] (their scene files absolute); none without it.
+  std::optional<toml::table> fit;
 };
 
 // Reads `path` with the -s overrides applied; `budgetMs` / `maxError` (the command line's) replace

@@ -138,6 +138,56 @@ rungs = [2]
   EXPECT_FALSE(fs::exists(dir.path() / "x" / "tune_state.json"));
 }
 
+// [tune.fit]: the chosen configuration's face solid angles fitted by lpvlab fit on the tuned
+// view, measured there, and adopted only where more accurate within the goal; started again, the
+// tune reuses the finished fit.
+TEST(TuneCommand, TheChosenConstantsAreFittedAndAdoptedOnlyWhenMoreAccurate) {
+  test::TempDir dir;
+  std::ofstream(dir.file("tune.toml")) << kTinyBox << R"(
+[tune]
+budget_ms = "baseline"
+candidates = 2
+rungs = [4]
+[tune.space]
+"propagation.iterations" = [4, 8]
+[tune.fit]
+parameters = [
+  { key = "propagation.far_face_solid_angle", lower = 0.05, upper = 1.0 },
+  { key = "propagation.side_face_solid_angle", lower = 0.05, upper = 0.5 },
+]
+max_iterations = 3
+)";
+  const fs::path out = dir.path() / "tuned";
+  const std::string args = "tune tune.toml --out " + quoted(out.string());
+  const test::LpvlabResult r = test::runLpvlab(args, dir.path(), dir.path());
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const nlohmann::json result = nlohmann::json::parse(test::readFile(out / "tune.json"));
+  ASSERT_TRUE(result.contains("fit")) << result.dump(2);
+  const nlohmann::json& fit = result["fit"];
+  ASSERT_EQ(fit["parameters"].size(), 2u);
+  EXPECT_TRUE(fs::exists(out / "fit" / "fit.json"));
+  ASSERT_TRUE(fit["after"].is_object()) << fit.dump(2);
+  const double before = fit["before"]["error"].get<double>(), after = fit["after"]["error"].get<double>();
+  // The search drew no constants: the fit started from the shipped ones.
+  EXPECT_NEAR(fit["parameters"][0]["before"].get<double>(), 0.40066968, 1e-6);
+  const std::string chosenToml = test::readFile(out / "chosen.toml");
+  if (fit["adopted"].get<bool>()) {
+    EXPECT_LT(after, before);
+    EXPECT_EQ(result["chosen"]["error"].get<double>(), after);
+    EXPECT_NE(chosenToml.find("far_face_solid_angle"), std::string::npos) << chosenToml;
+  } else {
+    EXPECT_EQ(result["chosen"]["error"].get<double>(), before);
+    EXPECT_EQ(chosenToml.find("far_face_solid_angle"), std::string::npos) << chosenToml;
+  }
+  // Started again without its summary: the finished fit and every run are reused.
+  EXPECT_NE(r.err.find("fitting the chosen configuration"), std::string::npos) << r.err;
+  fs::remove(out / "tune.json");
+  const test::LpvlabResult resumed = test::runLpvlab(args, dir.path(), dir.path());
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  EXPECT_EQ(resumed.err.find("fitting the chosen configuration"), std::string::npos) << resumed.err;
+  EXPECT_EQ(nlohmann::json::parse(test::readFile(out / "tune.json"))["chosen"], result["chosen"]);
+}
+
 TEST(TuneCommand, ABadTableIsOneErrorNamingTheKey) {
   test::TempDir dir;
   std::ofstream(dir.file("bad.toml")) << "[tune]\nbudget_ms = 10.0\n[tune.space]\n\"grid.resolution\" = [8, -3]\n";

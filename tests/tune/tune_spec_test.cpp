@@ -80,6 +80,33 @@ TEST(TuneSpec, BadInputNamesTheKey) {
             std::string::npos);
 }
 
+// [tune.fit]: lpvlab fit's [fit] table, on the tune's views, checked as the fit checks its own.
+TEST(TuneSpec, TheFitTableIsAFitTableOnTheTunedViews) {
+  const std::string head = "[tune]\nbudget_ms = 5.0\n[tune.space]\n\"grid.resolution\" = [16]\n";
+  const std::string parameters =
+      "[tune.fit]\nparameters = [{ key = \"propagation.far_face_solid_angle\", lower = 0.0, upper = 2.0 }]\n";
+  test::TempDir dir;
+  const TuneSpec spec = readTuneSpec(write(dir, head + parameters +
+                                                    "[[tune.views]]\nname = \"a\"\n"
+                                                    "[[tune.views]]\nname = \"b\"\n"
+                                                    "camera = { position = [0.3, 0.3, -0.5], look_at = [0.3, 0.3, 0.3] }\n"),
+                                     {}, std::nullopt, std::nullopt);
+  ASSERT_TRUE(spec.fit.has_value());
+  const toml::array* views = (*spec.fit)["views"].as_array();
+  ASSERT_NE(views, nullptr);
+  ASSERT_EQ(views->size(), 2u);
+  EXPECT_EQ((*views)[1].as_table()->at("name").value_or(std::string()), "b");
+  EXPECT_FALSE(readTuneSpec(write(dir, head), {}, std::nullopt, std::nullopt).fit.has_value());
+  // Its own views, a key the composition does not have, and a bad setting: named.
+  EXPECT_NE(errorOf(head + parameters + "[[tune.fit.views]]\nname = \"x\"\n").find("tune.fit.views"),
+            std::string::npos);
+  const std::string unknown =
+      errorOf(head + "[tune.fit]\nparameters = [{ key = \"propagation.bogus\", lower = 0.0, upper = 1.0 }]\n");
+  EXPECT_NE(unknown.find("tune.fit"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("bogus"), std::string::npos) << unknown;
+  EXPECT_NE(errorOf(head + parameters + "max_iterations = -1\n").find("tune.fit"), std::string::npos);
+}
+
 TEST(TuneSpace, TheBaselineFirstThenDistinctDeterministicDraws) {
   TuneSpec spec;
   spec.candidates = 20;
