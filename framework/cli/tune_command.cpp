@@ -358,8 +358,10 @@ const TuneCandidate& refineByFit(const TuneSpec& spec, const fs::path& dir, cons
   result["candidates"]["fitted"] = fitted.overrides;
   result["chosen"] = toJson(adopted ? measured.front() : chosenResult, goal);
   result["chosen"]["from"] = chosen.id;
-  std::cout << "[tune.fit] " << chosen.id << " with fitted constants: " << spec.metric << " "
-            << chosenResult.error << " -> " << (measured.empty() ? std::string("failed") : std::to_string(measured.front().error))
+  std::ostringstream after;
+  after << std::setprecision(4) << (measured.empty() ? 0.0 : measured.front().error);
+  std::cout << "[tune.fit] " << chosen.id << " with fitted constants: " << spec.metric << " " << std::setprecision(4)
+            << chosenResult.error << " -> " << (measured.empty() ? std::string("failed") : after.str())
             << (adopted ? " (adopted)\n" : " (not adopted: not more accurate within the goal)\n");
   return adopted ? fitted : chosen;
 }
