@@ -89,7 +89,7 @@ std::size_t runMeasurements(const std::vector<Measurement>& all, int jobs, const
 // gpu-estimate`; `words` says how it was estimated.
 struct GpuEstimates {
   std::map<std::string, double> ms;
-  std::string words, gpu;
+  std::string words;
 };
 
 GpuEstimates estimateGpuTimes(const TuneSpec& spec, const std::vector<Measurement>& all, const fs::path& stem) {
@@ -130,7 +130,7 @@ GpuEstimates estimateGpuTimes(const TuneSpec& spec, const std::vector<Measuremen
   std::ifstream in(jsonPath);
   const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
   if (!result.is_object() || !result.contains("runs")) throw Error(jsonPath.string() + ": not the GPU estimate's output");
-  GpuEstimates out{{}, result.value("words", ""), result.value("gpu", spec.gpu)};
+  GpuEstimates out{{}, result.value("words", "")};
   for (std::size_t i = 0; i < directories.size(); ++i)
     if (const auto& ms = result["runs"][std::to_string(i)]; ms.is_number()) out.ms[directories[i]] = ms.get<double>();
   return out;
