@@ -195,6 +195,7 @@ METRIC_UNITS = {
     "psnr": "dB",
     "ssim": "0–1, of the display images",
     "flip": "0–1, of the display images",
+    "hdr_flip": "0–1, over the reference's exposures",
     "block_nrmse": "8×8 blocks, over the reference's mean",
 }
 

@@ -6,8 +6,8 @@
 // indirect1 layer a run's indirect approximates: --aov indirect=indirect1).
 //
 // Per AOV: the relative difference (relative_difference.h: mean, 99th percentile, maximum), the
-// image metrics (metrics.h: RMSE, relative MSE, FLIP, SSIM, block nRMSE) and the ratio of the
-// means. --threshold gates scripts: exit code 3 when a figure exceeds its bound.
+// image metrics (metrics.h: RMSE, relative MSE, LDR-FLIP, HDR-FLIP, SSIM, block nRMSE) and the
+// ratio of the means. --threshold gates scripts: exit code 3 when a figure exceeds its bound.
 
 #include <algorithm>
 #include <filesystem>
@@ -54,7 +54,7 @@ const std::map<std::string, std::pair<std::string, std::string>>& thresholdFigur
       {"mean", {"relative_difference", "mean"}}, {"p99", {"relative_difference", "p99"}},
       {"max", {"relative_difference", "max"}},   {"rmse", {"metrics", "rmse"}},
       {"rel_mse", {"metrics", "rel_mse"}},       {"flip", {"metrics", "flip"}},
-      {"block_nrmse", {"metrics", "block_nrmse"}}};
+      {"hdr_flip", {"metrics", "hdr_flip"}},     {"block_nrmse", {"metrics", "block_nrmse"}}};
   return figures;
 }
 
@@ -138,19 +138,35 @@ RelativePng writeRelativePng(const std::string& dir, const std::string& aov,
   return png;
 }
 
-// --out: DIR/<aov>_relative.png per compared AOV (`relatives`, whose layers are `differences`'
-// pairs in order) and DIR/difference.exr; what was written goes into `out`.
-void writeDifferences(const std::string& dir,
-                      const std::vector<std::pair<std::string, RelativeDifference>>& relatives,
+// What --out writes of one compared AOV besides its difference layers.
+struct AovPngs {
+  std::string aov;
+  RelativeDifference relative;
+  HdrFlipMap hdrFlip;
+};
+
+// --out: DIR/<aov>_relative.png and DIR/<aov>_hdr_flip.png per compared AOV (`pngs`, whose
+// difference layers are `differences`' pairs in order) and DIR/difference.exr; what was written
+// goes into `out`.
+void writeDifferences(const std::string& dir, const std::vector<AovPngs>& pngs,
                       const std::vector<NamedImage>& differences, const Image* covered,
                       nlohmann::json& out) {
   std::filesystem::create_directories(dir);
-  for (std::size_t i = 0; i < relatives.size(); ++i) {
-    const auto& [aov, relative] = relatives[i];
+  for (std::size_t i = 0; i < pngs.size(); ++i) {
+    const AovPngs& a = pngs[i];
     const RelativePng png =
-        writeRelativePng(dir, layers(aov).first, differences[2 * i + 1], covered, relative);
-    out["aovs"][aov]["relative_png"] = {
+        writeRelativePng(dir, layers(a.aov).first, differences[2 * i + 1], covered, a.relative);
+    out["aovs"][a.aov]["relative_png"] = {
         {"path", png.path}, {"range", {0.0, png.top}}, {"top_is", png.topIs}};
+    // HDR-FLIP's map on its own scale, 0 (black) to 1 (pale yellow), as FLIP's tool shows it.
+    const std::string flipPath =
+        (std::filesystem::path(dir) / (layers(a.aov).first + "_hdr_flip.png")).string();
+    writePng(flipPath, withColourBar(falseColour(a.hdrFlip.error, 0.0f, 1.0f, covered)), 0.0f, false);
+    const HdrFlipExposures& e = a.hdrFlip.exposures;
+    out["aovs"][a.aov]["hdr_flip_png"] = {
+        {"path", flipPath},
+        {"range", {0.0, 1.0}},
+        {"exposures", {{"start_stops", e.start}, {"stop_stops", e.stop}, {"count", e.count}}}};
   }
   const std::string path = (std::filesystem::path(dir) / "difference.exr").string();
   // An earlier comparison's differences are replaced, and said to be.
@@ -166,9 +182,11 @@ void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs)
   std::cout << "compare " << out["test"].get<std::string>() << " against "
             << out["reference"].get<std::string>() << " over " << out["mask"].get<std::string>()
             << "\n  relative difference |t - r| / (|r| + eps), eps = 1e-3 mean |r|: mean, p99, max;"
-            << " metrics.h's RMSE, relative MSE, FLIP, SSIM, block nRMSE; mean t / mean r\n"
+            << " metrics.h's RMSE, relative MSE, LDR-FLIP, HDR-FLIP, SSIM, block nRMSE;"
+            << " mean t / mean r\n"
             << std::left << std::setw(12) << "aov" << std::right;
-  for (const char* h : {"mean", "p99", "max", "values", "rmse", "rel_mse", "flip", "ssim", "block_nrmse", "mean_ratio"})
+  for (const char* h : {"mean", "p99", "max", "values", "rmse", "rel_mse", "flip", "hdr_flip", "ssim",
+                        "block_nrmse", "mean_ratio"})
     std::cout << std::setw(12) << h;
   std::cout << "\n";
   for (const std::string& aov : aovs) {
@@ -176,7 +194,7 @@ void printTable(const nlohmann::json& out, const std::vector<std::string>& aovs)
     std::cout << std::left << std::setw(12) << aov << std::right << std::scientific << std::setprecision(3);
     for (const char* k : {"mean", "p99", "max"}) std::cout << std::setw(12) << a["relative_difference"][k].get<double>();
     std::cout << std::setw(12) << a["relative_difference"]["values"].get<long long>();
-    for (const char* k : {"rmse", "rel_mse", "flip", "ssim", "block_nrmse"}) {
+    for (const char* k : {"rmse", "rel_mse", "flip", "hdr_flip", "ssim", "block_nrmse"}) {
       const nlohmann::json& v = a["metrics"][k];
       if (v.is_string()) std::cout << std::setw(12) << v.get<std::string>();
       else std::cout << std::setw(12) << v.get<double>();
@@ -200,7 +218,7 @@ int compareCommand(const Options& options) {
                         {"mask", depth ? "the reference's depth > 0" : "every pixel"},
                         {"aovs", nlohmann::json::object()}};
   std::vector<NamedImage> differences;
-  std::vector<std::pair<std::string, RelativeDifference>> relatives;  // per AOV, for its PNG
+  std::vector<AovPngs> pngs;  // per AOV, for --out's PNGs
   std::set<std::string> written;  // the test layers --out names its difference layers after
   for (const std::string& aov : aovs) {
     if (!options.out.empty() && !written.insert(layers(aov).first).second)
@@ -219,11 +237,11 @@ int compareCommand(const Options& options) {
     if (!options.out.empty()) {
       std::vector<NamedImage> layer = differenceLayers(mine, *t, *r, covered, relative.epsilon);
       differences.insert(differences.end(), layer.begin(), layer.end());
-      relatives.emplace_back(aov, relative);
+      pngs.push_back({aov, relative, hdrFlipErrorMap(*t, *r, covered)});
     }
   }
   // Written once every AOV was compared: an error above leaves nothing behind.
-  if (!options.out.empty()) writeDifferences(options.out, relatives, differences, covered, out);
+  if (!options.out.empty()) writeDifferences(options.out, pngs, differences, covered, out);
   // Every figure beyond its bound, named (an infinite block nRMSE, written "inf", exceeds any).
   nlohmann::json exceeded = nlohmann::json::array();
   for (const auto& [name, bound] : bounds)
@@ -248,6 +266,11 @@ int compareCommand(const Options& options) {
                      "to "
                   << png["range"][1].get<double>() << ", " << png["top_is"].get<std::string>()
                   << ", at the top)\n";
+        const nlohmann::json& flip = out["aovs"][aov]["hdr_flip_png"];
+        std::cout << "wrote " << flip["path"].get<std::string>()
+                  << " (HDR-FLIP per pixel, 0 black to 1 pale yellow, over exposures "
+                  << flip["exposures"]["start_stops"].get<double>() << " to "
+                  << flip["exposures"]["stop_stops"].get<double>() << " stops)\n";
       }
     }
   }

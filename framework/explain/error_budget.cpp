@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "framework/metrics/metrics.h"
+#include "framework/metrics/block_error.h"
+#include "framework/metrics/mask.h"
+#include "framework/metrics/pixel_errors.h"
 
 namespace lpvlab {
 
@@ -24,9 +26,12 @@ nlohmann::json finiteOrString(double value) {
 }  // namespace
 
 ErrorFigures errorFigures(const Image& test, const Image& reference, const Image& mask) {
-  const MetricSet metrics = computeMetrics(test, reference, &mask);
+  // Only the figures the budget reports (computeMetrics would add SSIM and both FLIPs).
+  const PixelMask covered = checkInputs("errorFigures", test, reference, &mask);
+  const PixelErrors errors = pixelErrors(test, reference, covered, MetricOptions{});
   const double reference_mean = imageMean(reference);
-  return {metrics.blockNrmse, metrics.rmse, reference_mean > 0.0 ? imageMean(test) / reference_mean : 0.0};
+  return {blockNrmse(test, reference, covered), errors.rmse,
+          reference_mean > 0.0 ? imageMean(test) / reference_mean : 0.0};
 }
 
 nlohmann::json toJson(const ErrorFigures& figures) {

@@ -11,7 +11,8 @@
 #include "framework/explain/rsm_vpl_subset.h"
 #include "framework/many_lights/host_gbuffer.h"
 #include "framework/many_lights/vpl_gather.h"
-#include "framework/metrics/metrics.h"
+#include "framework/metrics/block_error.h"
+#include "framework/metrics/mask.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/pipeline/raster_inputs.h"
 #include "framework/reference/embree_scene.h"
@@ -73,8 +74,8 @@ Image average(const Image& a, const Image& b) {
 double noiseOfMean(const Image& a, const Image& b, const Image& mean, const Image& mask) {
   const double meanOfMean = imageMean(mean);
   if (!(meanOfMean > 0.0)) return 0.0;
-  const MetricSet m = computeMetrics(a, b, &mask);  // normalised by b's mean
-  return 0.5 * m.blockNrmse * imageMean(b) / meanOfMean;
+  const double bNrmse = blockNrmse(a, b, checkInputs("noiseOfMean", a, b, &mask));  // over b's mean
+  return 0.5 * bNrmse * imageMean(b) / meanOfMean;
 }
 
 // The pixels the camera sees (the G-buffer's position.w), top row first as the outputs are.

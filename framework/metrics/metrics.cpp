@@ -24,6 +24,21 @@ DisplayPair displayPair(const Image& test, const Image& reference, const PixelMa
   return {toDisplay(test, stops), toDisplay(reference, stops)};
 }
 
+// HDR-FLIP at the options' exposures, or the reference's range.
+HdrFlipMaps hdrFlipOf(const Image& test, const Image& reference, const PixelMask& mask,
+                      const MetricOptions& options) {
+  return hdrFlip(test, reference, mask, options.pixelsPerDegree,
+                 options.hdrFlipExposures ? *options.hdrFlipExposures
+                                          : hdrFlipExposures(reference, mask));
+}
+
+// A map's mean over the covered pixels (the map is 0 at background).
+double coveredMean(const Plane& map, const PixelMask& mask) {
+  double sum = 0.0;
+  for (std::size_t p = 0; p < map.values.size(); ++p) sum += map[p];
+  return sum / double(mask.count);
+}
+
 Image toImage(const Plane& plane) {
   Image image(plane.width, plane.height, 1);
   for (std::size_t p = 0; p < plane.values.size(); ++p) image.pixels[p] = float(plane[p]);
@@ -39,6 +54,7 @@ nlohmann::json MetricSet::toJson() const {
           {"psnr", std::isinf(psnr) ? nlohmann::json("inf") : nlohmann::json(psnr)},
           {"ssim", ssim},
           {"flip", flip},
+          {"hdr_flip", hdrFlip},
           {"block_nrmse", std::isinf(blockNrmse) ? nlohmann::json("inf") : nlohmann::json(blockNrmse)},
           {"pixels", pixels}};
 }
@@ -56,10 +72,9 @@ MetricSet computeMetrics(const Image& test, const Image& reference, const Image*
   metrics.blockNrmse = blockNrmse(test, reference, covered);
   metrics.psnr = errors.psnr;
   metrics.ssim = meanSsim(display.test, display.reference, covered);
-  const Plane flip = ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree);
-  double flipSum = 0.0;
-  for (std::size_t p = 0; p < flip.values.size(); ++p) flipSum += flip[p];  // 0 at background
-  metrics.flip = flipSum / double(covered.count);
+  metrics.flip = coveredMean(
+      ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree), covered);
+  metrics.hdrFlip = coveredMean(hdrFlipOf(test, reference, covered, options).error, covered);
   metrics.pixels = covered.count;
   return metrics;
 }
@@ -69,6 +84,13 @@ Image flipErrorMap(const Image& test, const Image& reference, const Image* mask,
   const PixelMask covered = checkInputs("flipErrorMap", test, reference, mask);
   const DisplayPair display = displayPair(test, reference, covered, options);
   return toImage(ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree));
+}
+
+HdrFlipMap hdrFlipErrorMap(const Image& test, const Image& reference, const Image* mask,
+                           const MetricOptions& options) {
+  const PixelMask covered = checkInputs("hdrFlipErrorMap", test, reference, mask);
+  const HdrFlipMaps maps = hdrFlipOf(test, reference, covered, options);
+  return {toImage(maps.error), maps.exposures};
 }
 
 }  // namespace lpvlab

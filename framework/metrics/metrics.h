@@ -8,6 +8,9 @@
 //   ssim       mean SSIM (Wang et al. 2004) over covered pixels, on display luminance (ssim.h)
 //   flip       mean LDR-FLIP (Andersson et al. 2020) over covered pixels, of the display images
 //              (flip.h)
+//   hdrFlip    mean HDR-FLIP (Andersson et al. 2021) over covered pixels, of the linear images:
+//              the largest LDR-FLIP over the exposures the reference spans, each tone-mapped
+//              (hdr_flip.h)
 //   blockNrmse the RMSE of 8 x 8-pixel block means over the reference's mean (block_error.h):
 //              the low frequencies' error, blind to pixel noise of zero mean
 //
@@ -15,8 +18,9 @@
 // screen: scaled by 2^exposureStops and clamped to [0, 1] per channel ("the display images",
 // display.h). By default the exposure brings the reference's median luminance over the covered
 // pixels to middle grey 0.18, the same rule as the PNGs lpvlab writes (middleGreyExposure), so
-// the figures do not depend on the radiance units. This is the HDR handling: one exposure, a
-// clamp, no tone curve (HDR-FLIP's sweep over exposures is not done).
+// the figures do not depend on the radiance units. That is one exposure and a clamp: what is
+// brighter than white or darker than the display's black there is not seen. HDR-FLIP sees every
+// exposure from the reference's brightest pixel to its median, so it sees those errors too.
 //
 // A mask is a 1-channel image of the same size: a pixel whose mask value is 0 is background and
 // is left out of every figure (any other value includes it; values are not weights). Changing a
@@ -31,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/io/image.h"
+#include "framework/metrics/hdr_flip.h"
 
 namespace lpvlab {
 
@@ -48,6 +53,8 @@ struct MetricOptions {
   // FLIP's observer: pixels per degree of visual angle. The default is FLIP's: a 0.7 m wide
   // 3840-pixel monitor seen from 0.7 m, 0.7 * 3840 / 0.7 * pi / 180 = 67.02 pixels per degree.
   double pixelsPerDegree = 0.7 * 3840.0 / 0.7 * 3.14159265358979323846 / 180.0;
+  // HDR-FLIP's exposures. Unset: the range the reference implies (hdrFlipExposures).
+  std::optional<HdrFlipExposures> hdrFlipExposures;
 };
 
 struct MetricSet {
@@ -57,11 +64,12 @@ struct MetricSet {
   double psnr = 0.0;        // dB; +inf for identical images
   double ssim = 0.0;        // in [-1, 1], 1 for identical images
   double flip = 0.0;        // in [0, 1], 0 for identical images
+  double hdrFlip = 0.0;     // in [0, 1], 0 for identical images
   double blockNrmse = 0.0;  // unitless; +inf when the reference is black and the test is not
   std::int64_t pixels = 0;  // covered pixels
 
-  // {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "block_nrmse", "pixels"}. JSON has no
-  // infinity, so an infinite PSNR (identical images) or block nRMSE is written as "inf".
+  // {"mae", "rmse", "rel_mse", "psnr", "ssim", "flip", "hdr_flip", "block_nrmse", "pixels"}.
+  // JSON has no infinity, so an infinite PSNR (identical images) or block nRMSE is written "inf".
   nlohmann::json toJson() const;
 };
 
@@ -73,6 +81,15 @@ MetricSet computeMetrics(const Image& test, const Image& reference, const Image*
 // Per-pixel LDR-FLIP of the display images, 1 channel in [0, 1]; 0 at background pixels.
 Image flipErrorMap(const Image& test, const Image& reference, const Image* mask = nullptr,
                    const MetricOptions& options = {});
+
+// Per-pixel HDR-FLIP of the linear images, 1 channel in [0, 1]; 0 at background pixels; and
+// the exposures it spanned.
+struct HdrFlipMap {
+  Image error;
+  HdrFlipExposures exposures;
+};
+HdrFlipMap hdrFlipErrorMap(const Image& test, const Image& reference, const Image* mask = nullptr,
+                           const MetricOptions& options = {});
 
 // The FLIP map in false colour for looking at: 3 channels in [0, 1], the per-pixel FLIP value
 // through the magma ramp (black, purple, orange, pale yellow for 0 -> 1, the colour map FLIP's

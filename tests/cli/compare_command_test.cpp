@@ -1,8 +1,8 @@
 // `lpvlab compare` on images whose differences are known: a test 0.1 brighter than a reference of
 // 0.5 on every covered pixel (depth > 0; one background column left out) has RMSE 0.1, block
 // nRMSE 0.2, a ratio of means 1.2 and a relative difference 0.1 / (0.5 + 5e-4); --threshold gates
-// on them with exit code 3; --out writes the signed and relative differences and a PNG of the
-// relative one with its colour bar; --aov A=B compares
+// on them with exit code 3; --out writes the signed and relative differences, a PNG of the
+// relative one with its colour bar and one of HDR-FLIP; --aov A=B compares
 // a run's layer with a reference's of another name.
 
 #include <filesystem>
@@ -15,7 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "executable_support.h"
+#include "framework/experiment/run_outputs.h"
 #include "framework/io/image.h"
+#include "framework/metrics/metrics.h"
 #include "io/temp_dir.h"
 
 namespace lpvlab {
@@ -50,6 +52,17 @@ TEST(CompareCommand, KnownDifferencesGiveTheirFigures) {
   EXPECT_NEAR(a["mean_ratio"].get<double>(), 1.2, 1e-6);
   EXPECT_NEAR(a["relative_difference"]["mean"].get<double>(), 0.1 / 0.5005, 1e-6);
   EXPECT_EQ(a["metrics"]["pixels"].get<int>(), kSize * (kSize - 1));
+  // Both FLIPs, as the metrics library gives them on the same images (metrics_test and
+  // hdr_flip_test check the library). HDR-FLIP sees 0.5 and 0.6 at the one exposure that shows
+  // 0.5 at 0.85, on the tone curve's shoulder, which brings them closer than LDR-FLIP's middle
+  // grey does.
+  const std::vector<NamedImage> t = readExr(dir.file("test.exr")), ref = readExr(dir.file("reference.exr"));
+  const Image mask = coverageMask(*findAovOrNull(ref, "depth"));
+  const MetricSet expected = computeMetrics(*findAovOrNull(t, "indirect"), *findAovOrNull(ref, "indirect"), &mask);
+  EXPECT_NEAR(a["metrics"]["flip"].get<double>(), expected.flip, 1e-9);
+  EXPECT_NEAR(a["metrics"]["hdr_flip"].get<double>(), expected.hdrFlip, 1e-9);
+  EXPECT_GT(expected.hdrFlip, 0.0);
+  EXPECT_LT(expected.hdrFlip, expected.flip);
   // The text table has the same figures, one row per AOV.
   const test::LpvlabResult text =
       test::runLpvlab("compare test.exr reference.exr --aov indirect", dir.path(), dir.path());
@@ -121,6 +134,14 @@ TEST(CompareCommand, OutWritesTheDifferencesAndLayersPairUp) {
     EXPECT_NEAR(pixel(spec.width - 1, 0, c), paleYellow[c], 1) << "bar top, channel " << c;
     EXPECT_LE(pixel(spec.width - 1, kSize - 1, c), 4) << "bar bottom, channel " << c;
   }
+  // HDR-FLIP's map: a constant reference spans one exposure, the one that shows it at 0.85.
+  EXPECT_TRUE(std::filesystem::exists(dir.file("diff/indirect_hdr_flip.png")));
+  const nlohmann::json flip = nlohmann::json::parse(
+      test::runLpvlab("compare test.exr reference.exr --aov indirect --out diff3 --json", dir.path(),
+                      dir.path()).out)["aovs"]["indirect"]["hdr_flip_png"];
+  EXPECT_DOUBLE_EQ(flip["exposures"]["start_stops"].get<double>(),
+                   flip["exposures"]["stop_stops"].get<double>());
+  EXPECT_EQ(flip["exposures"]["count"].get<int>(), 2);
   // A layer the reference lacks is named.
   const test::LpvlabResult missing =
       test::runLpvlab("compare test.exr reference.exr --aov indirect=indirect2", dir.path(), dir.path());

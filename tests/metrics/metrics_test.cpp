@@ -90,6 +90,7 @@ TEST(Metrics, MaskedOutPixelsChangeNothing) {
   EXPECT_DOUBLE_EQ(changed.psnr, masked.psnr);
   EXPECT_DOUBLE_EQ(changed.ssim, masked.ssim);
   EXPECT_DOUBLE_EQ(changed.flip, masked.flip);
+  EXPECT_DOUBLE_EQ(changed.hdrFlip, masked.hdrFlip);
   EXPECT_EQ(changed.pixels, masked.pixels);
 
   // Without the mask the same change does show, in every figure.
@@ -100,6 +101,7 @@ TEST(Metrics, MaskedOutPixelsChangeNothing) {
   EXPECT_NE(unmasked.psnr, masked.psnr);
   EXPECT_NE(unmasked.ssim, masked.ssim);
   EXPECT_NE(unmasked.flip, masked.flip);
+  EXPECT_NE(unmasked.hdrFlip, masked.hdrFlip);
 }
 
 TEST(Metrics, MaskedErrorsAreMeansOverCoveredValues) {
