@@ -173,8 +173,10 @@ def param_columns(df):
 
 
 # Beside the metrics in summary.csv but no error of the run: metric.<pair>.pixels counts the
-# compared pixels, metric.<pair>.noise_floor_rmse is the reference's own noise as an RMSE.
-NOT_METRICS = ("pixels", "noise_floor_rmse")
+# compared pixels, metric.<pair>.noise_floor_rmse is the reference's own noise as an RMSE,
+# ratio_of_means the run's image mean over the reference's, and
+# mean_reference_relative_standard_error that mean's standard error over the mean.
+NOT_METRICS = ("pixels", "noise_floor_rmse", "ratio_of_means", "mean_reference_relative_standard_error")
 
 
 def metric_columns(df):

@@ -12,7 +12,7 @@ from lpvlab_analysis import sections as SC
 class SectionsTest(unittest.TestCase):
     def test_every_module_registers_its_section_in_order(self):
         titles = [s.title for s in SC.report_modules(lpvlab_analysis)]
-        self.assertEqual(titles[:4], ["Methods", "Convergence", "Radiosity", "Particles"])
+        self.assertEqual(titles[:5], ["Methods", "Convergence", "Bias over seeds", "Radiosity", "Particles"])
 
     def test_only_the_sections_and_parts_that_apply_are_written(self):
         empty = lambda *a: None  # noqa: E731

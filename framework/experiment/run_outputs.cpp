@@ -92,6 +92,22 @@ double noiseFloorRmse(const Image& varianceOfMean, const Image& mask) {
   return count > 0.0 ? std::sqrt(sum / count) : 0.0;
 }
 
+// The standard error of imageMean of the reference, from its variance-of-mean image. Its pixels are
+// independent estimates; a pixel's channels come from the same paths, so they are taken as fully
+// correlated, which bounds the error from above: sqrt(sum_p (sum_c sqrt(v_pc))^2) / (P C).
+double meanStandardError(const Image& varianceOfMean) {
+  const std::size_t values = varianceOfMean.pixels.size();
+  if (values == 0) return 0.0;
+  double sum = 0.0;
+  for (std::size_t p = 0; p < values; p += std::size_t(varianceOfMean.channels)) {
+    double deviation = 0.0;
+    for (int c = 0; c < varianceOfMean.channels; ++c)
+      deviation += std::sqrt(std::max(0.0, double(varianceOfMean.pixels[p + std::size_t(c)])));
+    sum += deviation * deviation;
+  }
+  return std::sqrt(sum) / double(values);
+}
+
 // `mask` restricted to a region of the image (ComparisonSettings::Region).
 Image regionMask(const Image& mask, const glm::vec4& rect) {
   Image out = mask;
@@ -121,14 +137,18 @@ nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Re
     nlohmann::json& pair = out["comparison"][mine + "_vs_" + theirs];
     pair = {{"mean_run", meanRun},
             {"mean_reference", meanReference},
-            {"ratio_of_means", meanReference > 0.0 ? meanRun / meanReference : 0.0},
             {"z_tests", z.tests},
             {"z_rejected", z.rejected},
             {"z_threshold", z.threshold},
             {"mean_z", z.meanZ},
             {"metrics", computeMetrics(a, b, &mask).toJson()}};
-    // Beside the metrics (so the summary has it per pair), but not a metric of the run.
+    // Beside the metrics (so the summary has them per pair), but not errors of the run: the
+    // reference's noise, the ratio of the means and the reference mean's relative standard error
+    // (what a test of the run's mean over seeds needs: analysis/lpvlab_analysis/seeds.py).
     pair["metrics"]["noise_floor_rmse"] = noiseFloorRmse(variance, mask);
+    pair["metrics"]["ratio_of_means"] = meanReference > 0.0 ? meanRun / meanReference : 0.0;
+    pair["metrics"]["mean_reference_relative_standard_error"] =
+        meanReference > 0.0 ? meanStandardError(variance) / meanReference : 0.0;
     for (const ComparisonSettings::Region& region : settings.regions) {
       const Image inside = regionMask(mask, region.rect);
       double covered = 0.0;

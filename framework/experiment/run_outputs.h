@@ -31,7 +31,9 @@ Image coverageMask(const Image& depth);
 
 // How the run's outputs compare with the reference's, per configured pair (run output, reference
 // output), over the pixels the camera sees: the metrics (framework/metrics/metrics.h), per region
-// too, the means and their ratio, and a per-pixel z-test against the reference's variance at a
+// too, the means and their ratio (of every pixel and channel, imageMean), the reference mean's
+// relative standard error (from its pixels' variances, each pixel's channels taken as fully
+// correlated, which bounds it from above), and a per-pixel z-test against the reference's variance at a
 // Sidak-corrected 1% family level (how many pixel channels the reference's noise can't explain).
 nlohmann::json compareWithReference(const std::vector<NamedImage>& run, const Reference& ref,
                                     const Image& mask, const ComparisonSettings& settings);

@@ -38,7 +38,7 @@ TEST(CompareRun, RendersTheMissingReferenceAndRecordsMetricsAndAHeatMap) {
   EXPECT_EQ(manifest["reference"]["samples"].get<int>(), 64);
   EXPECT_TRUE(fs::exists(manifest["reference"]["directory"].get<std::string>() + "/images.exr"));
   const auto& direct = manifest["reference"]["comparison"]["direct_vs_direct"];
-  EXPECT_NEAR(direct["ratio_of_means"].get<double>(), 1.0, 0.05);
+  EXPECT_NEAR(direct["metrics"]["ratio_of_means"].get<double>(), 1.0, 0.05);
   EXPECT_GT(direct["metrics"]["ssim"].get<double>(), 0.8);
   EXPECT_LT(direct["metrics"]["flip"].get<double>(), 0.2);
   const auto& indirect = manifest["reference"]["comparison"]["indirect_vs_indirect1"];
@@ -121,6 +121,28 @@ TEST(CompareRun, TheNoiseFloorIsTheReferencesOwnRmse) {
   const auto& metrics = out["comparison"]["indirect_vs_indirect1"]["metrics"];
   EXPECT_NEAR(metrics["noise_floor_rmse"].get<double>(), std::sqrt(2.5e-4), 1e-7);
   EXPECT_EQ(metrics["rmse"].get<double>(), 0.0);  // the run equals the reference's mean
+}
+
+// The standard error of the reference's image mean (every pixel and channel), relative to the
+// mean (0.5 here): with variance v in
+// every value and a pixel's channels fully correlated, sqrt(P (3 sqrt(v))^2) / (3 P) = sqrt(v / P).
+// Varying the variances across channels moves it as the bound says.
+TEST(CompareRun, TheReferenceMeansStandardErrorFromItsVariances) {
+  const int w = 8, h = 4;
+  Image mask(w, h, 1, 1.0f), mean(w, h, 3, 0.5f), variance(w, h, 3, 4e-4f);
+  ComparisonSettings settings;
+  settings.pairs = {{"indirect", "indirect1"}};
+  auto standardError = [&] {
+    Reference ref;
+    ref.aovs = {{"indirect1", mean}, {"indirect1_variance", variance}};
+    return compareWithReference({{"indirect", mean}}, ref, mask, settings)["comparison"]
+        ["indirect_vs_indirect1"]["metrics"]["mean_reference_relative_standard_error"].get<double>();
+  };
+  EXPECT_NEAR(standardError(), std::sqrt(4e-4 / (w * h)) / 0.5, 1e-7);  // relative: over 0.5
+  // One channel's variance 0 everywhere: (2 sqrt(v))^2 per pixel instead of (3 sqrt(v))^2.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) variance.at(x, y, 2) = 0.0f;
+  EXPECT_NEAR(standardError(), std::sqrt(w * h * 4.0 * 4e-4) / (3.0 * w * h) / 0.5, 1e-7);
 }
 
 }  // namespace
