@@ -9,6 +9,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from . import fsutil  # noqa: E402
+from . import grid_slices  # noqa: E402
 from . import images  # noqa: E402
 
 # What each image of the chain is, as the page says it.
@@ -115,9 +116,12 @@ def build_page(directory, out_dir, css, js):
                       "figures": figures, "leakage": budget["leakage_factor"],
                       "reference_noise": budget.get("reference_noise_block_nrmse")})
     links = [(os.path.relpath(os.path.join(directory, n), out_dir), n)
-             for n in ("explain.json", "explain.exr") if os.path.isfile(os.path.join(directory, n))]
+             for n in ("explain.json", "explain.exr", "grid.npy", "exact_grid.npy")
+             if os.path.isfile(os.path.join(directory, n))]
+    grids = grid_slices.write_pair_png(directory, os.path.join(img_dir, "grids.png"))
     page = templating.environment().get_template("explain.html.j2").render(
         css=css, js=js, result=result, pairs=pairs, links=links, directory=os.path.abspath(directory),
+        grids=os.path.relpath(grids, out_dir) if grids else None,
         generated=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"))
     index = os.path.join(out_dir, "index.html")
     fsutil.write_text(index, page)

@@ -74,10 +74,27 @@ class Explain(unittest.TestCase):
             self.assertIn("1.7000", page)        # the propagation term
             self.assertIn("inf", page)           # a black reference's block nRMSE, as the JSON has it
             self.assertIn("explain.json", page)  # the link to the data
+            self.assertNotIn("The light grids", page)  # no grids written: no section
             if images.have_oiio():
                 for name in ["reference_indirect1"] + BUDGET["chain"]:
                     self.assertTrue(os.path.isfile(os.path.join(root, "report", "img", f"{name}.png")), name)
                 self.assertEqual(page.count("class='flip'"), len(BUDGET["chain"]))
+
+    def test_the_page_shows_the_methods_grid_beside_the_exact_one(self):
+        import numpy as np
+        from tests.test_grid_slices import write_dump
+        with tempfile.TemporaryDirectory() as root:
+            explanation(root)
+            grid = np.zeros((1, 3, 4, 4, 4, 4))
+            grid[0, :, 0, 2, 2, 2] = 1.0
+            write_dump(root, grid)
+            write_dump(root, 1.5 * grid, stem="exact_grid")
+            with open(report.build_report(root)) as f:
+                page = f.read()
+            self.assertIn("The light grids", page)
+            self.assertIn("img/grids.png", page)
+            self.assertTrue(os.path.isfile(os.path.join(root, "report", "img", "grids.png")))
+            self.assertIn("exact_grid.npy", page)  # linked
 
     def test_a_directory_without_budgets_is_refused(self):
         with tempfile.TemporaryDirectory() as root:

@@ -14,10 +14,10 @@ from lpvlab_analysis import report
 from tests.fixtures import make_sweep
 
 
-def write_dump(run_dir, grid, axes=GS.AXES):
+def write_dump(run_dir, grid, axes=GS.AXES, stem="grid"):
     os.makedirs(run_dir, exist_ok=True)
-    np.save(os.path.join(run_dir, "grid.npy"), grid.astype(np.float32))
-    with open(os.path.join(run_dir, "grid.json"), "w") as f:
+    np.save(os.path.join(run_dir, stem + ".npy"), grid.astype(np.float32))
+    with open(os.path.join(run_dir, stem + ".json"), "w") as f:
         json.dump({"axes": list(axes), "shape": list(grid.shape), "sh_order": 1,
                    "levels": [{"origin_m": [0, 0, 0], "cell_size_m": 0.1}] * grid.shape[0]}, f)
 
@@ -60,6 +60,19 @@ class GridSlicesTest(unittest.TestCase):
         write_dump(run, self.grid)
         out = GS.write_png(run, os.path.join(self.tmp.name, "grid.png"))
         self.assertTrue(os.path.getsize(out) > 1000)
+
+    def test_an_explanations_grids_side_by_side_on_one_scale(self):
+        explained = os.path.join(self.tmp.name, "explained")
+        write_dump(explained, self.grid)
+        out = os.path.join(self.tmp.name, "pair.png")
+        self.assertIsNone(GS.write_pair_png(explained, out))  # no exact grid yet
+        write_dump(explained, 2.0 * self.grid, stem="exact_grid")
+        self.assertTrue(os.path.getsize(GS.write_pair_png(explained, out)) > 1000)
+        # Grids of different shapes cannot be compared slice for slice: refused by name.
+        write_dump(explained, self.grid[:, :, :, :2], stem="exact_grid")
+        with self.assertRaises(GS.GridDumpError) as caught:
+            GS.write_pair_png(explained, out)
+        self.assertIn("exact_grid.npy", str(caught.exception))
 
     def test_a_dump_whose_axes_or_shape_disagree_is_refused_naming_the_file(self):
         run = os.path.join(self.tmp.name, "bad")

@@ -22,6 +22,7 @@
 #include "framework/core/log.h"
 #include "framework/experiment/experiment_file.h"
 #include "framework/experiment/experiment_renderer.h"
+#include "framework/experiment/run.h"
 #include "framework/experiment/run_outputs.h"
 #include "framework/explain/explain_frame.h"
 #include "framework/io/provenance.h"
@@ -85,6 +86,17 @@ void writeLayers(const std::string& path, const ExplainImages& images, const Ref
 
 // What the oracles' images depend on: the experiment as resolved (its file with the overrides),
 // the VPL budget and lpvlab's revision.
+// The method's grid and the exact one beside it (grid slices, figs. 8.9/8.10; the report draws
+// their middle slices) into `dir`, named in `outputs`. A checkpoint from before the exact grids
+// were kept has none: said so.
+void writeGrids(const ExplainedFrame& explained, const fs::path& dir, nlohmann::json& outputs) {
+  outputs["grid"] = writeGridDump(explained.methodGrid, dir.string(), "grid");
+  if (!explained.exactGrid.values.empty())
+    outputs["exact_grid"] = writeGridDump(explained.exactGrid, dir.string(), "exact_grid");
+  else
+    outputs["exact_grid"] = "not written: resumed from a checkpoint without its grids";
+}
+
 std::string checkpointKey(const Options& options) {
   toml::table root = options.experiment.empty() ? toml::table{} : readExperimentTable(options.experiment);
   for (const std::string& o : options.overrides) applyOverride(root, o);
@@ -176,6 +188,7 @@ int explainCommand(const Options& options) {
               findAov(aovs, "depth"), experiment.name);
   result["outputs"] = {{"exr", "explain.exr"},
                        {"units", "indirect radiance W/(m^2 sr); depth: view depth in metres"}};
+  writeGrids(explained, dir, result["outputs"]);
   writeTextAtomically((dir / "explain.json").string(), result.dump(2) + "\n");
   fs::remove_all(dir / "partial");  // the oracles' checkpoint: the explanation is complete
 
@@ -184,7 +197,8 @@ int explainCommand(const Options& options) {
             << explained.vpls["covered_rsm_texels"].get<std::size_t>() << " RSM texels; reference "
             << reference.samples << " spp\n";
   for (const auto& [pair, budget] : result["budgets"].items()) printBudget(pair, budget);
-  std::cout << "\nwrote " << out << "/{explain.json, explain.exr}\n";
+  std::cout << "\nwrote " << out << "/{explain.json, explain.exr, grid.npy"
+            << (explained.exactGrid.values.empty() ? "" : ", exact_grid.npy") << "}\n";
   return 0;
 }
 

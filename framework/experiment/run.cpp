@@ -16,16 +16,18 @@
 
 namespace lpvlab {
 
-nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir) {
+nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir,
+                             const std::string& stem) {
   const std::filesystem::path dir(outDir);
-  writeNpy((dir / "grid.npy").string(), {dump.shape, dump.values});
+  const std::string npy = stem + ".npy", json = stem + ".json";
+  writeNpy((dir / npy).string(), {dump.shape, dump.values});
   nlohmann::json described = dump.description;
-  described["file"] = "grid.npy";
+  described["file"] = npy;
   described["shape"] = dump.shape;
   described["axes"] = dump.axes;
   described["dtype"] = "float32, little-endian, C order";
-  writeTextAtomically((dir / "grid.json").string(), described.dump(2) + "\n");
-  return {{"npy", "grid.npy"}, {"json", "grid.json"}, {"shape", dump.shape}, {"axes", dump.axes}};
+  writeTextAtomically((dir / json).string(), described.dump(2) + "\n");
+  return {{"npy", npy}, {"json", json}, {"shape", dump.shape}, {"axes", dump.axes}};
 }
 
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,

@@ -27,8 +27,9 @@ namespace lpvlab {
 nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
                              const std::string& outDir);
 
-// Writes `dump` into `outDir` as grid.npy (numpy.load reads it) and grid.json (its axes, shape,
-// units, basis and where each level's cells are); returns the manifest's outputs.grid entry.
-nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir);
+// Writes `dump` into `outDir` as <stem>.npy (numpy.load reads it) and <stem>.json (its axes,
+// shape, units, basis and where each level's cells are); returns the manifest's outputs.grid entry.
+nlohmann::json writeGridDump(const GridDump& dump, const std::string& outDir,
+                             const std::string& stem = "grid");
 
 }  // namespace lpvlab

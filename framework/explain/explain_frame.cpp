@@ -96,10 +96,33 @@ double gridCells(const IndirectMethod& method) {
   return cells;
 }
 
-// Each oracle from each draw: [visible][draw] gathers and grids, timed into `seconds`.
+// Each oracle from each draw: [visible][draw] gathers and grids, timed into `seconds`, and the
+// exact grids' values (every level's, in order) behind the grid images.
 struct OracleRenders {
   Image gathers[2][2], grids[2][2];
+  std::vector<float> gridValues[2][2];
 };
+
+// A grid's values as a 1-row image, for the checkpoint, and back.
+Image valuesImage(const std::vector<float>& values) {
+  Image image(int(values.size()), 1, 1);
+  image.pixels = values;
+  return image;
+}
+
+// The exact grids behind a grid image: those its render just computed (saved to the checkpoint
+// beside the image), or, when the image came from the checkpoint, the ones saved with it.
+std::vector<float> checkpointedValues(const ExplainCheckpoint& checkpoint, const std::string& name,
+                                      std::vector<float> computed) {
+  const std::string key = name + "_cells";
+  if (!computed.empty()) {
+    if (checkpoint.save) checkpoint.save(key, valuesImage(computed));
+    return computed;
+  }
+  if (checkpoint.load)
+    if (std::optional<Image> saved = checkpoint.load(key)) return saved->pixels;
+  return {};
+}
 
 // `render`'s image, or the checkpoint's copy of it from an interrupted explanation (saved there
 // once rendered).
@@ -130,21 +153,40 @@ OracleRenders renderOracles(IndirectMethod& method, const HostGBuffer& g, const 
         });
     });
     seconds["grid" + suffix] = work.run("grid" + suffix, cost * n * cells, [&](auto progress) {
-      for (int d = 0; d < drawCount; ++d)
-        out.grids[visible][d] = checkpointed(checkpoint, "grid" + suffix + "_" + std::to_string(d), [&] {
+      for (int d = 0; d < drawCount; ++d) {
+        const std::string name = "grid" + suffix + "_" + std::to_string(d);
+        std::vector<float> computed;
+        out.grids[visible][d] = checkpointed(checkpoint, name, [&] {
           return method.renderFromGrids([&](const GridGeometry& grid, int coefficients) {
-            return exactLightGrid(draws[d].vpls, grid, coefficients, rays,
-                                  [&](double f) { progress((d + f) / drawCount); });
+            std::vector<float> level = exactLightGrid(draws[d].vpls, grid, coefficients, rays,
+                                                      [&](double f) { progress((d + f) / drawCount); });
+            computed.insert(computed.end(), level.begin(), level.end());
+            return level;
           });
         });
+        out.gridValues[visible][d] = checkpointedValues(checkpoint, name, std::move(computed));
+      }
     });
     if (drawCount == 1) {  // every texel was a VPL: both draws are the one
       out.gathers[visible][1] = out.gathers[visible][0];
       out.grids[visible][1] = out.grids[visible][0];
+      out.gridValues[visible][1] = out.gridValues[visible][0];
     }
   }
   work.finish();
   return out;
+}
+
+// The mean of the two draws' exact grids in the layout of the method's dump (`like`); no values
+// when a draw's are missing (a checkpoint from before they were kept).
+GridDump meanGrid(const GridDump& like, const std::vector<float> (&draws)[2]) {
+  GridDump mean{like.shape, like.axes, {}, like.description};
+  mean.description["quantity"] =
+      "the exact light grid (docs/explain.md#the-oracles) from the RSM's VPLs, the mean of two draws";
+  if (draws[0].size() != like.values.size() || draws[1].size() != like.values.size()) return mean;
+  mean.values.resize(like.values.size());
+  for (std::size_t i = 0; i < mean.values.size(); ++i) mean.values[i] = 0.5f * (draws[0][i] + draws[1][i]);
+  return mean;
 }
 
 }  // namespace
@@ -169,6 +211,7 @@ ExplainedFrame explainFrame(Pipeline& pipeline, const EmbreeScene& scene,
 
   // The method's own image and grid, before the oracles' renders replace them.
   out.images.method = findAov(pipeline.readOutputs(), "indirect");
+  out.methodGrid = method.dumpGrid();
   const double cells = gridCells(method);
   out.gridBlocksLight = method.gridBlocksLight();
   out.vpls = {{"covered_rsm_texels", draws[0].coveredTexels},
@@ -189,6 +232,7 @@ ExplainedFrame explainFrame(Pipeline& pipeline, const EmbreeScene& scene,
   set(images.gatherVisible, "gather_visible", renders.gathers[1]);
   set(images.grid, "grid", renders.grids[0]);
   set(images.gridVisible, "grid_visible", renders.grids[1]);
+  out.exactGrid = meanGrid(out.methodGrid, renders.gridValues[out.gridBlocksLight ? 1 : 0]);
   return out;
 }
 

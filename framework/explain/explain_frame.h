@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/explain/error_budget.h"
+#include "framework/pipeline/indirect_method.h"
 
 namespace lpvlab {
 
@@ -40,6 +41,10 @@ struct ExplainedFrame {
   bool gridBlocksLight = false;  // the method's propagation blocks light (IndirectMethod)
   nlohmann::json vpls;           // how many, from how many covered texels, the block side
   nlohmann::json seconds;        // CPU wall time per oracle
+  // The method's own light grid (IndirectMethod::dumpGrid) and the exact grid it is compared
+  // with (with visibility where gridBlocksLight), the mean of the two draws', in the same layout:
+  // the grid slices of figs. 8.9/8.10 beside their exact counterparts.
+  GridDump methodGrid, exactGrid;
 };
 
 // The oracles of the frame `pipeline` rendered last; `scene` traces the shadow rays. Throws an

@@ -1,6 +1,6 @@
 // `lpvlab explain` as a user runs it, on a small Cornell box: it writes explain.json and
 // explain.exr; its budget's terms add up to the total; its "method" image is the run's own indirect
-// image; a finished explanation is not replaced without --force; and what it cannot explain (a
+// image and its grid.npy the run's own grid dump, beside an exact grid of the same shape; a finished explanation is not replaced without --force; and what it cannot explain (a
 // method without a light grid, light the oracles do not model) is refused by name before any
 // reference is rendered.
 
@@ -13,6 +13,7 @@
 
 #include "executable_support.h"
 #include "framework/io/image.h"
+#include "framework/io/npy.h"
 #include "io/temp_dir.h"
 
 namespace lpvlab {
@@ -57,7 +58,9 @@ TEST(ExplainCommand, WritesABudgetWhoseTermsAddUpAndTheRunsOwnImage) {
   // The chain's "method" is what `lpvlab run` renders with the same settings (CPU kernels: exactly).
   const fs::path run = dir.path() / "run";
   const test::LpvlabResult ran = test::runLpvlab(
-      "run" + kSmall + " -s timing.warmup=0 -s timing.repeats=1 --out " + quoted(run.string()), dir.path(), dir.path());
+      "run" + kSmall + " -s timing.warmup=0 -s timing.repeats=1 -s output.dump_grid=true --out " +
+          quoted(run.string()),
+      dir.path(), dir.path());
   ASSERT_EQ(ran.exitCode, 0) << ran.err;
   const std::vector<NamedImage> layers = readExr((out / "explain.exr").string());
   const Image& lpv = findAov(layers, "method");
@@ -66,6 +69,25 @@ TEST(ExplainCommand, WritesABudgetWhoseTermsAddUpAndTheRunsOwnImage) {
   for (std::size_t i = 0; i < lpv.pixels.size(); ++i) ASSERT_EQ(lpv.pixels[i], indirect.pixels[i]) << i;
   for (const char* name : {"reference_indirect1", "grid", "grid_visible", "gather", "gather_visible", "depth"})
     EXPECT_NE(findAovOrNull(layers, name), nullptr) << name;
+  // Its grid is the run's grid dump, value for value; the exact grid has its shape, and (no GV
+  // here, so no visibility) every cell's DC coefficient of every channel, the intensity averaged
+  // over directions, is >= 0, and the grid holds light.
+  const NpyArray grid = readNpy((out / "grid.npy").string()), ran_grid = readNpy((run / "grid.npy").string());
+  ASSERT_EQ(grid.shape, ran_grid.shape);
+  for (std::size_t i = 0; i < grid.values.size(); ++i) ASSERT_EQ(grid.values[i], ran_grid.values[i]) << i;
+  const NpyArray exact = readNpy((out / "exact_grid.npy").string());
+  ASSERT_EQ(exact.shape, grid.shape);  // level, channel, coefficient, z, y, x
+  const std::size_t cells = grid.shape[3] * grid.shape[4] * grid.shape[5], coefficients = grid.shape[2];
+  double dc = 0.0;
+  for (std::size_t level = 0; level < grid.shape[0]; ++level)
+    for (std::size_t channel = 0; channel < 3; ++channel)
+      for (std::size_t cell = 0; cell < cells; ++cell) {
+        const float c0 = exact.values[((level * 3 + channel) * coefficients) * cells + cell];
+        ASSERT_GE(c0, 0.0f) << cell;
+        dc += c0;
+      }
+  EXPECT_GT(dc, 0.0);
+  EXPECT_EQ(result["outputs"]["exact_grid"]["npy"], "exact_grid.npy");
 
   // A finished explanation stays unless --force.
   const test::LpvlabResult again =
