@@ -110,17 +110,13 @@ Image valuesImage(const std::vector<float>& values) {
   return image;
 }
 
-// The exact grids behind a grid image: those its render just computed (saved to the checkpoint
-// beside the image), or, when the image came from the checkpoint, the ones saved with it.
-std::vector<float> checkpointedValues(const ExplainCheckpoint& checkpoint, const std::string& name,
-                                      std::vector<float> computed) {
-  const std::string key = name + "_cells";
-  if (!computed.empty()) {
-    if (checkpoint.save) checkpoint.save(key, valuesImage(computed));
-    return computed;
-  }
+// The checkpoint's name of the exact grids behind the grid image `name`. They are saved before
+// the image, so a checkpointed image always has them.
+std::string cellsName(const std::string& name) { return name + "_cells"; }
+
+std::vector<float> savedValues(const ExplainCheckpoint& checkpoint, const std::string& name) {
   if (checkpoint.load)
-    if (std::optional<Image> saved = checkpoint.load(key)) return saved->pixels;
+    if (std::optional<Image> saved = checkpoint.load(cellsName(name))) return saved->pixels;
   return {};
 }
 
@@ -157,14 +153,16 @@ OracleRenders renderOracles(IndirectMethod& method, const HostGBuffer& g, const 
         const std::string name = "grid" + suffix + "_" + std::to_string(d);
         std::vector<float> computed;
         out.grids[visible][d] = checkpointed(checkpoint, name, [&] {
-          return method.renderFromGrids([&](const GridGeometry& grid, int coefficients) {
+          Image image = method.renderFromGrids([&](const GridGeometry& grid, int coefficients) {
             std::vector<float> level = exactLightGrid(draws[d].vpls, grid, coefficients, rays,
                                                       [&](double f) { progress((d + f) / drawCount); });
             computed.insert(computed.end(), level.begin(), level.end());
             return level;
           });
+          if (checkpoint.save) checkpoint.save(cellsName(name), valuesImage(computed));
+          return image;
         });
-        out.gridValues[visible][d] = checkpointedValues(checkpoint, name, std::move(computed));
+        out.gridValues[visible][d] = computed.empty() ? savedValues(checkpoint, name) : std::move(computed);
       }
     });
     if (drawCount == 1) {  // every texel was a VPL: both draws are the one

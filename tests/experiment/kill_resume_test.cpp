@@ -320,7 +320,8 @@ std::function<Armed()> whenSomeFileEndsWith(const fs::path& dir, const std::stri
 }
 
 // The oracles' images are checkpointed as they are rendered: a killed explanation resumes with
-// them, and its budget is the uninterrupted one's to the bit (every oracle is deterministic).
+// them, and its budget and exact grid are the uninterrupted one's to the bit (every oracle is
+// deterministic).
 TEST_F(KillResume, AKilledExplanationResumesToTheUninterruptedBudget) {
   setenv("LPVLAB_CACHE_DIR", (dir_ / "cache").c_str(), 1);
   const std::vector<std::string> small = {"-s", "output.width=64", "-s", "output.height=64",
@@ -343,6 +344,8 @@ TEST_F(KillResume, AKilledExplanationResumesToTheUninterruptedBudget) {
   EXPECT_FALSE(fs::exists(killed / "partial"));
   EXPECT_EQ(leftoverTemporaries(killed), std::vector<fs::path>{});
   EXPECT_EQ(readJson(whole / "explain.json").at("budgets"), readJson(killed / "explain.json").at("budgets"));
+  // The exact grid comes back from the checkpoint with its image: written, and the same.
+  EXPECT_EQ(test::readFile(whole / "exact_grid.npy"), test::readFile(killed / "exact_grid.npy"));
 }
 
 // A killed tune resumes with the runs it finished: it measures, promotes and chooses as the
