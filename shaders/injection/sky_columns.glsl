@@ -15,6 +15,10 @@
 // whose integral over the sphere is pi L a: the injected flux is exactly the flux through the
 // prism's top. It goes into the cell `shift` cells above the first surface (the lowest free cell
 // for shift = 1), clamped to the grid's top layer.
+// The thesis's own implementation (6.9.4) instead puts that VPL into every cell of the column from
+// there up to the grid's top ("every free cell"): the column then holds the flux once per free
+// cell, a sum that grows with the grid's resolution and the room above the surface, and that no
+// normalisation in the thesis divides out. Kept to measure it beside the normalised form.
 #ifndef LPVLAB_SKY_COLUMNS_GLSL
 #define LPVLAB_SKY_COLUMNS_GLSL
 #include "../common/sh.glsl"
@@ -43,6 +47,12 @@ ivec3 skyColumnCell(ivec2 texel, ivec2 size, real depth, vec3 gridOrigin, real c
   return ivec3((texel.x * resolution.x) / size.x,
                skyInjectionLayer(surfaceY, shiftCells, gridOrigin.y, cellSize, resolution.y),
                (texel.y * resolution.z) / size.y);
+}
+
+// The highest layer a texel lights when its light goes into layer `layer`: that layer alone, or
+// with `everyFreeCell` (the thesis's fill) every layer up to the grid's top.
+int skyTopLayer(int layer, int layers, int everyFreeCell) {
+  return everyFreeCell != 0 ? layers - 1 : layer;
 }
 
 // Coefficient k of I(w) = max(0, -y . w): the downward Lambertian lobe per unit of L a.

@@ -11,3 +11,4 @@ const int LOCATION_CELL_SIZE = 1;      // uniform float cellSize
 const int LOCATION_RESOLUTION = 2;     // uniform ivec3 resolution
 const int LOCATION_SHIFT_CELLS = 3;    // uniform float shiftCells
 const int LOCATION_SKY_PER_TEXEL = 4;  // uniform vec3 skyPerTexel
+const int LOCATION_EVERY_FREE_CELL = 5;  // uniform int everyFreeCell (0: the lowest free cell only)

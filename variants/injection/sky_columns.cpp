@@ -13,6 +13,9 @@
 // | texels_per_cell | int   | 4       | depth-map texels per cell along x and z                 |
 // | shift           | float | 1.0     | cells above the first surface at which the light is     |
 // |                 |       |         | injected (1: the lowest free cell)                      |
+// | fill            | string| "lowest_free_cell" | or "every_free_cell": the thesis's own     |
+// |                 |       |         | implementation (6.9.4), the light in every cell from    |
+// |                 |       |         | there up to the grid's top (not normalised)             |
 
 #include <algorithm>
 #include <optional>
@@ -57,7 +60,9 @@ class SkyColumnsInjection final : public InjectionStrategy {
 public:
   explicit SkyColumnsInjection(Params& params)
       : texelsPerCell_(params.get<int>("texels_per_cell", 4, {.min = 1, .max = 16})),
-        shiftCells_(params.get<float>("shift", 1.0f, {.min = 0.0f, .max = 4.0f})) {}
+        shiftCells_(params.get<float>("shift", 1.0f, {.min = 0.0f, .max = 4.0f})),
+        everyFreeCell_(params.getChoice("fill", "lowest_free_cell", {"lowest_free_cell", "every_free_cell"}) ==
+                       "every_free_cell") {}
 
   void declare(ResourceUses& uses) const override { uses.produces(kSkyLight); }
   std::string cpuRefusal(const Requirements&) const override { return {}; }
@@ -113,6 +118,7 @@ public:
     glUniform3iv(LOCATION_RESOLUTION, 1, &grid.resolution[0]);
     glUniform1f(LOCATION_SHIFT_CELLS, shiftCells_);
     glUniform3fv(LOCATION_SKY_PER_TEXEL, 1, &perTexel[0]);
+    glUniform1i(LOCATION_EVERY_FREE_CELL, everyFreeCell_ ? 1 : 0);
     dispatchCovering({width_, height_, 1}, {GROUP_SIZE_X, GROUP_SIZE_Y, GROUP_SIZE_Z},
                      GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -124,7 +130,7 @@ private:
     glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       GLsizei(hostDepth_.size() * sizeof(float)), hostDepth_.data());
     injectSkyColumnsCpu(hostDepth_, width_, height_, grid.geometry, coefficients_, shiftCells_,
-                        perTexel, grid.current.host().data());
+                        perTexel, everyFreeCell_, grid.current.host().data());
   }
 
   void renderDepth(const SceneGpu& scene) {
@@ -138,6 +144,7 @@ private:
 
   int texelsPerCell_;
   float shiftCells_;
+  bool everyFreeCell_;  // the thesis's fill
   glm::vec3 skyRadiance_{0.0f};  // the run's [sky] radiance, W/(m^2 sr)
   int coefficients_ = 4;
   bool onCpu_ = false;

@@ -16,7 +16,7 @@ namespace lpvlab {
 
 void injectSkyColumnsCpu(const std::vector<float>& depth, int width, int height,
                          const GridGeometry& grid, int coefficients, float shiftCells,
-                         const glm::vec3& perTexel, float* gridOut) {
+                         const glm::vec3& perTexel, bool everyFreeCell, float* gridOut) {
   const glm::ivec3 res = grid.resolution;
   if (width % res.x != 0 || height % res.z != 0 || depth.size() != std::size_t(width) * height)
     throw Error("sky injection (CPU): a " + std::to_string(width) + "x" + std::to_string(height) +
@@ -41,7 +41,8 @@ void injectSkyColumnsCpu(const std::vector<float>& depth, int width, int height,
           const glm::ivec3 cell = shared::skyColumnCell(glm::ivec2(tx, tz), glm::ivec2(width, height),
                                                         d, origin, double(grid.cellSize), res,
                                                         double(shiftCells));
-          layerWeight[std::size_t(cell.y)] += 1.0;
+          const int top = shared::skyTopLayer(cell.y, res.y, everyFreeCell ? 1 : 0);
+          for (int layer = cell.y; layer <= top; ++layer) layerWeight[std::size_t(layer)] += 1.0;
         }
       for (int y = 0; y < res.y; ++y) {
         const double count = layerWeight[std::size_t(y)];

@@ -15,11 +15,12 @@
 namespace lpvlab {
 
 // `depth`: the top-down depth map, width x height texels, row by row (texel x + width * y), 1
-// where no surface; `perTexel`: the sky's L a per channel (W/sr). Adds to `grid` (grid.glsl
-// layout, `coefficients` per channel). Throws an Error for a map that does not tile the grid's
+// where no surface; `perTexel`: the sky's L a per channel (W/sr); `everyFreeCell`: the thesis's
+// fill, every cell from the injection layer up to the grid's top (skyTopLayer). Adds to `grid`
+// (grid.glsl layout, `coefficients` per channel). Throws an Error for a map that does not tile the grid's
 // columns evenly (a whole number of texels per column along x and z).
 void injectSkyColumnsCpu(const std::vector<float>& depth, int width, int height,
                          const GridGeometry& grid, int coefficients, float shiftCells,
-                         const glm::vec3& perTexel, float* gridOut);
+                         const glm::vec3& perTexel, bool everyFreeCell, float* gridOut);
 
 }  // namespace lpvlab

@@ -3,6 +3,7 @@
 //   - an open floor receives exactly the flux pi L * (its area) (a constant sky of radiance L
 //     gives irradiance pi L on a horizontal face), as a downward Lambertian lobe, one layer up;
 //   - a roof shades the floor under it: those columns get nothing below the roof;
+//   - the thesis's fill (every free cell up to the grid's top) puts pi L s^2 into each of them;
 //   - the whole grid equals a double-precision C++ injection of ray-cast columns (independent of
 //     rasterisation) through the shared sky_columns.glsl;
 //   - very dim and very bright skies stay finite and proportional;
@@ -69,11 +70,12 @@ const GridGeometry kGrid{glm::vec3(-0.1f), 0.1f, glm::ivec3(10, 6, 8)};
 class SkyRig {
 public:
   SkyRig(const Scene& scene, int shOrder, int texelsPerCell = 4, float shift = 1.0f,
-         ComputeBackend backend = ComputeBackend::Gl)
+         ComputeBackend backend = ComputeBackend::Gl, const std::string& fill = "lowest_free_cell")
       : scene_(scene) {
     table_.insert("type", "sky_columns");
     table_.insert("texels_per_cell", texelsPerCell);
     table_.insert("shift", double(shift));
+    table_.insert("fill", fill);
     Params params(table_, "sky injection test", "injection");
     strategy_ = Registry<InjectionStrategy>::instance().create(params, "rsm_vpl");
     params.finish();
@@ -196,9 +198,30 @@ TEST(SkyInjection, ARoofShadesTheColumnsUnderIt) {
   EXPECT_NEAR(channelFlux(grid, n, 0), M_PI * 2.0 * 0.8 * 0.6, 1e-5);
 }
 
+// The thesis's fill: the light of a texel in every cell from the lowest free one up to the grid's
+// top, pi L s^2 in each cell of an open column (not normalised: the column holds it once a cell).
+TEST(SkyInjection, TheThesisFillPutsTheLightIntoEveryFreeCellAboveTheSurface) {
+  // The roof scene: floor in layer 0 (lit from layer 2: y = 0.03 is layer 1), roof in layer 4.
+  const Scene scene = sceneOf({{0.0f, 0.8f, 0.0f, 0.6f, 0.03f}, {0.3f, 0.5f, 0.2f, 0.4f, 0.33f}});
+  for (const ComputeBackend backend : {ComputeBackend::Gl, ComputeBackend::Cpu}) {
+    SkyRig rig(scene, 1, 4, 1.0f, backend, "every_free_cell");
+    const Grid grid = rig.inject(glm::vec3(2.0f));
+    const int n = rig.coefficients();
+    const double cellTop = M_PI * 2.0 * 0.01;  // pi L s^2
+    for (int y = 0; y < kGrid.resolution.y; ++y) {
+      EXPECT_NEAR(columnLayerFlux(grid, n, 3, y, 3, 0), y >= 2 ? cellTop : 0.0, 1e-6) << "open column, layer " << y;
+      EXPECT_NEAR(columnLayerFlux(grid, n, 4, y, 3, 0), y >= 5 ? cellTop : 0.0, 1e-6) << "roofed column, layer " << y;
+    }
+    // The floor's 48 columns: 4 layers each, but the 4 under the roof 1 layer.
+    EXPECT_NEAR(channelFlux(grid, n, 0), cellTop * (44 * 4 + 4 * 1), 1e-5);
+  }
+}
+
 // The injection in double precision from ray-cast columns: a vertical ray down through every
-// texel centre from the grid's top, its first hit's height through the shared functions.
-Grid raycastInjection(const Scene& scene, glm::dvec3 sky, int texelsPerCell, double shift, int n) {
+// texel centre from the grid's top, its first hit's height through the shared functions, into the
+// injection cell or (everyFreeCell, the thesis's fill) every cell from there up.
+Grid raycastInjection(const Scene& scene, glm::dvec3 sky, int texelsPerCell, double shift, int n,
+                      bool everyFreeCell = false) {
   const test::SceneRaycaster raycaster(scene);
   Grid grid(std::size_t(3) * n * kGrid.cellCount(), 0.0f);
   std::vector<double> sum(grid.size(), 0.0);
@@ -215,9 +238,11 @@ Grid raycastInjection(const Scene& scene, glm::dvec3 sky, int texelsPerCell, dou
       const glm::ivec3 cell(i / texelsPerCell,
                             shared::skyInjectionLayer(y, shift, kGrid.origin.y, s, kGrid.resolution.y),
                             j / texelsPerCell);
-      for (int k = 0; k < n; ++k)
-        for (int c = 0; c < 3; ++c)
-          sum[at(n, cell, c, k)] += sky[c] * texel * texel * shared::skyDownwardLobeAt(k);
+      const int top = everyFreeCell ? kGrid.resolution.y - 1 : cell.y;
+      for (int layer = cell.y; layer <= top; ++layer)
+        for (int k = 0; k < n; ++k)
+          for (int c = 0; c < 3; ++c)
+            sum[at(n, {cell.x, layer, cell.z}, c, k)] += sky[c] * texel * texel * shared::skyDownwardLobeAt(k);
     }
   for (std::size_t i = 0; i < grid.size(); ++i) grid[i] = float(sum[i]);
   return grid;
@@ -233,9 +258,10 @@ TEST(SkyInjection, GpuGridMatchesRayCastColumnsInDoublePrecision) {
   const glm::vec3 sky(0.7f, 1.3f, 0.2f);
   for (const int texels : {1, 3}) {
     for (const float shift : {0.0f, 1.0f, 2.5f}) {
-      SkyRig rig(scene, 2, texels, shift);
+      const bool every = shift == 1.0f;  // the thesis's fill at one shift
+      SkyRig rig(scene, 2, texels, shift, ComputeBackend::Gl, every ? "every_free_cell" : "lowest_free_cell");
       const Grid gpu = rig.inject(sky);
-      const Grid cpu = raycastInjection(scene, glm::dvec3(sky), texels, shift, rig.coefficients());
+      const Grid cpu = raycastInjection(scene, glm::dvec3(sky), texels, shift, rig.coefficients(), every);
       ASSERT_EQ(gpu.size(), cpu.size());
       double largest = 0.0;
       for (float v : cpu) largest = std::max(largest, double(std::abs(v)));
@@ -256,9 +282,10 @@ TEST(SkyInjection, CpuGridMatchesRayCastColumnsAndDoesNotDependOnTheThreadCount)
   const glm::vec3 sky(0.7f, 1.3f, 0.2f);
   for (int order = 1; order <= 3; ++order)
     for (const float shift : {0.0f, 1.0f, 2.5f}) {
-      SkyRig rig(scene, order, 3, shift, ComputeBackend::Cpu);
+      const bool every = order == 2;  // the thesis's fill at one order
+      SkyRig rig(scene, order, 3, shift, ComputeBackend::Cpu, every ? "every_free_cell" : "lowest_free_cell");
       const Grid onCpu = rig.inject(sky);
-      const Grid model = raycastInjection(scene, glm::dvec3(sky), 3, shift, rig.coefficients());
+      const Grid model = raycastInjection(scene, glm::dvec3(sky), 3, shift, rig.coefficients(), every);
       double largest = 0.0;
       for (float v : model) largest = std::max(largest, double(std::abs(v)));
       ASSERT_GT(largest, 0.0);
