@@ -88,6 +88,12 @@ const std::vector<BadInput>& cases() {
        "run --out out" + kSmall + " -s light_maps.shadows='\"rays\"' -s compute.backend='\"gl\"'",
        {"light_maps.shadows", "backend"},
        {"out"}},
+      {"directed propagation by scattering on the CPU backend, whose kernel gathers",
+       "run --out out" + kSmall +
+           " -s propagation.type='\"directed\"' -s propagation.method='\"scatter\"'"
+           " -s compute.backend='\"cpu\"'",
+       {"directed", "scatter", "GL only"},
+       {"out"}},
       {"an unknown shadowing",
        "run --out out" + kSmall + " -s light_maps.shadows='\"pcss\"'",
        {"light_maps.shadows", "pcss"},

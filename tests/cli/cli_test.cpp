@@ -231,7 +231,7 @@ TEST_F(Cli, ListNamesEveryStageAndItsStrategies) {
   }
   // Each strategy's parameters with their defaults (by name), printed as written (a float's 0.02 is not
   // 0.019999999552965164).
-  for (const char* expected : {"dilation = true, gpu_kernel = \"simple\", iterations = 32, region_angle_deg = 10, release = true",
+  for (const char* expected : {"dilation = true, gpu_kernel = \"simple\", iterations = 32, method = \"gather\", region_angle_deg = 10, release = true",
                                "shift = 1", "normal_offset = 0"})
     EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " missing from:\n" << r.out;
   EXPECT_EQ(r.out.find("999999"), std::string::npos) << "float noise in:\n" << r.out;

@@ -31,6 +31,11 @@
 // |            |      |         | radius 6 cells or more one region (0..90)                     |
 // | gpu_kernel | text | "simple" | GL gathers' layout: "simple" or "tiled" (tiled_walk.glsl); the |
 // |            |      |         | same grid; the CPU backend ignores it                         |
+// | method     | text | "gather" | "gather" or "scatter" (directed_scatter.comp: each cell pushes|
+// |            |      |         | into its neighbours, reprojected about theirs normals, with   |
+// |            |      |         | float atomics): the same grid up to the order of additions. GL|
+// |            |      |         | only: the CPU backend refuses "scatter" (its gather gives the |
+// |            |      |         | same grid)                                                    |
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "framework/core/error.h"
 #include "framework/math/grid_geometry.h"
 #include "framework/math/shared.h"
 #include "framework/math/solid_angle.h"
@@ -63,14 +69,23 @@ public:
         release_(params.get<bool>("release", true)),
         tiled_(params.getChoice("gpu_kernel", "simple", {"simple", "tiled"}) == "tiled"),
         cosRegionAngle_(std::cos(params.get<double>("region_angle_deg", 10.0, {.min = 0.0, .max = 90.0}) *
-                                 M_PI / 180.0)) {}
+                                 M_PI / 180.0)),
+        scatter_(params.getChoice("method", "gather", {"gather", "scatter"}) == "scatter") {
+    if (tiled_ && scatter_)
+      throw Error(params.where("gpu_kernel") +
+                  ": \"tiled\" is a layout of the gather; method = \"scatter\" has only the simple one");
+  }
 
   void declare(ResourceUses& uses) const override {
     uses.consumes(kNormalGrid);
     uses.reads(kGeometryVolume);
   }
   int maxShOrder() const override { return 3; }
-  std::string cpuRefusal(const Requirements&) const override { return {}; }
+  std::string cpuRefusal(const Requirements&) const override {
+    return scatter_ ? "directed propagation's method = \"scatter\" runs on GL only (the CPU kernel "
+                      "gathers, which gives the same grid: use method = \"gather\")"
+                    : std::string();
+  }
 
   void prepare(const StrategySetup& setup) override {
     ShaderCompiler& shaders = setup.shaders;
@@ -182,7 +197,8 @@ private:
             .dilation = dilation_,
             .release = release_,
             .cosRegionAngle = cosRegionAngle_,
-            .tiled = tiled_};
+            .tiled = tiled_,
+            .scatter = scatter_};
   }
 
   int iterations_;
@@ -190,6 +206,7 @@ private:
   bool release_;
   bool tiled_;
   double cosRegionAngle_;
+  bool scatter_;
   int shOrder_ = 1;
   DirectedGlKernel gl_;             // on GL
   bool onCpu_ = false;

@@ -28,9 +28,17 @@ KernelWork directedGlWork(const DirectedGlSettings& settings) {
   w.multiplyAdds += 3 * 30 * 8 + 60 * 8 + 3 * n;
   w.bytes += 16 * ((settings.dilation ? 7 : 0) + 1);
   if (settings.tiled) w.bytes -= tiledWalkBytesSaved(settings.coefficients);
+  // Scattering finds each receiver's gain once per sender (six times a cell, not once) and adds
+  // its light with read-modify-writes of the receiver's coefficients (and the accumulated grid's).
+  if (settings.scatter) {
+    w.multiplyAdds += 5 * 60 * 8;
+    w.bytes += 6 * 16 + 6 * 2 * 2 * 4 * 3 * n;
+  }
   if (settings.release) {
-    const KernelWork free = standardGlKernelWork(
-        {.coefficients = settings.coefficients, .withGv = settings.withGv, .tiled = settings.tiled});
+    const KernelWork free = standardGlKernelWork({.coefficients = settings.coefficients,
+                                                  .withGv = settings.withGv,
+                                                  .scatter = settings.scatter,
+                                                  .tiled = settings.tiled});
     w.multiplyAdds += free.multiplyAdds;
     w.bytes += free.bytes + 4 * 4 * 3 * n + 16 * 7;
   }
@@ -50,8 +58,9 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
     spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_X, tile_.x));
     spec.push_back(SpecConstant::i(tiled_walk::SPEC_TILE_Y, tile_.y));
   }
-  gather_ = shaders.compute(settings.tiled ? "propagation/directed_gather_tiled.comp"
-                                           : "propagation/directed_gather.comp",
+  gather_ = shaders.compute(settings.scatter  ? "propagation/directed_scatter.comp"
+                            : settings.tiled ? "propagation/directed_gather_tiled.comp"
+                                             : "propagation/directed_gather.comp",
                             spec);
   dilate_ = shaders.compute("propagation/directed_dilate.comp");
   const std::size_t cells = std::size_t(shared::cellCount(resolution));
@@ -65,6 +74,7 @@ DirectedGlKernel::DirectedGlKernel(ShaderCompiler& shaders, const DirectedGlSett
                                        .farFace = angles.farFace,
                                        .sideFace = angles.sideFace,
                                        .withGv = settings.withGv,
+                                       .scatter = settings.scatter,
                                        .tiled = settings.tiled});
     for (DualBuffer& b : freeLight_)
       b = DualBuffer(gridBytes, "light grid (directed propagation's free light)");
@@ -112,6 +122,10 @@ void DirectedGlKernel::propagate(const glm::ivec3& res, int iterations, DualBuff
     accumulated.bindStorage(BUFFER_ACCUMULATED);
     normals->bindStorage(BUFFER_NORMALS);
     if (settings_.withGv) gv->bindStorage(BUFFER_GEOMETRY_VOLUME);
+    if (settings_.scatter) {  // the senders add into the next light: it starts empty
+      scratch_.zero();
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
     if (settings_.tiled)
       dispatchTiledWalk(res, tile_);
     else

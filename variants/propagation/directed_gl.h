@@ -21,6 +21,7 @@ struct DirectedGlSettings {
   bool release = true;          // light leaves the reprojection where the normals change
   double cosRegionAngle = 1.0;  // release: normals further apart are different regions
   bool tiled = false;           // the tiled gathers (directed_gather_tiled.comp, tiled_walk.h)
+  bool scatter = false;         // scatter with float atomics (directed_scatter.comp) instead
 };
 
 // Per cell-iteration on GL: the standard transfer's (standard_gl.h) and the second reprojection:
