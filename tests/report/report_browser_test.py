@@ -205,7 +205,9 @@ class ExplanationInBrowser(unittest.TestCase):
 
     def test_the_chart_and_the_chain_load_and_the_stages_are_tabulated(self):
         images = image_states(self.driver)
-        self.assertEqual(len(images), 1 + 5)  # the chart, the reference and the chain's four images
+        # The chart, the reference, the chain's four images and the light grids' slices.
+        self.assertEqual(len(images), 1 + 5 + 1)
+        self.assertTrue(any(src.endswith("img/grids.png") for src, _, _ in images), images)
         for src, complete, width in images:
             self.assertTrue(complete and width > 0, f"image did not load: {src}")
         stages = self.driver.execute_script(
