@@ -17,6 +17,7 @@
 #include <map>
 #include <sstream>
 #include <set>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -231,13 +232,14 @@ int compareCommand(const Options& options) {
     if (!r) throw Error(referencePath + ": no AOV '" + theirs + "'");
     const RelativeDifference relative = relativeDifference(*t, *r, covered);
     const double meanReference = meanOf(*r, covered);
+    HdrFlipMap hdrFlip;  // for --out's PNG
     out["aovs"][aov] = {{"relative_difference", relative.toJson()},
-                        {"metrics", computeMetrics(*t, *r, covered).toJson()},
+                        {"metrics", computeMetrics(*t, *r, covered, {}, &hdrFlip).toJson()},
                         {"mean_ratio", meanReference != 0.0 ? meanOf(*t, covered) / meanReference : 0.0}};
     if (!options.out.empty()) {
       std::vector<NamedImage> layer = differenceLayers(mine, *t, *r, covered, relative.epsilon);
       differences.insert(differences.end(), layer.begin(), layer.end());
-      pngs.push_back({aov, relative, hdrFlipErrorMap(*t, *r, covered)});
+      pngs.push_back({aov, relative, std::move(hdrFlip)});
     }
   }
   // Written once every AOV was compared: an error above leaves nothing behind.

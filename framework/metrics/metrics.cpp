@@ -60,7 +60,7 @@ nlohmann::json MetricSet::toJson() const {
 }
 
 MetricSet computeMetrics(const Image& test, const Image& reference, const Image* mask,
-                         const MetricOptions& options) {
+                         const MetricOptions& options, HdrFlipMap* hdrFlipMap) {
   const PixelMask covered = checkInputs("computeMetrics", test, reference, mask);
   const PixelErrors errors = pixelErrors(test, reference, covered, options);
   const DisplayPair display = displayPair(test, reference, covered, options);
@@ -74,7 +74,9 @@ MetricSet computeMetrics(const Image& test, const Image& reference, const Image*
   metrics.ssim = meanSsim(display.test, display.reference, covered);
   metrics.flip = coveredMean(
       ldrFlip(display.test, display.reference, covered, options.pixelsPerDegree), covered);
-  metrics.hdrFlip = coveredMean(hdrFlipOf(test, reference, covered, options).error, covered);
+  const HdrFlipMaps hdr = hdrFlipOf(test, reference, covered, options);
+  metrics.hdrFlip = coveredMean(hdr.error, covered);
+  if (hdrFlipMap) *hdrFlipMap = {toImage(hdr.error), hdr.exposures};
   metrics.pixels = covered.count;
   return metrics;
 }

@@ -73,21 +73,24 @@ struct MetricSet {
   nlohmann::json toJson() const;
 };
 
-// Throws an Error when the images are not RGB, differ in size, hold a NaN or Inf, when the mask
-// is not 1-channel of the same size or covers no pixel, or when the PSNR peak is not positive.
-MetricSet computeMetrics(const Image& test, const Image& reference, const Image* mask = nullptr,
-                         const MetricOptions& options = {});
-
-// Per-pixel LDR-FLIP of the display images, 1 channel in [0, 1]; 0 at background pixels.
-Image flipErrorMap(const Image& test, const Image& reference, const Image* mask = nullptr,
-                   const MetricOptions& options = {});
-
 // Per-pixel HDR-FLIP of the linear images, 1 channel in [0, 1]; 0 at background pixels; and
 // the exposures it spanned.
 struct HdrFlipMap {
   Image error;
   HdrFlipExposures exposures;
 };
+
+// Throws an Error when the images are not RGB, differ in size, hold a NaN or Inf, when the mask
+// is not 1-channel of the same size or covers no pixel, or when the PSNR peak is not positive.
+// `hdrFlipMap`, if given, receives the HDR-FLIP map behind metrics.hdrFlip (computed once).
+MetricSet computeMetrics(const Image& test, const Image& reference, const Image* mask = nullptr,
+                         const MetricOptions& options = {}, HdrFlipMap* hdrFlipMap = nullptr);
+
+// Per-pixel LDR-FLIP of the display images, 1 channel in [0, 1]; 0 at background pixels.
+Image flipErrorMap(const Image& test, const Image& reference, const Image* mask = nullptr,
+                   const MetricOptions& options = {});
+
+// Per-pixel HDR-FLIP of the linear images (HdrFlipMap, above).
 HdrFlipMap hdrFlipErrorMap(const Image& test, const Image& reference, const Image* mask = nullptr,
                            const MetricOptions& options = {});
 
