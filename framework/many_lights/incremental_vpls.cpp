@@ -59,7 +59,7 @@ bool IncrementalVpls::stillValid(const RayScene& scene, const LightChart& chart,
 }
 
 bool IncrementalVpls::valid(const RayScene& scene, const Vpl& vpl) const {
-  for (const LightChart& chart : lightCharts(scene.lights(), scene.bounds())) {
+  for (const LightChart& chart : lightCharts(scene.lights(), scene.bounds(), settings_.placement)) {
     Kept k{0, glm::vec2(0.0f), true, vpl.position, vpl.normal, glm::vec3(1.0f)};
     if (stillValid(scene, chart, k, true)) return true;
   }
@@ -181,7 +181,7 @@ void IncrementalVpls::updateChart(const RayScene& scene, ChartState& state, bool
 
 const std::vector<Vpl>& IncrementalVpls::update(const RayScene& scene, IncrementalCounts& counts) {
   counts = {};
-  const std::vector<LightChart> charts = lightCharts(scene.lights(), scene.bounds());
+  const std::vector<LightChart> charts = lightCharts(scene.lights(), scene.bounds(), settings_.placement);
   if (charts.size() != charts_.size()) {  // a new run (or lights that changed kind): start over
     charts_.clear();
     for (const LightChart& chart : charts) charts_.push_back({chart, {}});

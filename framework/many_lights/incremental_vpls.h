@@ -17,7 +17,9 @@
 //   4. flux: each VPL carries the light's power over its Voronoi cell of the disk (the disk's
 //      power density summed over a fluxGrid x fluxGrid grid of cells, each given to its nearest
 //      VPL), times its albedo.
-// A chart's share of the target is proportional to its light's power (at least one). With the
+// A chart's share of the target is proportional to its light's power (at least one). Evenly means
+// in the chart's disk: the light's projection, or (placement Power) a disk whose area is the light's
+// power, so that the VPLs' cells carry equal power. With the
 // light still, nothing is invalid, the set is even (farthest-point insertion leaves no edge shorter
 // than the largest empty radius), so the set and the image stay what the first frame made.
 //
@@ -39,6 +41,9 @@ struct IncrementalSettings {
   int maxRemovals = 16;      // a frame (invalid ones are always removed)
   int maxInsertions = 16;    // a frame, after the first
   int fluxGrid = 128;        // cells per side of the flux's grid over each disk
+  // Where "evenly" is measured: the light's projection (seed 001, 3.2.2) or its power
+  // (light_charts.h: every VPL's cell then carries about the same power).
+  ChartPlacement placement = ChartPlacement::Projection;
 };
 
 struct IncrementalCounts {
@@ -55,6 +60,7 @@ public:
   // One frame against `scene`'s current lights (`scene` updated). Returns the VPLs on surfaces.
   const std::vector<Vpl>& update(const RayScene& scene, IncrementalCounts& counts);
   const std::vector<Vpl>& vpls() const { return vpls_; }
+  const IncrementalSettings& settings() const { return settings_; }
 
   // Whether a surface VPL would be kept by step 1 under `scene`'s current lights (for tests).
   bool valid(const RayScene& scene, const Vpl& vpl) const;

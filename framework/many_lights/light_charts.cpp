@@ -14,6 +14,56 @@ namespace {
 // radiosity often inserts) comes back from its surface point a float rounding outside it.
 constexpr float kRim = 1.0f + 1e-4f;
 
+// Entries of a power chart's share table: with 16 trapezoids between entries, the share is exact
+// to about 1e-7 for a spot's smooth falloff (and exactly linear for a point light).
+constexpr int kShareEntries = 1025, kSubsteps = 16;
+
+// The cosine of the chart's power share s (|uv|^2): the inverse of shareAt, by bisection over the
+// decreasing table and linear interpolation between its entries.
+double cosForShare(const LightChart& chart, double s) {
+  const std::vector<double>& share = chart.share;
+  const int n = int(share.size());
+  s = std::clamp(s, 0.0, 1.0);
+  int lo = 0, hi = n - 1;  // share[lo] >= s >= share[hi]
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    (share[mid] >= s ? lo : hi) = mid;
+  }
+  const double span = share[lo] - share[hi];
+  const double t = span > 0.0 ? (share[lo] - s) / span : 0.0;
+  return chart.cosRim + (1.0 - chart.cosRim) * (lo + t) / (n - 1);
+}
+
+// The power share within the cone of cosine z (linear between the table's entries, extended
+// linearly beyond the rim so that a point just outside comes back just above 1).
+double shareAt(const LightChart& chart, double z) {
+  const int n = int(chart.share.size());
+  const double t = (z - chart.cosRim) / (1.0 - chart.cosRim) * (n - 1);
+  const int k = std::clamp(int(std::floor(t)), 0, n - 2);
+  return chart.share[k] + (chart.share[k + 1] - chart.share[k]) * (t - k);
+}
+
+// Fills a point or spot chart's share table from its falloff (1 for a point light).
+void makeEqualPower(LightChart& chart) {
+  chart.equalPower = true;
+  chart.cosRim = chart.spot ? chart.cosOuter : 0.0;
+  const auto falloff = [&](double mu) {
+    return chart.spot ? shared::spotFalloff(mu, chart.cosInner, chart.cosOuter) : 1.0;
+  };
+  const double step = (1.0 - chart.cosRim) / (kShareEntries - 1);
+  std::vector<double> within(kShareEntries, 0.0);  // integral of the falloff from mu_k to 1
+  for (int k = kShareEntries - 2; k >= 0; --k) {
+    const double mu0 = chart.cosRim + step * k, h = step / kSubsteps;
+    double part = 0.0;
+    for (int j = 0; j < kSubsteps; ++j) part += 0.5 * h * (falloff(mu0 + j * h) + falloff(mu0 + (j + 1) * h));
+    within[std::size_t(k)] = within[std::size_t(k) + 1] + part;
+  }
+  chart.share.resize(kShareEntries);
+  for (int k = 0; k < kShareEntries; ++k)
+    chart.share[std::size_t(k)] = within[0] > 0.0 ? within[std::size_t(k)] / within[0] : 1.0 - double(k) / (kShareEntries - 1);
+  chart.densityOverRadiant = 2.0 * within[0];  // the chart's power 2 pi I integral, over pi
+}
+
 void basis(LightChart& chart) {
   const glm::vec3 a = chart.axis;
   const glm::vec3 helper = std::abs(a.x) > 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
@@ -29,9 +79,17 @@ void LightChart::ray(const glm::vec2& uv, glm::vec3& start, glm::vec3& direction
     direction = axis;
     return;
   }
+  start = origin;
+  if (equalPower) {
+    const float length = glm::length(uv);
+    const double z = cosForShare(*this, double(length) * length);
+    const float sine = float(std::sqrt(std::max(0.0, 1.0 - z * z)));
+    const glm::vec2 around = length > 0.0f ? uv / length : glm::vec2(0.0f);
+    direction = glm::normalize(sine * (around.x * tangent + around.y * bitangent) + float(z) * axis);
+    return;
+  }
   const glm::vec2 raw = uv * scale;
   const float r2 = glm::dot(raw, raw);
-  start = origin;
   direction = glm::normalize((2.0f * raw.x * tangent + 2.0f * raw.y * bitangent + (1.0f - r2) * axis) /
                              (1.0f + r2));
 }
@@ -48,6 +106,13 @@ bool LightChart::project(const glm::vec3& p, glm::vec2& uv) const {
   const glm::vec3 u = d / length;
   const float z = glm::dot(u, axis);
   if (!(z > 0.0f)) return false;
+  if (equalPower) {
+    const double s = shareAt(*this, double(z));
+    const glm::vec2 across(glm::dot(u, tangent), glm::dot(u, bitangent));
+    const float length = glm::length(across);
+    uv = length > 0.0f ? across * float(std::sqrt(std::max(s, 0.0)) / length) : glm::vec2(0.0f);
+    return s <= double(kRim);
+  }
   uv = glm::vec2(glm::dot(u, tangent), glm::dot(u, bitangent)) / ((1.0f + z) * scale);
   return glm::dot(uv, uv) <= kRim;
 }
@@ -64,6 +129,7 @@ glm::vec3 LightChart::towardsLight(const glm::vec3& p, float& distance) const {
 
 glm::vec3 LightChart::powerDensity(const glm::vec2& uv) const {
   if (orthographic) return radiant * (scale * scale);
+  if (equalPower) return radiant * float(densityOverRadiant);
   const glm::vec2 raw = uv * scale;
   const float r2 = glm::dot(raw, raw);
   float falloff = 1.0f;
@@ -74,7 +140,9 @@ glm::vec3 LightChart::powerDensity(const glm::vec2& uv) const {
   return radiant * (falloff * 4.0f / ((1.0f + r2) * (1.0f + r2)) * scale * scale);
 }
 
-std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, const Bounds& scene) {
+std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, const Bounds& scene,
+                                    ChartPlacement placement) {
+  const bool power = placement == ChartPlacement::Power;
   std::vector<LightChart> charts;
   const float radius = 0.5f * glm::length(scene.extent()) * 1.01f + 1e-6f;
   for (int i = 0; i < int(lights.size()); ++i) {
@@ -88,6 +156,7 @@ std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, co
         for (const glm::vec3 axis : {glm::vec3(0, -1, 0), glm::vec3(0, 1, 0)}) {
           chart.axis = axis;
           basis(chart);
+          if (power) makeEqualPower(chart);
           charts.push_back(chart);
         }
         break;
@@ -99,6 +168,7 @@ std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, co
         chart.cosOuter = light.cosOuter;
         chart.scale = float(std::tan(0.5 * std::acos(std::clamp(light.cosOuter, -1.0, 1.0))));
         basis(chart);
+        if (power) makeEqualPower(chart);
         charts.push_back(chart);
         break;
       case LightType::Directional:

@@ -10,6 +10,15 @@
 //   directional  an orthographic disk across the light covering the scene's bounding sphere
 //                (radius R), rays parallel from behind the scene; power density E R^2
 // (4 / (1 + |raw|^2)^2 is the paraboloid's solid angle per unit area of raw.)
+// These are the "projection" charts of seed 001, 3.2.2: a VPL set spread evenly on them carries
+// more power per VPL where the paraboloid is densest (4x at a hemisphere's pole than at its rim)
+// and where a spot is brightest. The "power" charts (ChartPlacement::Power) keep the same
+// directions but move them radially, so that the disk's area is proportional to the power the
+// light sends through it: |uv|^2 is the share of the chart's power within angle theta of the axis,
+//   share(theta) = integral_{cos theta}^1 falloff / integral_{cos rim}^1 falloff   (falloff 1: point)
+// and the power density is constant, 2 I integral_{cos rim}^1 falloff. A set spread evenly on it
+// gives every VPL the same share of the light (Laine et al. 2007 place VPLs by power this way).
+// Directional lights are uniform either way.
 
 #include <vector>
 
@@ -20,6 +29,8 @@
 
 namespace lpvlab {
 
+enum class ChartPlacement { Projection, Power };
+
 struct LightChart {
   int light = 0;              // index into the scene's lights
   bool orthographic = false;  // directional light
@@ -29,6 +40,13 @@ struct LightChart {
   glm::vec3 radiant{0.0f};    // W/sr (point, spot) or W/m^2 (directional)
   bool spot = false;
   double cosInner = -1.0, cosOuter = -1.0;
+  // Power charts: the share of the chart's power within the cone of cos(theta) = cosRim + (1 -
+  // cosRim) k / (n - 1), k = 0..n - 1 (from 1 at the rim to 0 on the axis), and the constant
+  // power density over radiant.
+  bool equalPower = false;
+  double cosRim = 0.0;
+  std::vector<double> share;
+  double densityOverRadiant = 0.0;
 
   // The ray of disk point uv (|uv| <= 1): its origin and unit direction.
   void ray(const glm::vec2& uv, glm::vec3& start, glm::vec3& direction) const;
@@ -42,6 +60,7 @@ struct LightChart {
 };
 
 // Every light's charts, in light order.
-std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, const Bounds& scene);
+std::vector<LightChart> lightCharts(const std::vector<PunctualLight>& lights, const Bounds& scene,
+                                    ChartPlacement placement = ChartPlacement::Projection);
 
 }  // namespace lpvlab

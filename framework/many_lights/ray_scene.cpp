@@ -11,13 +11,13 @@ void RayScene::build() {
   embree_.reset();  // before the materials it points into
   materials_ = prepareMaterials(scene_);
   embree_ = std::make_unique<EmbreeScene>(scene_, materials_, engine_);
-  lights_ = LightSampler(scene_, materials_).punctual();
+  lights_ = std::make_unique<LightSampler>(scene_, materials_);
   bounds_ = scene_.bounds();
 }
 
 void RayScene::moveLights(const Scene& scene) {
   scene_.lights = scene.lights;
-  lights_ = LightSampler(scene_, materials_).punctual();
+  lights_ = std::make_unique<LightSampler>(scene_, materials_);
 }
 
 void RayScene::moveGeometry(const Scene& scene) {

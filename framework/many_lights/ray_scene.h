@@ -28,7 +28,9 @@ public:
 
   const EmbreeScene& embree() const { return *embree_; }
   const Scene& scene() const { return scene_; }  // the copy, with the last moves applied
-  const std::vector<PunctualLight>& lights() const { return lights_; }
+  const std::vector<PunctualLight>& lights() const { return lights_->punctual(); }
+  // The lights as the path tracer's next-event estimation reads them (clamp_compensation.h).
+  const LightSampler& lightSampler() const { return *lights_; }
   const Bounds& bounds() const { return bounds_; }
   // Bytes of the copy's vertices, indices and textures (Embree's own BVH is not counted).
   std::size_t memoryBytes() const;
@@ -40,7 +42,7 @@ private:
   Scene scene_;
   std::vector<SurfaceMaterial> materials_;
   std::unique_ptr<EmbreeScene> embree_;
-  std::vector<PunctualLight> lights_;
+  std::unique_ptr<LightSampler> lights_;
   Bounds bounds_;
   bool stale_ = false;
 };

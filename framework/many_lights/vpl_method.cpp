@@ -22,6 +22,13 @@ VplVisibility readExactOrMappedVisibility(Params& p) {
 VplMethod::VplMethod(Params& p, VplVisibility visibility, const ImperfectSettings& imperfect)
     : visibility_(visibility), imperfect_(imperfect) {
   gather_.clamp = p.get<float>("clamp", 0.0f, {.min = 0.0f, .max = 1e30f});
+  compensate_ = p.get<bool>("clamp_compensation", false);
+  compensation_.samples = p.get<int>("compensation_samples", 4, {.min = 1, .max = 4096});
+  if (compensate_ && !(gather_.clamp > 0.0f))
+    throw Error(p.where("clamp_compensation") +
+                ": there is nothing to compensate without a clamp (set clamp to a positive c)");
+  compensation_.clamp = gather_.clamp;
+  compensation_.minDistance = gather_.minDistance;
   gather_.visibility = visibility == VplVisibility::None   ? GatherVisibility::None
                        : visibility == VplVisibility::Rays ? GatherVisibility::Rays
                                                            : GatherVisibility::DepthMaps;
@@ -36,8 +43,11 @@ VplMethod::VplMethod(Params& p, VplVisibility visibility, const ImperfectSetting
 }
 
 std::vector<std::string> VplMethod::stageNames() const {
-  if (gather_.visibility == GatherVisibility::DepthMaps) return {"vpls", "vpl_shadow_maps", "indirect"};
-  return {"vpls", "indirect"};
+  std::vector<std::string> stages = {"vpls"};
+  if (gather_.visibility == GatherVisibility::DepthMaps) stages.push_back("vpl_shadow_maps");
+  stages.push_back("indirect");
+  if (compensate_) stages.push_back("clamp_compensation");
+  return stages;
 }
 
 void VplMethod::prepare(const MethodSetup& setup) {
@@ -71,6 +81,13 @@ void VplMethod::render(MethodFrame& frame) {
     gatherVpls(g.position, g.normal, g.albedo, vpls_, gather_, {&scene_->embree(), &maps_},
                frame.indirect.host(), &gatherCounts_);
   });
+  if (compensate_)
+    frame.stage("clamp_compensation", [&] {
+      const HostGBuffer g = hostGBuffer(frame.host, frame.gbuffer);
+      compensation_.maxScatterings = vplBounces() + 1;
+      compensateClamp(g.position, g.normal, g.albedo, *scene_, compensation_, frame.indirect.host(),
+                      &compensationCounts_);
+    });
 }
 
 std::map<std::string, std::vector<WorkCount>> VplMethod::work() const {
@@ -82,6 +99,11 @@ std::map<std::string, std::vector<WorkCount>> VplMethod::work() const {
       {"pixel-VPL pair", gatherCounts_.pairs, maps ? 54.0 : 24.0, double(sizeof(Vpl))}};
   if (visibility_ == VplVisibility::Rays) gather.push_back({"shadow ray", gatherCounts_.shadowRays, 0.0, 0.0});
   out["indirect"] = gather;
+  // A compensation path: its weight at the first hit (about 20 multiply-adds); the rays it traces
+  // (first, continuation and next-event shadow rays) are Embree's.
+  if (compensate_)
+    out["clamp_compensation"] = {{"compensation path", compensationCounts_.paths, 20.0, 0.0},
+                                 {"compensation ray", compensationCounts_.rays, 0.0, 0.0}};
   if (visibility_ == VplVisibility::ShadowMaps)
     out["vpl_shadow_maps"] = {{"shadow-map ray", double(mapRays_), 0.0, 4.0}};
   if (visibility_ == VplVisibility::Imperfect) {
@@ -110,6 +132,18 @@ nlohmann::json VplMethod::statistics() const {
                   {"kept_radiance_sum", gatherCounts_.radiance},
                   {"removed_fraction", total > 0.0 ? gatherCounts_.clampedAway / total : 0.0},
                   {"units", "W/(m^2 sr) summed over the pixels and RGB channels of indirect"}};
+  if (compensate_) {
+    const ClampCompensationCounts& k = compensationCounts_;
+    out["clamp"]["compensation"] = {
+        {"samples_per_pixel", compensation_.samples},
+        {"added_radiance_sum", k.radiance},
+        {"added_over_removed", gatherCounts_.clampedAway > 0.0 ? k.radiance / gatherCounts_.clampedAway : 0.0},
+        {"paths", k.paths},
+        {"weighted_path_fraction", k.paths > 0.0 ? k.weightedPaths / k.paths : 0.0},
+        {"compensated_pixel_fraction", k.pixels > 0.0 ? k.compensatedPixels / k.pixels : 0.0},
+        {"rays", k.rays},
+        {"max_scatterings", compensation_.maxScatterings}};
+  }
   if (visibility_ == VplVisibility::Rays) out["shadow_rays"] = gatherCounts_.shadowRays;
   if (visibility_ == VplVisibility::ShadowMaps) out["shadow_map_rays"] = mapRays_;
   if (visibility_ == VplVisibility::Imperfect) {
@@ -131,7 +165,7 @@ LightPathMethod::LightPathMethod(Params& p, VplVisibility visibility, const Impe
   paths_.maxBounces = p.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   paths_.seed = std::uint64_t(p.get<int>("seed", 1, {.min = 0}));
   paths_.sampler = samplerFromName(p.getChoice("sampler", "independent", samplerNames()));
-  setPointSeed(paths_.seed);
+  setSeed(paths_.seed);
 }
 
 void LightPathMethod::makeVpls(const RayScene& scene, std::vector<Vpl>& vpls) {

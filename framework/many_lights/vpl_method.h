@@ -8,10 +8,11 @@
 //                         through its centre (seed 001, 2.4; vpl_depth_maps.h)
 //   imperfect             imperfect shadow maps: points splatted, holes filled by pull-push (3.3)
 // Stages: "vpls" (the source; Embree's rebuild after the geometry moved), "vpl_shadow_maps" (with
-// shadow maps of either kind), "indirect" (the gather).
+// shadow maps of either kind), "indirect" (the gather), "clamp_compensation" (with it).
 //
-// Keys read here (docs/methods.md): clamp; with shadow maps of either kind shadow_map_size,
-// normal_offset, depth_bias. LightPathMethod adds light_paths, one_bounce, roulette_after,
+// Keys read here (docs/methods.md): clamp, clamp_compensation (the clamped-away light added back
+// by a short path-traced gather: clamp_compensation.h) and compensation_samples; with shadow maps
+// of either kind shadow_map_size, normal_offset, depth_bias. LightPathMethod adds light_paths, one_bounce, roulette_after,
 // max_bounces, seed.
 
 #include <memory>
@@ -19,11 +20,13 @@
 #include <vector>
 
 #include "framework/core/parameters.h"
+#include "framework/many_lights/clamp_compensation.h"
 #include "framework/many_lights/light_paths.h"
 #include "framework/many_lights/ray_scene.h"
 #include "framework/many_lights/vpl_depth_maps.h"
 #include "framework/many_lights/vpl_gather.h"
 #include "framework/pipeline/indirect_method.h"
+#include "framework/reference/mix64.h"
 
 namespace lpvlab {
 
@@ -61,8 +64,16 @@ protected:
   virtual std::vector<WorkCount> sourceWork() const = 0;
   virtual nlohmann::json sourceStatistics() const = 0;
 
-  // The seed of imperfect maps' points (the subclass's seed key).
-  void setPointSeed(std::uint64_t seed) { imperfect_.seed = seed; }
+  // The most scatterings the light a VPL carries has had (1: VPLs where light first lands): the
+  // depth of the light the clamp compensation adds back.
+  virtual int vplBounces() const = 0;
+
+  // The seed of imperfect maps' points and of the clamp compensation's paths (the subclass's
+  // seed key).
+  void setSeed(std::uint64_t seed) {
+    imperfect_.seed = seed;
+    compensation_.seed = mix64(seed ^ 0x636c616d70ull);  // "clamp": streams apart from the walks'
+  }
 
 private:
   VplVisibility visibility_;
@@ -74,6 +85,9 @@ private:
   std::vector<Vpl> vpls_;
   VplDepthMaps maps_;
   GatherCounts gatherCounts_;
+  bool compensate_ = false;
+  ClampCompensationSettings compensation_;
+  ClampCompensationCounts compensationCounts_;
   std::size_t mapRays_ = 0;
   ImperfectCounts imperfectCounts_;
 };
@@ -83,6 +97,7 @@ class LightPathMethod : public VplMethod {
 protected:
   LightPathMethod(Params& p, VplVisibility visibility, const ImperfectSettings& imperfect = {});
   void makeVpls(const RayScene& scene, std::vector<Vpl>& vpls) override;
+  int vplBounces() const override { return paths_.firstHitsOnly ? 1 : paths_.maxBounces; }
   std::vector<WorkCount> sourceWork() const override;
   nlohmann::json sourceStatistics() const override;
 

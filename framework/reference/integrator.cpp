@@ -31,12 +31,13 @@ float largestChannel(const glm::vec3& c) { return std::max({c.r, c.g, c.b}); }
 }  // namespace
 
 Integrator::Integrator(const EmbreeScene& scene, const LightSampler& lights,
-                       const CameraRays& camera, const TracerSettings& settings)
+                       const CameraRays* camera, const TracerSettings& settings)
     : scene_(scene),
       lights_(lights),
       camera_(camera),
       sky_(settings.skyRadiance),
       hasSky_(glm::any(glm::greaterThan(settings.skyRadiance, glm::vec3(0.0f)))),
+      emission_(settings.emission),
       maxBounces_(settings.maxBounces),
       rouletteAfter_(settings.rouletteAfter) {
   if (settings.maxBounces < 0 || settings.rouletteAfter < 0)
@@ -69,7 +70,7 @@ void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflect
 
   // One point on one emissive triangle, MIS-weighted against the BRDF-sampled continuation; the
   // shadow ray stops short of the light's own triangle.
-  if (lights_.hasEmitters()) {
+  if (emission_ && lights_.hasEmitters()) {
     const float pick = random.uniform();
     const float s = random.uniform();
     const float t = random.uniform();
@@ -100,20 +101,20 @@ float Integrator::emissionWeight(const SurfacePoint& x, const RayHit& hit,
   return powerHeuristic(brdfPdf, lights_.emitterPdf(emitter, hit.distance, cosAtEmitter));
 }
 
-bool Integrator::scatter(const RayHit& hit, int lane, PathState& path, PathSample& sample,
-                         SampleRandom& random, std::vector<ShadowQuery>& shadows) const {
-  const SurfacePoint x = surfaceAt(scene_, hit, path.origin, path.direction);
+bool Integrator::scatter(const SurfacePoint& x, const RayHit& hit, int lane, PathState& path,
+                         PathSample& sample, SampleRandom& random,
+                         std::vector<ShadowQuery>& shadows) const {
   const SurfaceMaterial& material = *x.geometry->material;
-  if (material.emissive) {
+  if (material.emissive && emission_) {
     const float weight =
         path.scatterings == 0 ? 1.0f : emissionWeight(x, hit, path.direction, path.brdfPdf);
     attribute(sample, path.scatterings, path.throughput * material.emission * weight);
   }
   const glm::vec3 albedo = surfaceAlbedo(x);
-  if (path.scatterings == 0) {
+  if (path.scatterings == 0) {  // a camera path's first hit
     sample.albedo = albedo;
     sample.normal = x.shadingNormal;
-    sample.depth = camera_.viewDepth(x.position);
+    sample.depth = camera_->viewDepth(x.position);
   }
   const int scatterings = ++path.scatterings;  // light leaving x towards the camera scatters here
   if (scatterings > maxBounces_ || largestChannel(albedo) <= 0.0f) return false;
@@ -121,7 +122,7 @@ bool Integrator::scatter(const RayHit& hit, int lane, PathState& path, PathSampl
   queueNextEvents(x, path.throughput * albedo * kInvPi, lane, scatterings, random, shadows);
 
   // At the last permitted vertex only emission or sky can still be found by the continuation.
-  if (scatterings == maxBounces_ && !lights_.hasEmitters() && !hasSky_) return false;
+  if (scatterings == maxBounces_ && !(emission_ && lights_.hasEmitters()) && !hasSky_) return false;
   if (scatterings > rouletteAfter_) {
     const float survival = std::min(0.95f, largestChannel(albedo));
     if (random.uniform() >= survival) return false;
@@ -157,18 +158,39 @@ void Integrator::resolveShadows(const std::vector<ShadowQuery>& shadows,
 
 void Integrator::trace(int lanes, const glm::vec2* positions, SampleRandom* randoms,
                        PathSample* samples, std::vector<ShadowQuery>& shadows) const {
+  if (!camera_) throw Error("path tracer: camera paths need a camera");
   PathState paths[kPacketWidth];
   RayPacket rays;
   for (int lane = 0; lane < lanes; ++lane) {
-    const glm::vec3 direction = camera_.direction(positions[lane].x, positions[lane].y);
-    paths[lane] = {camera_.origin(), direction, glm::vec3(1.0f), 0.0f, 0};
-    samples[lane] = PathSample{};
-    rays.set(lane, camera_.origin(), direction, camera_.nearDistance(direction),
-             camera_.farDistance(direction));
+    const glm::vec3 direction = camera_->direction(positions[lane].x, positions[lane].y);
+    paths[lane] = {camera_->origin(), direction, glm::vec3(1.0f), 0.0f, 0, false};
+    rays.set(lane, camera_->origin(), direction, camera_->nearDistance(direction),
+             camera_->farDistance(direction));
   }
+  tracePaths(lanes, paths, rays, true, randoms, samples, shadows, nullptr);
+}
+
+void Integrator::trace(int lanes, const PathStart* starts, SampleRandom* randoms,
+                       PathSample* samples, std::vector<ShadowQuery>& shadows,
+                       const FirstHitWeight* weight) const {
+  PathState paths[kPacketWidth];
+  RayPacket rays;
+  for (int lane = 0; lane < lanes; ++lane) {
+    const PathStart& start = starts[lane];
+    paths[lane] = {start.origin, start.direction, start.throughput, start.brdfPdf,
+                   start.scatterings, std::isinf(start.tFar)};
+    rays.set(lane, start.origin, start.direction, start.tNear, start.tFar);
+  }
+  tracePaths(lanes, paths, rays, false, randoms, samples, shadows, weight);
+}
+
+void Integrator::tracePaths(int lanes, PathState* paths, RayPacket& rays, bool coherent,
+                            SampleRandom* randoms, PathSample* samples,
+                            std::vector<ShadowQuery>& shadows, const FirstHitWeight* weight) const {
+  for (int lane = 0; lane < lanes; ++lane) samples[lane] = PathSample{};
   // Bounce by bounce: a lane stays active while its path goes on, and gets its next ray in place.
-  for (bool cameraRays = true; rays.any(); cameraRays = false) {
-    scene_.intersect(rays, cameraRays);
+  for (bool first = true; rays.any(); first = false) {
+    scene_.intersect(rays, first && coherent);
     shadows.clear();
     for (int lane = 0; lane < lanes; ++lane) {
       if (!rays.active(lane)) continue;
@@ -177,16 +199,22 @@ void Integrator::trace(int lanes, const glm::vec2* positions, SampleRandom* rand
       ++sample.rays;
       bool goesOn = false;
       if (rays.hit(lane)) {
-        goesOn = scatter(rays.hitAt(lane), lane, path, sample, randoms[lane], shadows);
-      } else if (hasSky_ && path.scatterings > 0) {
+        const RayHit hit = rays.hitAt(lane);
+        const SurfacePoint x = surfaceAt(scene_, hit, path.origin, path.direction);
+        if (first && weight) path.throughput *= (*weight)(lane, x);
+        if (largestChannel(path.throughput) > 0.0f)
+          goesOn = scatter(x, hit, lane, path, sample, randoms[lane], shadows);
+      } else if (hasSky_ && path.scatterings > 0 && path.skyOnMiss) {
         // The camera's own misses are background (zero); later ones see the sky.
         attribute(sample, path.scatterings,
                   path.throughput * sky_ * powerHeuristic(path.brdfPdf, path.brdfPdf));
       }
-      if (goesOn)
+      if (goesOn) {
+        path.skyOnMiss = true;
         rays.set(lane, path.origin, path.direction, scene_.epsilon(), kInfinity);
-      else
+      } else {
         rays.deactivate(lane);
+      }
     }
     resolveShadows(shadows, samples);
   }

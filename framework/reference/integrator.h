@@ -20,7 +20,13 @@
 // Russian roulette: from vertex rouletteAfter + 1 on, a path continues with probability
 // min(0.95, largest albedo channel) and its throughput is divided by that probability (unbiased).
 // maxBounces caps k: vertices beyond it are not lit, and their emission is not counted.
+//
+// Paths from the camera are the reference's. A caller can also start paths at a surface
+// (PathStart): light found along them counts the scatterings the start says it already has, and
+// a weight of the first hit scales all that the path finds beyond it (how the many-light
+// methods' clamp compensation weighs a path by where its first ray lands: clamp_compensation.h).
 
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,7 +45,7 @@ struct PathSample {
   glm::vec3 direct{0.0f}, indirect{0.0f}, indirect1{0.0f};
   glm::vec3 albedo{0.0f};  // first hit's; all first-hit values are zero when the camera ray misses
   glm::vec3 normal{0.0f};  // first hit's shading normal, facing the camera
-  float depth = 0.0f;      // first hit's view depth, m
+  float depth = 0.0f;      // first hit's view depth, m (camera paths)
   int rays = 0;            // camera, continuation and shadow rays traced
 };
 
@@ -52,11 +58,26 @@ struct ShadowQuery {
   glm::vec3 radiance;  // W/(m^2 sr) towards the camera, throughput and MIS weight included
 };
 
+// A path that starts at a surface: its first ray (a unit direction) and what the light it finds
+// is multiplied by. A miss before a finite tFar sees no sky (the ray was cut short, it did not
+// escape).
+struct PathStart {
+  glm::vec3 origin, direction;
+  float tNear, tFar;
+  glm::vec3 throughput{1.0f};  // e.g. albedo: the start vertex's BRDF cos / pdf
+  float brdfPdf = 0.0f;        // density of `direction`, 1/sr: MIS weight of emission it hits
+  int scatterings = 1;         // vertices the light will already have scattered at
+};
+
+// Scales a path's throughput at its first hit (RGB; zero in every channel ends the path).
+using FirstHitWeight = std::function<glm::vec3(int lane, const SurfacePoint& hit)>;
+
 class Integrator {
 public:
   // Throws an Error for settings out of range (negative bounce counts, a negative or non-finite
-  // sky). Keeps references to its arguments.
-  Integrator(const EmbreeScene& scene, const LightSampler& lights, const CameraRays& camera,
+  // sky). Keeps references to its arguments. `camera` may be null for paths that start at
+  // surfaces only.
+  Integrator(const EmbreeScene& scene, const LightSampler& lights, const CameraRays* camera,
              const TracerSettings& settings);
 
   // Traces `lanes` (<= kPacketWidth) paths, path i through image position positions[i] in pixels
@@ -64,6 +85,10 @@ public:
   // scratch space, kept by the caller so that tracing allocates nothing once it has grown.
   void trace(int lanes, const glm::vec2* positions, SampleRandom* randoms, PathSample* samples,
              std::vector<ShadowQuery>& shadows) const;
+  // The same for paths that start at surfaces, with an optional weight of their first hits.
+  // Their first-hit values (albedo, normal, depth) stay zero.
+  void trace(int lanes, const PathStart* starts, SampleRandom* randoms, PathSample* samples,
+             std::vector<ShadowQuery>& shadows, const FirstHitWeight* weight = nullptr) const;
 
 private:
 
@@ -73,15 +98,21 @@ private:
     glm::vec3 throughput;         // product of albedo / survival probability so far
     float brdfPdf;                // density of `direction` (after the camera ray), 1/sr
     int scatterings;              // surface vertices so far
+    bool skyOnMiss;               // the ray runs to infinity: a miss sees the sky
   };
+
+  // The bounce loop of both trace()s: `coherent` when the first rays are the camera's.
+  void tracePaths(int lanes, PathState* paths, RayPacket& rays, bool coherent,
+                  SampleRandom* randoms, PathSample* samples, std::vector<ShadowQuery>& shadows,
+                  const FirstHitWeight* weight) const;
 
   glm::vec3 offsetOrigin(const SurfacePoint& x, const glm::vec3& direction) const {
     return offsetRayOrigin(scene_, x, direction);
   }
   // Everything at the vertex `hit`: emission, first-hit values, next-event shadow rays (queued),
   // roulette and the continuation direction. False when the path ends there.
-  bool scatter(const RayHit& hit, int lane, PathState& path, PathSample& sample,
-               SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
+  bool scatter(const SurfacePoint& x, const RayHit& hit, int lane, PathState& path,
+               PathSample& sample, SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
   // Queues next-event estimation at x, which reflects `reflectance` = throughput * albedo / pi of
   // the irradiance it receives towards the camera (area lights and sky MIS-weighted).
   void queueNextEvents(const SurfacePoint& x, const glm::vec3& reflectance, int lane,
@@ -95,9 +126,10 @@ private:
 
   const EmbreeScene& scene_;
   const LightSampler& lights_;
-  const CameraRays& camera_;
+  const CameraRays* camera_;
   glm::vec3 sky_;
   bool hasSky_;
+  bool emission_;  // emitters light the scene (TracerSettings::emission)
   int maxBounces_, rouletteAfter_;
 };
 

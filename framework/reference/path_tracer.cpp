@@ -66,7 +66,7 @@ struct PathTracer::Impl {
         embree(scene, materials, settings.engine),
         lights(scene, materials),
         camera(view, width, height),
-        integrator(embree, lights, camera, settings),
+        integrator(embree, lights, &camera, settings),
         width(width),
         height(height),
         seed(settings.seed),

@@ -49,6 +49,10 @@ struct TracerSettings {
   // relative-error estimate and budget are conservative with it.
   SampleSequence sampler = SampleSequence::Independent;
   glm::vec3 skyRadiance{0.0f};  // constant radiance from every unblocked direction; 0: no sky
+  // false: emissive surfaces light nothing, neither seen nor sampled (the light the many-light
+  // methods' walks carry, which start at punctual lights only: clamp_compensation.h). Their
+  // surfaces still reflect. The reference always has it true.
+  bool emission = true;
   // Embree's instruction set and query width. They change no expectation, only speed and the
   // rounding of hit points (so bit-identical images need the same instruction set).
   RayEngineSettings engine;

@@ -94,6 +94,16 @@ const std::vector<BadInput>& cases() {
            " -s compute.backend='\"cpu\"'",
        {"directed", "scatter", "GL only"},
        {"out"}},
+      {"a clamp compensation without a clamp: nothing to compensate",
+       "run --out out" + kSmall +
+           " -s indirect.method='\"instant_radiosity\"' -s indirect.clamp_compensation=true",
+       {"indirect.clamp_compensation", "without a clamp"},
+       {"out"}},
+      {"an unknown VPL placement of incremental instant radiosity",
+       "run --out out" + kSmall +
+           " -s indirect.method='\"incremental_instant_radiosity\"' -s indirect.placement='\"random\"'",
+       {"indirect.placement", "random"},
+       {"out"}},
       {"an unknown shadowing",
        "run --out out" + kSmall + " -s light_maps.shadows='\"pcss\"'",
        {"light_maps.shadows", "pcss"},

@@ -10,8 +10,12 @@
 //   max_removals    valid VPLs removed per frame (invalid ones always are)
 //   max_insertions  VPLs inserted per frame after the first (which fills the set)
 //   flux_grid       cells per side of the grid that measures the Voronoi cells' power
+//   placement       "projection": VPLs spread evenly in the light's paraboloid projection (the
+//                   notes' 3.2.2); "power": evenly in a disk whose area is the light's power, so
+//                   each VPL's cell carries about the same power (light_charts.h)
 //   visibility      "rays" (default), "shadow_maps" (with shadow_map_size, normal_offset,
-//                   depth_bias) or "none"; clamp as instant radiosity's
+//                   depth_bias) or "none"; clamp, clamp_compensation and compensation_samples as
+//                   instant radiosity's
 // The manifest reports each frame's removals, insertions and coverage. Moving geometry starts the
 // set anew (the method assumes a static scene).
 
@@ -28,6 +32,9 @@ IncrementalSettings readIncremental(Params& p) {
   s.maxRemovals = p.get<int>("max_removals", 16, {.min = 0, .max = 1 << 20});
   s.maxInsertions = p.get<int>("max_insertions", 16, {.min = 0, .max = 1 << 20});
   s.fluxGrid = p.get<int>("flux_grid", 128, {.min = 2, .max = 4096});
+  s.placement = p.getChoice("placement", "projection", {"projection", "power"}) == "power"
+                    ? ChartPlacement::Power
+                    : ChartPlacement::Projection;
   return s;
 }
 
@@ -48,6 +55,8 @@ protected:
     vpls = incremental_.update(scene, counts_);
   }
 
+  int vplBounces() const override { return 1; }  // VPLs where the light first lands
+
   std::vector<WorkCount> sourceWork() const override {
     // Each kept VPL's validity ray; each insertion's ray (the Delaunay updates are CGAL's).
     return {{"validity ray", double(counts_.kept - counts_.inserted + counts_.removedInvalid), 0.0, 0.0},
@@ -60,7 +69,8 @@ protected:
             {"inserted", counts_.inserted},
             {"kept", counts_.kept},
             {"placeholders", counts_.placeholders},
-            {"coverage", counts_.coverage}};
+            {"coverage", counts_.coverage},
+            {"placement", incremental_.settings().placement == ChartPlacement::Power ? "power" : "projection"}};
   }
 
 private:

@@ -13,6 +13,10 @@
 //                   shadow_map_size, normal_offset (texels) and depth_bias (relative); "none": V = 1
 //   clamp           c of min(c, G f_r) in 1/(m^2 sr) (equation 12); 0: no clamp. The manifest
 //                   reports what it removed (indirect_method.statistics.clamp)
+//   clamp_compensation   true: the light the clamp removed, estimated by a short path-traced
+//                   gather where the clamp acts and added back (Kollig and Keller 2004;
+//                   framework/many_lights/clamp_compensation.h), with compensation_samples
+//                   directions per pixel; statistics.clamp.compensation reports it
 //   seed            of the walks; the same VPLs every frame while nothing moves
 // Runs on the CPU (Embree): framework/many_lights/vpl_method.h.
 
