@@ -76,34 +76,64 @@ int findNamed(Params& p, const std::string& key, const std::vector<Item>& items,
               "' (it has: " + names + ")");
 }
 
-// A [[materials]] table: translucency (thesis 5.4; read by rendering "subsurface") and optionally
-// another base colour for the scene's material `name`, or for the material of one mesh only
-// (`mesh`: that mesh gets its own copy of its material, named "<material> (<mesh>)"). The
-// reflected and the transmitted fractions must not exceed the whole.
-void readMaterialOverride(Params& p, Scene& scene) {
-  if (p.has("name") == p.has("mesh"))
-    throw Error(p.where("name") + ": give exactly one of name (a material) and mesh (a mesh)");
-  int index = -1;
-  if (p.has("mesh")) {
-    Mesh& mesh = scene.meshes[std::size_t(findNamed(p, "mesh", scene.meshes, scene, "mesh"))];
-    Material copy = scene.materials.at(mesh.material);
-    copy.name += " (" + mesh.name + ")";
-    scene.materials.push_back(copy);
-    index = mesh.material = int(scene.materials.size()) - 1;
-  } else {
-    index = findNamed(p, "name", scene.materials, scene, "material");
-  }
-  Material& material = scene.materials[index];
+// One material's keys of a [[materials]] table (each defaults to the material's own value).
+// What it reflects diffusely, specularly and lets in must not exceed the whole.
+void overrideMaterial(Params& p, Material& material) {
   const Range<glm::vec3> unit{.min = glm::vec3(0.0f), .max = glm::vec3(1.0f)};
   material.baseColor = p.get<glm::vec3>("base_color", material.baseColor, unit);
   material.transmittance = p.get<glm::vec3>("transmittance", glm::vec3(0.0f), unit);
   material.extinction = p.get<float>("extinction", 0.0f, {.min = 0.0f, .max = 1e6f});
+  material.specular = p.get<glm::vec3>("specular", material.specular, unit);
+  material.shininess = p.get<float>("shininess", material.shininess, {.min = 0.0f, .max = 1e4f});
+  material.metallic = p.get<float>("metallic", material.metallic, {.min = 0.0f, .max = 1.0f});
   const glm::vec3 total = material.baseColor + material.transmittance;
   if (glm::any(glm::greaterThan(total, glm::vec3(1.0f + 1e-6f))))
     throw Error(p.where("transmittance") + ": material '" + material.name + "' would reflect and " +
                 "transmit more than it receives (base_color + transmittance = " +
                 std::to_string(total.x) + ", " + std::to_string(total.y) + ", " +
                 std::to_string(total.z) + "; at most 1 per channel)");
+  // Only the overridden keys are checked: a file's own materials follow the loaders' rule
+  // (phongAt limits the diffuse part to 1 - rho_s).
+  const glm::vec3 reflected = material.baseColor + material.specular;
+  if ((p.has("specular") || p.has("base_color")) && material.metallic == 0.0f &&
+      glm::any(glm::greaterThan(reflected, glm::vec3(1.0f + 1e-6f))))
+    throw Error(p.where(p.has("specular") ? "specular" : "base_color") + ": material '" +
+                material.name + "' would reflect more than it receives (base_color + specular = " +
+                std::to_string(reflected.x) + ", " + std::to_string(reflected.y) + ", " +
+                std::to_string(reflected.z) + "; at most 1 per channel)");
+}
+
+// A [[materials]] table: translucency (thesis 5.4; read by rendering "subsurface"), the glossy
+// lobe of the reference's brdf "phong", and optionally another base colour, for the scene's
+// material `name` (name = "*": every material), or for the material of one mesh only (`mesh`:
+// that mesh gets its own copy of its material, named "<material> (<mesh>)").
+void readMaterialOverride(Params& p, Scene& scene) {
+  if (p.has("name") == p.has("mesh"))
+    throw Error(p.where("name") + ": give exactly one of name (a material), \"*\" (every material) "
+                "and mesh (a mesh)");
+  if (p.has("mesh")) {
+    Mesh& mesh = scene.meshes[std::size_t(findNamed(p, "mesh", scene.meshes, scene, "mesh"))];
+    Material copy = scene.materials.at(mesh.material);
+    copy.name += " (" + mesh.name + ")";
+    scene.materials.push_back(copy);
+    mesh.material = int(scene.materials.size()) - 1;
+    overrideMaterial(p, scene.materials.back());
+  } else if (p.get<std::string>("name", "") == "*") {
+    for (Material& material : scene.materials) overrideMaterial(p, material);
+  } else {
+    overrideMaterial(p, scene.materials[std::size_t(findNamed(p, "name", scene.materials, scene, "material"))]);
+  }
+}
+
+// A [[materials]] table that sets a glossy lobe asks for the reference's brdf "phong": with the
+// Lambertian reference the lobe would be ignored without a word.
+void refuseIgnoredGlossyKeys(Params& params, const Experiment& e) {
+  if (e.reference.tracer.glossy) return;
+  for (Params& p : params.tables("materials"))
+    for (const char* key : {"specular", "shininess", "metallic"})
+      if (p.has(key))
+        throw Error(p.where(key) + ": only the reference's brdf = \"phong\" reads a material's "
+                    "glossy lobe; with [reference] brdf = \"lambertian\" (the default) it would be ignored");
 }
 
 Camera readCamera(Params& p, const Scene& scene) {
@@ -344,6 +374,7 @@ void readReference(Params& params, Experiment& e) {
   e.reference.tracer.maxBounces = reference.get<int>("max_bounces", 64, {.min = 1, .max = 100000});
   e.reference.tracer.rouletteAfter = reference.get<int>("roulette_after", 3, {.min = 0, .max = 100000});
   e.reference.tracer.sampler = samplerFromName(reference.getChoice("sampler", "independent", samplerNames()));
+  e.reference.tracer.glossy = reference.getChoice("brdf", "lambertian", {"lambertian", "phong"}) == "phong";
   e.reference.threads = reference.get<int>("threads", 0, {.min = 0, .max = 4096});
   // How often the sums are saved for resuming (0: after every pass of about a second).
   e.reference.checkpointSeconds =
@@ -473,6 +504,7 @@ Experiment loadExperiment(const toml::table& root, const std::string& path, cons
   readGrid(params, e);
   readTimingAndBackends(params, e);
   readReference(params, e);
+  refuseIgnoredGlossyKeys(params, e);
   readMetrics(params, e);
   const std::set<std::string> foreignTables = readIndirect(params, e);
   if (e.dumpGrid && !e.method->hasLightGrid())

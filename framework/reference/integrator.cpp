@@ -38,6 +38,7 @@ Integrator::Integrator(const EmbreeScene& scene, const LightSampler& lights,
       sky_(settings.skyRadiance),
       hasSky_(glm::any(glm::greaterThan(settings.skyRadiance, glm::vec3(0.0f)))),
       emission_(settings.emission),
+      glossy_(settings.glossy),
       maxBounces_(settings.maxBounces),
       rouletteAfter_(settings.rouletteAfter) {
   if (settings.maxBounces < 0 || settings.rouletteAfter < 0)
@@ -49,14 +50,14 @@ Integrator::Integrator(const EmbreeScene& scene, const LightSampler& lights,
 }
 
 
-void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflectance, int lane,
+void Integrator::queueNextEvents(const SurfacePoint& x, const VertexBrdf& brdf, int lane,
                                  int scatterings, SampleRandom& random,
                                  std::vector<ShadowQuery>& shadows) const {
   const glm::vec3 n = x.shadingNormal;
   const float epsilon = scene_.epsilon();
   auto queue = [&](const glm::vec3& direction, float tFar, const glm::vec3& irradiance) {
-    shadows.push_back(
-        {lane, scatterings, offsetOrigin(x, direction), direction, tFar, reflectance * irradiance});
+    shadows.push_back({lane, scatterings, offsetOrigin(x, direction), direction, tFar,
+                       brdf.reflectance(n, direction) * irradiance});
   };
 
   // Every punctual light: E = I falloff cos / r^2 (point, spot) or E_perp cos (directional).
@@ -79,7 +80,7 @@ void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflect
       const float cosine = glm::dot(n, light.direction);
       if (cosine > 0.0f)
         queue(light.direction, light.distance - 2.0f * epsilon,
-              light.radiance * (cosine / light.pdf * powerHeuristic(light.pdf, cosine * kInvPi)));
+              light.radiance * (cosine / light.pdf * powerHeuristic(light.pdf, brdf.pdf(n, light.direction))));
     }
   }
 
@@ -89,7 +90,10 @@ void Integrator::queueNextEvents(const SurfacePoint& x, const glm::vec3& reflect
     const float u2 = random.uniform();
     const glm::vec3 direction = cosineHemisphere(n, u1, u2);
     const float pdf = glm::dot(n, direction) * kInvPi;
-    if (pdf > 0.0f) queue(direction, kInfinity, sky_ * (float(M_PI) * powerHeuristic(pdf, pdf)));
+    if (pdf > 0.0f && !brdf.phong) queue(direction, kInfinity, sky_ * (float(M_PI) * powerHeuristic(pdf, pdf)));
+    // A glossy BRDF samples other directions: E's estimate L cos / pdf, weighed against its density.
+    if (pdf > 0.0f && brdf.phong)
+      queue(direction, kInfinity, sky_ * (glm::dot(n, direction) / pdf * powerHeuristic(pdf, brdf.pdf(n, direction))));
   }
 }
 
@@ -117,9 +121,14 @@ bool Integrator::scatter(const SurfacePoint& x, const RayHit& hit, int lane, Pat
     sample.depth = camera_->viewDepth(x.position);
   }
   const int scatterings = ++path.scatterings;  // light leaving x towards the camera scatters here
+  if (glossy_ && glossyMaterial(material)) {
+    const PhongBrdf phong = phongAt(material, albedo);
+    if (scatterings > maxBounces_ || largestChannel(phong.diffuse + phong.specular) <= 0.0f) return false;
+    return scatterGlossy(x, phong, lane, path, random, shadows);
+  }
   if (scatterings > maxBounces_ || largestChannel(albedo) <= 0.0f) return false;
 
-  queueNextEvents(x, path.throughput * albedo * kInvPi, lane, scatterings, random, shadows);
+  queueNextEvents(x, {path.throughput * albedo * kInvPi}, lane, scatterings, random, shadows);
 
   // At the last permitted vertex only emission or sky can still be found by the continuation.
   if (scatterings == maxBounces_ && !(emission_ && lights_.hasEmitters()) && !hasSky_) return false;
@@ -134,7 +143,33 @@ bool Integrator::scatter(const SurfacePoint& x, const RayHit& hit, int lane, Pat
   const float u2 = random.uniform();
   path.direction = cosineHemisphere(x.shadingNormal, u1, u2);
   path.brdfPdf = glm::dot(x.shadingNormal, path.direction) * kInvPi;
+  path.skyPdf = path.brdfPdf;
   path.origin = offsetOrigin(x, path.direction);
+  return true;
+}
+
+bool Integrator::scatterGlossy(const SurfacePoint& x, const PhongBrdf& phong, int lane,
+                               PathState& path, SampleRandom& random,
+                               std::vector<ShadowQuery>& shadows) const {
+  const glm::vec3 n = x.shadingNormal, wo = -path.direction;
+  queueNextEvents(x, {glm::vec3(0.0f), &phong, path.throughput, wo}, lane, path.scatterings, random,
+                  shadows);
+  if (path.scatterings == maxBounces_ && !(emission_ && lights_.hasEmitters()) && !hasSky_) return false;
+  if (path.scatterings > rouletteAfter_) {
+    const float survival = std::min(0.95f, largestChannel(phong.diffuse + phong.specular));
+    if (random.uniform() >= survival) return false;
+    path.throughput /= survival;
+  }
+  const float u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
+  glm::vec3 wi;
+  if (!phong.sample(n, wo, u0, u1, u2, wi)) return false;  // below the horizon: not reflected
+  const float pdf = phong.pdf(n, wo, wi), cosine = glm::dot(n, wi);
+  if (!(pdf > 0.0f)) return false;
+  path.throughput *= phong.evaluate(n, wo, wi) * (cosine / pdf);
+  path.direction = wi;
+  path.brdfPdf = pdf;
+  path.skyPdf = cosine * kInvPi;  // the density next-event estimation draws the sky with
+  path.origin = offsetOrigin(x, wi);
   return true;
 }
 
@@ -163,7 +198,7 @@ void Integrator::trace(int lanes, const glm::vec2* positions, SampleRandom* rand
   RayPacket rays;
   for (int lane = 0; lane < lanes; ++lane) {
     const glm::vec3 direction = camera_->direction(positions[lane].x, positions[lane].y);
-    paths[lane] = {camera_->origin(), direction, glm::vec3(1.0f), 0.0f, 0, false};
+    paths[lane] = {camera_->origin(), direction, glm::vec3(1.0f), 0.0f, 0.0f, 0, false};
     rays.set(lane, camera_->origin(), direction, camera_->nearDistance(direction),
              camera_->farDistance(direction));
   }
@@ -178,7 +213,7 @@ void Integrator::trace(int lanes, const PathStart* starts, SampleRandom* randoms
   for (int lane = 0; lane < lanes; ++lane) {
     const PathStart& start = starts[lane];
     paths[lane] = {start.origin, start.direction, start.throughput, start.brdfPdf,
-                   start.scatterings, std::isinf(start.tFar)};
+                   start.brdfPdf, start.scatterings, std::isinf(start.tFar)};
     rays.set(lane, start.origin, start.direction, start.tNear, start.tFar);
   }
   tracePaths(lanes, paths, rays, false, randoms, samples, shadows, weight);
@@ -207,7 +242,7 @@ void Integrator::tracePaths(int lanes, PathState* paths, RayPacket& rays, bool c
       } else if (hasSky_ && path.scatterings > 0 && path.skyOnMiss) {
         // The camera's own misses are background (zero); later ones see the sky.
         attribute(sample, path.scatterings,
-                  path.throughput * sky_ * powerHeuristic(path.brdfPdf, path.brdfPdf));
+                  path.throughput * sky_ * powerHeuristic(path.brdfPdf, path.skyPdf));
       }
       if (goesOn) {
         path.skyOnMiss = true;

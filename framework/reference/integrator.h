@@ -34,6 +34,7 @@
 #include "framework/reference/camera_rays.h"
 #include "framework/reference/embree_scene.h"
 #include "framework/reference/light_sampler.h"
+#include "framework/reference/phong_brdf.h"
 #include "framework/reference/path_tracer.h"
 #include "framework/reference/random.h"
 #include "framework/reference/ray_packets.h"
@@ -97,6 +98,7 @@ private:
     glm::vec3 origin, direction;  // the ray being traced
     glm::vec3 throughput;         // product of albedo / survival probability so far
     float brdfPdf;                // density of `direction` (after the camera ray), 1/sr
+    float skyPdf;                 // the density next-event estimation draws it with (sky MIS)
     int scatterings;              // surface vertices so far
     bool skyOnMiss;               // the ray runs to infinity: a miss sees the sky
   };
@@ -113,11 +115,26 @@ private:
   // roulette and the continuation direction. False when the path ends there.
   bool scatter(const SurfacePoint& x, const RayHit& hit, int lane, PathState& path,
                PathSample& sample, SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
-  // Queues next-event estimation at x, which reflects `reflectance` = throughput * albedo / pi of
-  // the irradiance it receives towards the camera (area lights and sky MIS-weighted).
-  void queueNextEvents(const SurfacePoint& x, const glm::vec3& reflectance, int lane,
-                       int scatterings, SampleRandom& random,
-                       std::vector<ShadowQuery>& shadows) const;
+  // A vertex's BRDF as next-event estimation reads it: Lambertian, reflecting `lambertian` =
+  // throughput * albedo / pi of the irradiance towards the camera, or the Phong BRDF seen from wo.
+  struct VertexBrdf {
+    glm::vec3 lambertian{0.0f};
+    const PhongBrdf* phong = nullptr;
+    glm::vec3 throughput{0.0f}, wo{0.0f};
+    glm::vec3 reflectance(const glm::vec3& n, const glm::vec3& l) const {
+      return phong ? throughput * phong->evaluate(n, wo, l) : lambertian;
+    }
+    float pdf(const glm::vec3& n, const glm::vec3& l) const {
+      return phong ? phong->pdf(n, wo, l) : glm::dot(n, l) * float(1.0 / M_PI);
+    }
+  };
+  // Queues next-event estimation at x, which reflects what `brdf` says of the irradiance it
+  // receives towards the camera (area lights and sky MIS-weighted).
+  void queueNextEvents(const SurfacePoint& x, const VertexBrdf& brdf, int lane, int scatterings,
+                       SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
+  // scatter()'s next events and continuation at a glossy vertex ([reference] brdf = "phong").
+  bool scatterGlossy(const SurfacePoint& x, const PhongBrdf& phong, int lane, PathState& path,
+                     SampleRandom& random, std::vector<ShadowQuery>& shadows) const;
   // MIS weight of emission found by a BRDF-sampled ray with direction density `brdfPdf`.
   float emissionWeight(const SurfacePoint& x, const RayHit& hit, const glm::vec3& direction,
                        float brdfPdf) const;
@@ -130,6 +147,7 @@ private:
   glm::vec3 sky_;
   bool hasSky_;
   bool emission_;  // emitters light the scene (TracerSettings::emission)
+  bool glossy_;    // materials' Phong lobes are rendered (TracerSettings::glossy)
   int maxBounces_, rouletteAfter_;
 };
 

@@ -84,9 +84,17 @@ std::vector<SurfaceMaterial> prepareMaterials(const Scene& scene) {
     const std::string where = "material '" + material.name + "'";
     requireColour(material.baseColor, where, "base colour");
     requireColour(material.emission, where, "emission");
+    requireColour(material.specular, where, "specular colour");
+    requireFinite(material.shininess, where, "shininess");
+    requireFinite(material.metallic, where, "metallic");
+    if (material.shininess < 0.0f) throwAt(where, "shininess (the Phong exponent) is negative");
+    if (material.metallic < 0.0f || material.metallic > 1.0f) throwAt(where, "metallic is outside [0, 1]");
     SurfaceMaterial prepared;
     prepared.baseColor = material.baseColor;
     prepared.emission = material.emission;
+    prepared.specular = material.specular;
+    prepared.shininess = material.shininess;
+    prepared.metallic = material.metallic;
     prepared.emissive = material.emits();
     if (material.baseColorTexture >= 0) {
       if (std::size_t(material.baseColorTexture) >= scene.textures.size())

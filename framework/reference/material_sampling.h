@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "framework/reference/phong_brdf.h"
 #include "framework/scene/scene.h"
 
 namespace lpvlab {
@@ -22,6 +23,9 @@ struct SurfaceMaterial {
   float alphaCutoff = -1.0f;              // Mask with a texture: cut out below this; < 0: never
   glm::vec3 emission{0.0f};               // W/(m^2 sr), both sides
   bool emissive = false;                  // any emission channel > 0
+  glm::vec3 specular{0.0f};               // the lobe of brdf "phong" (Material's; phongAt)
+  float shininess = 0.0f;
+  float metallic = 0.0f;
 };
 
 // The scene's materials, with texture pointers into scene.textures (which must outlive them).
@@ -41,6 +45,22 @@ float sampleAlpha(const TextureImage& texture, glm::vec2 uv);
 inline glm::vec3 albedoAt(const SurfaceMaterial& material, glm::vec2 uv) {
   if (!material.texture) return material.baseColor;
   return material.baseColor * glm::vec3(sampleTexture(*material.texture, uv));
+}
+
+// Whether a material has a lobe for brdf "phong" to render.
+inline bool glossyMaterial(const SurfaceMaterial& material) {
+  return material.metallic > 0.0f || glm::any(glm::greaterThan(material.specular, glm::vec3(0.0f)));
+}
+
+// Its BRDF at a point of albedo `albedo` (base colour x texture x vertex colour): the lobe's
+// reflectance mix(specular, albedo, metallic), the diffuse albedo (1 - metallic) albedo, limited
+// to 1 - rho_s per channel so that no direction reflects more than it receives.
+inline PhongBrdf phongAt(const SurfaceMaterial& material, const glm::vec3& albedo) {
+  PhongBrdf brdf;
+  brdf.specular = glm::mix(material.specular, albedo, material.metallic);
+  brdf.diffuse = glm::min(albedo * (1.0f - material.metallic), glm::vec3(1.0f) - brdf.specular);
+  brdf.exponent = material.shininess;
+  return brdf;
 }
 
 // True where an alpha mask removes the surface.

@@ -53,6 +53,9 @@ struct TracerSettings {
   // methods' walks carry, which start at punctual lights only: clamp_compensation.h). Their
   // surfaces still reflect. The reference always has it true.
   bool emission = true;
+  // true ([reference] brdf = "phong"): each material's Phong lobe (Material::specular, shininess,
+  // metallic; phong_brdf.h) beside its Lambertian albedo; false: Lambertian only, the lobes ignored.
+  bool glossy = false;
   // Embree's instruction set and query width. They change no expectation, only speed and the
   // rounding of hit points (so bit-identical images need the same instruction set).
   RayEngineSettings engine;

@@ -130,6 +130,7 @@ std::string keyFromSceneHash(const std::string& sceneContentHash, const Camera& 
   h.value(camera.verticalFov).value(r.width).value(r.height);
   h.value(r.tracer.seed).value(r.tracer.maxBounces).value(r.tracer.rouletteAfter);
   if (r.tracer.sampler == SampleSequence::Sobol) h.text("sampler=sobol");  // independent: as before
+  if (r.tracer.glossy) h.text("brdf=phong");                                 // lambertian: as before
   h.value(r.tracer.skyRadiance.x).value(r.tracer.skyRadiance.y).value(r.tracer.skyRadiance.z);
   return h.hex();
 }
@@ -296,6 +297,7 @@ nlohmann::json referenceManifest(const Reference& ref, const Scene& scene, const
        {{"version", kTracerVersion},
         {"seed", request.tracer.seed},
         {"sampler", samplerName(request.tracer.sampler)},
+        {"brdf", request.tracer.glossy ? "phong" : "lambertian"},
         {"max_bounces", request.tracer.maxBounces},
         {"roulette_after", request.tracer.rouletteAfter},
         {"sky_radiance",

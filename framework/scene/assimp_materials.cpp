@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -58,6 +59,34 @@ private:
 
 glm::vec3 rgb(const aiColor4D& c) { return {c.r, c.g, c.b}; }
 
+// The glossy lobe (Material::specular, shininess, metallic). glTF's metallic-roughness: a
+// dielectric's reflectance at normal incidence, 0.04, and metallicFactor as it is (its default is
+// 1, as glTF's; phongAt mixes the lobe towards the albedo by it); GGX's alpha = roughness^2 has
+// the Blinn-Phong exponent 2 / alpha^2 - 2 (Walter et al. 2007), and a Phong lobe about the
+// reflected direction is about 4 times wider than a Blinn-Phong lobe about the half vector, so
+// m = (2 / alpha^2 - 2) / 4 (0 for roughness 1, capped at 10^4 for 0). The textures of
+// metallic-roughness are not read (no shipped scene has one). OBJ: Ks and Ns as they are (MTL's
+// Ns is a Phong exponent), not metallic.
+void readGlossyLobe(const aiMaterial& in, Material& out) {
+  float metallic = 0.0f, roughness = 1.0f;
+  const bool gltf = in.Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
+  if (gltf) {
+    in.Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness);
+    metallic = std::clamp(metallic, 0.0f, 1.0f);
+    const double alpha = std::max(double(std::clamp(roughness, 0.0f, 1.0f)) * roughness, 1e-4);
+    out.specular = glm::vec3(0.04f);
+    out.metallic = metallic;
+    out.shininess = float(std::min(1e4, (2.0 / (alpha * alpha) - 2.0) / 4.0));
+    return;
+  }
+  aiColor4D colour;
+  if (in.Get(AI_MATKEY_COLOR_SPECULAR, colour) == AI_SUCCESS)
+    out.specular = glm::clamp(rgb(colour), 0.0f, 1.0f);
+  float shininess = 0.0f;
+  if (in.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess))
+    out.shininess = std::clamp(shininess, 0.0f, 1e4f);
+}
+
 Material convertMaterial(const aiMaterial& in, TextureCache& textures) {
   Material out;
   out.name = in.GetName().C_Str();
@@ -86,6 +115,7 @@ Material convertMaterial(const aiMaterial& in, TextureCache& textures) {
 
   // OBJ's Ke, glTF's emissiveFactor.
   if (in.Get(AI_MATKEY_COLOR_EMISSIVE, colour) == AI_SUCCESS) out.emission = rgb(colour);
+  readGlossyLobe(in, out);
   return out;
 }
 

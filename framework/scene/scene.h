@@ -35,6 +35,15 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;        // Mask: texels with alpha below this are cut out
   glm::vec3 emission{0.0f};        // emitted radiance, W/(m^2 sr) (OBJ Ke, glTF emissiveFactor)
+  // The glossy lobe of the reference's [reference] brdf = "phong" (framework/reference/
+  // phong_brdf.h): a dielectric's specular reflectance, the Phong exponent m, and how metallic the
+  // surface is (glTF's metallicFactor: the lobe's reflectance moves towards the albedo and the
+  // diffuse part fades). From OBJ's Ks and Ns, or glTF's metallic-roughness (specular 0.04, m from
+  // roughnessFactor: assimp_materials.cpp). The Lambertian reference, the LPV pipeline and the
+  // many-light methods ignore all three.
+  glm::vec3 specular{0.0f};
+  float shininess = 0.0f;
+  float metallic = 0.0f;
   bool emits() const { return glm::any(glm::greaterThan(emission, glm::vec3(0.0f))); }
   // Translucency, read only by the subsurface-scattering LPV (thesis 5.4; rendering "subsurface";
   // set per experiment with [[materials]]): the fraction of the flux arriving at the surface that

@@ -46,6 +46,11 @@ std::string sceneHash(const Scene& scene) {
     h.value(static_cast<std::int32_t>(material.alphaMode));
     h.value(material.alphaCutoff);
     hashVec3(h, material.emission);
+    // Only glossy materials add their lobe, so the hash of a Lambertian scene is what it was.
+    if (glm::any(glm::greaterThan(material.specular, glm::vec3(0.0f))) || material.metallic > 0.0f) {
+      hashVec3(h, material.specular);
+      h.value(material.shininess).value(material.metallic);
+    }
   }
 
   h.value(static_cast<std::uint64_t>(scene.textures.size()));

@@ -53,6 +53,40 @@ TEST_F(ExperimentErrors, UnknownTopLevelKey) {
   EXPECT_TRUE(contains(topMessage, "grid"));
 }
 
+// A glossy lobe set by [[materials]]: applied to every material with name = "*", refused where
+// the Lambertian reference would ignore it, and where a surface would reflect more than it gets.
+TEST_F(ExperimentErrors, GlossyMaterialOverridesAreAppliedOrRefused) {
+  const std::string glossy = write("glossy.toml",
+                                   "[reference]\nbrdf = \"phong\"\n[[materials]]\nname = \"*\"\n"
+                                   "base_color = [0.6, 0.6, 0.6]\nspecular = [0.3, 0.3, 0.3]\nshininess = 40.0\n");
+  const Experiment e = loadExperiment(glossy);
+  EXPECT_TRUE(e.reference.tracer.glossy);
+  ASSERT_GT(e.scene.materials.size(), 1u);
+  for (const Material& m : e.scene.materials) {
+    EXPECT_EQ(m.specular, glm::vec3(0.3f)) << m.name;
+    EXPECT_EQ(m.shininess, 40.0f) << m.name;
+    EXPECT_EQ(m.baseColor, glm::vec3(0.6f)) << m.name;
+  }
+
+  const std::string ignored = write("ignored.toml", "[[materials]]\nname = \"*\"\n"
+                                                    "base_color = [0.5, 0.5, 0.5]\nspecular = [0.3, 0.3, 0.3]\n");
+  const std::string ignoredMessage = errorOf(ignored);
+  EXPECT_TRUE(contains(ignoredMessage, "specular")) << ignoredMessage;
+  EXPECT_TRUE(contains(ignoredMessage, "brdf")) << ignoredMessage;
+
+  const std::string bright = write("bright.toml",
+                                   "[reference]\nbrdf = \"phong\"\n[[materials]]\nname = \"*\"\n"
+                                   "base_color = [0.8, 0.8, 0.8]\nspecular = [0.3, 0.3, 0.3]\n");
+  const std::string brightMessage = errorOf(bright);
+  EXPECT_TRUE(contains(brightMessage, "specular")) << brightMessage;
+  EXPECT_TRUE(contains(brightMessage, "more than it receives")) << brightMessage;
+
+  const std::string brdf = write("brdf.toml", "[reference]\nbrdf = \"ggx\"\n");
+  const std::string brdfMessage = errorOf(brdf);
+  EXPECT_TRUE(contains(brdfMessage, "reference.brdf")) << brdfMessage;
+  EXPECT_TRUE(contains(brdfMessage, "phong")) << brdfMessage;
+}
+
 TEST_F(ExperimentErrors, IndirectMethodsAndTheirParametersAreChecked) {
   const std::string unknown = write("method.toml", "[indirect]\nmethod = \"photon_mapping\"\n");
   const std::string message = errorOf(unknown);

@@ -185,6 +185,45 @@ TEST(Import, ObjTexturesAreReadBesideTheSceneFile) {
   EXPECT_EQ(scene.textures[0].rgba8, (std::vector<std::uint8_t>{255, 0, 0, 255, 0, 255, 0, 128}));
 }
 
+// The glossy lobe of the reference's brdf "phong" (Material::specular, shininess, metallic): OBJ's
+// Ks and Ns as they are; glTF's metallic-roughness as a dielectric's 0.04, metallicFactor (default
+// 1, as glTF's) and m = (2 / alpha^2 - 2) / 4 with alpha = roughness^2. The base colour stays.
+TEST(Import, GlossyLobesFromObjAndGltfMaterials) {
+  TempDir dir;
+  dir.write("scene.mtl", "newmtl Glossy\nKd 0.5 0.4 0.3\nKs 0.3 0.2 0.1\nNs 64\n");
+  const Scene obj = loadScene(dir.write(
+      "scene.obj", "mtllib scene.mtl\nusemtl Glossy\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  const Material& glossy = obj.materials[obj.meshes[0].material];
+  EXPECT_EQ(glossy.baseColor, glm::vec3(0.5f, 0.4f, 0.3f));
+  EXPECT_EQ(glossy.specular, glm::vec3(0.3f, 0.2f, 0.1f));
+  EXPECT_FLOAT_EQ(glossy.shininess, 64.0f);
+  EXPECT_EQ(glossy.metallic, 0.0f);
+
+  GltfWriter gltf;
+  gltf.json["materials"] = {
+      {{"name", "Plastic"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.25, 1, 1}}, {"metallicFactor", 0.3},
+                                 {"roughnessFactor", 0.5}}}},
+      {{"name", "Default"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.2, 0.2, 1}}}}}};
+  test::Primitive first = kTriangle, second = kTriangle;
+  first.material = 0;
+  second.material = 1;
+  gltf.addMesh(first);
+  gltf.addMesh(second);
+  gltf.json["nodes"] = {{{"mesh", 0}}, {{"mesh", 1}}};
+  gltf.json["scenes"][0]["nodes"] = {0, 1};
+  gltf.writeGlb(dir.file("scene.glb"));
+  const Scene scene = loadScene(dir.file("scene.glb"));
+  const Material& plastic = scene.materials[scene.meshes[0].material];
+  EXPECT_EQ(plastic.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(plastic.specular, glm::vec3(0.04f));
+  EXPECT_FLOAT_EQ(plastic.metallic, 0.3f);
+  EXPECT_NEAR(plastic.shininess, (2.0 / (0.25 * 0.25) - 2.0) / 4.0, 1e-3);  // 7.5
+  const Material& fallback = scene.materials[scene.meshes[1].material];
+  EXPECT_FLOAT_EQ(fallback.metallic, 1.0f);   // glTF's default metallicFactor
+  EXPECT_FLOAT_EQ(fallback.shininess, 0.0f);  // roughness 1
+}
+
 TEST(Import, PunctualLightsArePlacedByTheirNodes) {
   TempDir dir;
   GltfWriter gltf;
