@@ -55,7 +55,9 @@ struct PixelGatherer {
       const Vpl& vpl = vpls[index];
       glm::vec3 toVpl;
       float distance = 0.0f;
-      const glm::vec3 gfr = vplGeometryTerm(p, n, rho, vpl, minDistance, toVpl, distance);
+      const glm::vec3 gfr = settings.lobe.lambertianPoints()
+                                ? vplGeometryTerm(p, n, rho, vpl, minDistance, toVpl, distance)
+                                : vplTransfer(p, n, rho, vpl, settings.lobe, minDistance, toVpl, distance);
       if (!(gfr.r > 0.0f || gfr.g > 0.0f || gfr.b > 0.0f)) continue;
       row.pairs += 1.0;
       if (!rays) {

@@ -15,6 +15,7 @@
 #include <span>
 
 #include "framework/many_lights/vpl.h"
+#include "framework/many_lights/vpl_transfer.h"
 #include "framework/pipeline/host_readback.h"
 
 namespace lpvlab {
@@ -25,9 +26,11 @@ struct VplDepthMaps;
 enum class GatherVisibility { None, Rays, DepthMaps };
 
 struct GatherSettings {
-  float clamp = 0.0f;  // c, 1/(m^2 sr); 0: no clamp
+  float clamp = 0.0f;  // c, 1/(m^2 sr); 0: no clamp (it bounds T of vpl_transfer.h alike)
   GatherVisibility visibility = GatherVisibility::Rays;
   float minDistance = 1e-4f;  // m; at least 4 ray epsilons when tracing shadow rays
+  // Glossy receivers and spherical lights (vpl_transfer.h); the default: Lambertian points.
+  ReceiverLobe lobe;
 };
 
 // Sums over the gathered pixels (their RGB channels summed), for the run's statistics.

@@ -22,7 +22,13 @@ VplVisibility readExactOrMappedVisibility(Params& p) {
 VplMethod::VplMethod(Params& p, VplVisibility visibility, const ImperfectSettings& imperfect)
     : visibility_(visibility), imperfect_(imperfect) {
   gather_.clamp = p.get<float>("clamp", 0.0f, {.min = 0.0f, .max = 1e30f});
+  gather_.lobe.specularAlbedo = p.get<float>("specular_albedo", 0.0f, {.min = 0.0f, .max = 1.0f});
+  gather_.lobe.exponent = p.get<float>("exponent", 32.0f, {.min = 0.0f, .max = 1e4f});
+  gather_.lobe.sphereRadius = p.get<float>("sphere_radius", 0.0f, {.min = 0.0f, .max = 1e6f});
   compensate_ = p.get<bool>("clamp_compensation", false);
+  if (compensate_ && !gather_.lobe.lambertianPoints())
+    throw Error(p.where("clamp_compensation") + ": the compensation models Lambertian receivers "
+                "and point VPLs; it cannot be combined with specular_albedo or sphere_radius");
   compensation_.samples = p.get<int>("compensation_samples", 4, {.min = 1, .max = 4096});
   if (compensate_ && !(gather_.clamp > 0.0f))
     throw Error(p.where("clamp_compensation") +
@@ -78,6 +84,7 @@ void VplMethod::render(MethodFrame& frame) {
     });
   frame.stage("indirect", [&] {
     const HostGBuffer g = hostGBuffer(frame.host, frame.gbuffer);
+    gather_.lobe.eye = frame.camera.position;
     gatherVpls(g.position, g.normal, g.albedo, vpls_, gather_, {&scene_->embree(), &maps_},
                frame.indirect.host(), &gatherCounts_);
   });
@@ -126,6 +133,10 @@ nlohmann::json VplMethod::statistics() const {
   out["visibility"] = visibilityName(visibility_);
   out["vpls"] = vpls_.size();
   out["gathered_pairs"] = gatherCounts_.pairs;
+  out["receivers"] = {{"specular_albedo", gather_.lobe.specularAlbedo},
+                     {"exponent", gather_.lobe.exponent},
+                     {"sphere_radius_m", gather_.lobe.sphereRadius},
+                     {"lights", gather_.lobe.sphereRadius > 0.0f ? "virtual spherical lights" : "points"}};
   out["clamp"] = {{"c", gather_.clamp},
                   {"largest_g_fr", gatherCounts_.largestGfr},
                   {"removed_radiance_sum", gatherCounts_.clampedAway},

@@ -11,9 +11,10 @@
 // shadow maps of either kind), "indirect" (the gather), "clamp_compensation" (with it).
 //
 // Keys read here (docs/methods.md): clamp, clamp_compensation (the clamped-away light added back
-// by a short path-traced gather: clamp_compensation.h) and compensation_samples; with shadow maps
-// of either kind shadow_map_size, normal_offset, depth_bias. LightPathMethod adds light_paths, one_bounce, roulette_after,
-// max_bounces, seed.
+// by a short path-traced gather: clamp_compensation.h) and compensation_samples; specular_albedo
+// and exponent (a glossy lobe on every receiver) and sphere_radius (virtual spherical lights:
+// vpl_transfer.h); with shadow maps of either kind shadow_map_size, normal_offset, depth_bias.
+// LightPathMethod adds light_paths, one_bounce, roulette_after, max_bounces, seed.
 
 #include <memory>
 #include <string>

@@ -99,6 +99,12 @@ const std::vector<BadInput>& cases() {
            " -s indirect.method='\"instant_radiosity\"' -s indirect.clamp_compensation=true",
        {"indirect.clamp_compensation", "without a clamp"},
        {"out"}},
+      {"a clamp compensation with spherical lights, which it does not model",
+       "run --out out" + kSmall +
+           " -s indirect.method='\"instant_radiosity\"' -s indirect.clamp=1.0"
+           " -s indirect.clamp_compensation=true -s indirect.sphere_radius=0.1",
+       {"indirect.clamp_compensation", "sphere_radius"},
+       {"out"}},
       {"an unknown VPL placement of incremental instant radiosity",
        "run --out out" + kSmall +
            " -s indirect.method='\"incremental_instant_radiosity\"' -s indirect.placement='\"random\"'",

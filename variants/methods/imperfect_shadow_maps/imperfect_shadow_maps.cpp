@@ -10,7 +10,7 @@
 //   pull_push_levels coarser levels pull-push may make (0: no hole filling)
 //   normal_offset, depth_bias   the shadow-map test (framework/many_lights/vpl_depth_maps.h)
 //   and the VPL keys of instant radiosity: light_paths, one_bounce, roulette_after, max_bounces,
-//   clamp, clamp_compensation, compensation_samples, seed.
+//   clamp, clamp_compensation, compensation_samples, specular_albedo, exponent, sphere_radius, seed.
 // The manifest reports the share of texels that were holes before and after pull-push.
 
 #include "framework/many_lights/vpl_method.h"

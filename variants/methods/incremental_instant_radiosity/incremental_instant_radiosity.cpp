@@ -14,7 +14,8 @@
 //                   notes' 3.2.2); "power": evenly in a disk whose area is the light's power, so
 //                   each VPL's cell carries about the same power (light_charts.h)
 //   visibility      "rays" (default), "shadow_maps" (with shadow_map_size, normal_offset,
-//                   depth_bias) or "none"; clamp, clamp_compensation and compensation_samples as
+//                   depth_bias) or "none"; clamp, clamp_compensation, compensation_samples,
+//                   specular_albedo, exponent and sphere_radius as
 //                   instant radiosity's
 // The manifest reports each frame's removals, insertions and coverage. Moving geometry starts the
 // set anew (the method assumes a static scene).

@@ -17,6 +17,10 @@
 //                   gather where the clamp acts and added back (Kollig and Keller 2004;
 //                   framework/many_lights/clamp_compensation.h), with compensation_samples
 //                   directions per pixel; statistics.clamp.compensation reports it
+//   specular_albedo, exponent   a glossy lobe on every receiver (the reference's modified Phong)
+//   sphere_radius   virtual spherical lights of this radius (m; 0: points): each VPL's light
+//                   integrated over the cone its sphere subtends (framework/many_lights/
+//                   vpl_transfer.h)
 //   seed            of the walks; the same VPLs every frame while nothing moves
 // Runs on the CPU (Embree): framework/many_lights/vpl_method.h.
 
