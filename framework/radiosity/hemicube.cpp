@@ -10,6 +10,7 @@
 
 #include "framework/core/error.h"
 #include "framework/math/view_matrix.h"
+#include "framework/reference/random.h"
 
 namespace lpvlab {
 
@@ -58,8 +59,8 @@ public:
 }  // namespace
 
 HemicubeFormFactors::HemicubeFormFactors(ShaderCompiler& shaders, const PatchMesh& mesh, int resolution,
-                                         float sceneSize)
-    : mesh_(mesh), maps_(hemicubeMaps(resolution)) {
+                                         float sceneSize, HemicubePlacement placement, std::uint64_t seed)
+    : mesh_(mesh), maps_(hemicubeMaps(resolution)), placement_(placement), seed_(seed) {
   if (mesh.patches.size() > (std::size_t(1) << 30))
     throw Error("radiosity: more patches than the hemicube's 32-bit item buffer can name");
   program_ = shaders.graphics("radiosity/hemicube.vert", "radiosity/hemicube.frag");
@@ -99,6 +100,32 @@ HemicubeFormFactors::~HemicubeFormFactors() {
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
+void HemicubeFormFactors::viewsOf(std::uint32_t side, View* views) const {
+  const Patch& patch = mesh_.patches[side / 2];
+  const glm::vec3 n = sideNormal(mesh_, side);
+  const auto inPlane = [&](const glm::vec3& v) { return glm::normalize(v - glm::dot(v, n) * n); };
+  const glm::vec3 towardsCorner = inPlane(patch.corners[0] - patch.centroid);
+  switch (placement_) {
+    case HemicubePlacement::Centroid:
+      views[0] = {patch.centroid, towardsCorner};
+      return;
+    case HemicubePlacement::Vertices:
+      for (int c = 0; c < 3; ++c)
+        views[c] = {glm::mix(patch.corners[c], patch.centroid, 0.01f), towardsCorner};
+      return;
+    case HemicubePlacement::Jittered: {
+      SampleRandom random(seed_, side, 0);
+      const float u = random.uniform(), v = random.uniform(), angle = float(2.0 * M_PI) * random.uniform();
+      const float su = std::sqrt(u);  // uniform on the triangle (Turk's square-root map)
+      const glm::vec3 eye = (1.0f - su) * patch.corners[0] + su * (1.0f - v) * patch.corners[1] +
+                            su * v * patch.corners[2];
+      const glm::vec3 b = glm::cross(n, towardsCorner);
+      views[0] = {eye, std::cos(angle) * towardsCorner + std::sin(angle) * b};
+      return;
+    }
+  }
+}
+
 void HemicubeFormFactors::renderBatch(const std::uint32_t* sides, std::size_t count) {
   const int res = maps_.resolution, half = res / 2;
   const std::uint32_t none = 0;
@@ -113,14 +140,16 @@ void HemicubeFormFactors::renderBatch(const std::uint32_t* sides, std::size_t co
   const GLsizei vertexCount = GLsizei(3 * mesh_.patches.size());
   const glm::mat4 topProjection = reversedFrustum(-near_, near_, -near_, near_, near_);
   const glm::mat4 sideProjection = reversedFrustum(-near_, near_, 0.0f, near_, near_);
-  for (std::size_t k = 0; k < count; ++k) {
-    const Patch& patch = mesh_.patches[sides[k] / 2];
-    const glm::vec3 n = sideNormal(mesh_, sides[k]);
-    const glm::vec3 eye = patch.centroid;
-    // The seed's frame: "up" of the top view towards a corner, the side views around it.
-    const glm::vec3 t = glm::normalize(patch.corners[0] - eye - glm::dot(patch.corners[0] - eye, n) * n);
+  const int views = viewsPerSide();
+  for (std::size_t tile = 0; tile < count * std::size_t(views); ++tile) {
+    View placed[3];
+    viewsOf(sides[tile / std::size_t(views)], placed);
+    const glm::vec3 n = sideNormal(mesh_, sides[tile / std::size_t(views)]);
+    const glm::vec3 eye = placed[tile % std::size_t(views)].eye;
+    // The top view's "up" in the side's plane, the side views around it.
+    const glm::vec3 t = placed[tile % std::size_t(views)].up;
     const glm::vec3 b = glm::cross(n, t);
-    const int x0 = int(k % std::size_t(tilesX_)) * res, y0 = int(k / std::size_t(tilesX_)) * 3 * res;
+    const int x0 = int(tile % std::size_t(tilesX_)) * res, y0 = int(tile / std::size_t(tilesX_)) * 3 * res;
     auto draw = [&](const glm::mat4& clipFromWorld, int y, int height) {
       glViewport(x0, y, res, height);
       glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
@@ -135,7 +164,7 @@ void HemicubeFormFactors::renderBatch(const std::uint32_t* sides, std::size_t co
   glGetTextureImage(items_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,
                     GLsizei(readback_.size() * sizeof(std::uint32_t)), readback_.data());
   checkGl("hemicube views");
-  hemicubes_ += count;
+  hemicubes_ += count * std::size_t(views);
 }
 
 void HemicubeFormFactors::computeRows(const std::vector<std::uint32_t>& sides, FormFactorRows& rows) {
@@ -146,30 +175,38 @@ void HemicubeFormFactors::computeRows(const std::vector<std::uint32_t>& sides, F
     const std::size_t count = std::min(batch(), sides.size() - first);
     renderBatch(sides.data() + first, count);
     std::vector<std::vector<FormFactor>> made(count);
+    const std::size_t views = std::size_t(viewsPerSide());
     tbb::parallel_for(std::size_t(0), count, [&](std::size_t k) {
       RowAccumulator& row = accumulators.local();
-      const std::size_t x0 = (k % std::size_t(tilesX_)) * std::size_t(res);
-      const std::size_t y0 = (k / std::size_t(tilesX_)) * 3 * std::size_t(res);
-      auto accumulate = [&](std::size_t y, std::size_t height, const std::vector<float>& delta) {
-        for (std::size_t r = 0; r < height; ++r) {
-          const std::uint32_t* line = readback_.data() + (y + r) * width + x0;
-          const float* weights = delta.data() + r * std::size_t(res);
-          for (int x = 0; x < res; ++x)
-            if (line[x] != 0) row.add(line[x] - 1, weights[x]);
-        }
-      };
-      accumulate(y0, std::size_t(res), maps_.top);
-      for (int face = 0; face < 4; ++face)
-        accumulate(y0 + std::size_t(res) + std::size_t(face * half), std::size_t(half), maps_.side);
-      made[k] = row.take(1.0);
+      // A side's hemicubes fill consecutive tiles; its row is their mean.
+      for (std::size_t tile = k * views; tile < (k + 1) * views; ++tile) {
+        const std::size_t x0 = (tile % std::size_t(tilesX_)) * std::size_t(res);
+        const std::size_t y0 = (tile / std::size_t(tilesX_)) * 3 * std::size_t(res);
+        auto accumulate = [&](std::size_t y, std::size_t height, const std::vector<float>& delta) {
+          for (std::size_t r = 0; r < height; ++r) {
+            const std::uint32_t* line = readback_.data() + (y + r) * width + x0;
+            const float* weights = delta.data() + r * std::size_t(res);
+            for (int x = 0; x < res; ++x)
+              if (line[x] != 0) row.add(line[x] - 1, weights[x]);
+          }
+        };
+        accumulate(y0, std::size_t(res), maps_.top);
+        for (int face = 0; face < 4; ++face)
+          accumulate(y0 + std::size_t(res) + std::size_t(face * half), std::size_t(half), maps_.side);
+      }
+      made[k] = row.take(1.0 / double(views));
     });
     for (std::size_t k = 0; k < count; ++k) rows.set(sides[first + k], std::move(made[k]));
   }
 }
 
 nlohmann::json HemicubeFormFactors::statistics() const {
+  const char* placement = placement_ == HemicubePlacement::Vertices   ? "vertices"
+                          : placement_ == HemicubePlacement::Jittered ? "jittered"
+                                                                      : "centroid";
   return {{"estimator", "hemicube"},
           {"resolution", maps_.resolution},
+          {"placement", placement},
           {"hemicubes", hemicubes_},
           {"hemicubes_per_readback", batch()},
           {"delta_form_factor_raw_sum", maps_.rawSum},

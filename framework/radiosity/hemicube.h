@@ -10,7 +10,19 @@
 //
 // Hemicubes of many sides are rendered into tiles of one atlas and read back together: one
 // GL-to-host transfer per batch, not per view.
+//
+// Where a side's hemicubes stand (HemicubePlacement; the radiosity method's hemicube_placement):
+//   centroid  one, at the centroid, "up" of its top view towards corner 0 (the seed's)
+//   vertices  three, at the corners (fig. 3.10), each pulled 1% of the way to the centroid so that
+//             it stands inside the patch; the row is their mean: the three-point (vertex) rule for
+//             the area-to-area factor, exact where the point factor is linear over the patch
+//   jittered  one, at a uniformly random point of the patch, turned about the normal by a random
+//             angle (per side, from the stream (seed, side)): the point-to-area factor of a random
+//             point, whose expectation is the area-to-area factor, and the item buffer's aliasing
+//             differs from side to side instead of repeating
+enum class HemicubePlacement { Centroid, Vertices, Jittered };
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -26,11 +38,15 @@ namespace lpvlab {
 class HemicubeFormFactors : public FormFactorEstimator {
 public:
   // `mesh` must outlive the estimator. Needs the GL context current (here and in computeRows).
-  HemicubeFormFactors(ShaderCompiler& shaders, const PatchMesh& mesh, int resolution, float sceneSize);
+  HemicubeFormFactors(ShaderCompiler& shaders, const PatchMesh& mesh, int resolution, float sceneSize,
+                      HemicubePlacement placement = HemicubePlacement::Centroid, std::uint64_t seed = 1);
   ~HemicubeFormFactors() override;
 
   void computeRows(const std::vector<std::uint32_t>& sides, FormFactorRows& rows) override;
-  std::size_t batch() const override { return std::size_t(tilesX_) * std::size_t(tilesY_); }
+  // Sides per batch: the atlas's tiles over the hemicubes each side takes.
+  std::size_t batch() const override {
+    return std::max<std::size_t>(1, std::size_t(tilesX_) * std::size_t(tilesY_) / std::size_t(viewsPerSide()));
+  }
   nlohmann::json statistics() const override;
   double work() const override { return double(hemicubes_); }
   std::string workUnit() const override { return "hemicube"; }
@@ -39,10 +55,19 @@ public:
   const HemicubeMaps& maps() const { return maps_; }
 
 private:
+  // One hemicube: where it stands and its top view's "up" (unit, in the side's plane).
+  struct View {
+    glm::vec3 eye, up;
+  };
+  int viewsPerSide() const { return placement_ == HemicubePlacement::Vertices ? 3 : 1; }
+  // The hemicubes of a side, placed as placement_ says.
+  void viewsOf(std::uint32_t side, View* views) const;
   void renderBatch(const std::uint32_t* sides, std::size_t count);
 
   const PatchMesh& mesh_;
   HemicubeMaps maps_;
+  HemicubePlacement placement_;
+  std::uint64_t seed_;
   Program program_;
   GLuint vertexArray_ = 0;
   gl::Buffer vertices_;

@@ -14,10 +14,11 @@
 namespace lpvlab {
 namespace {
 
-FormFactorRows hemicubeRows(const PatchMesh& mesh, int resolution, float sceneSize, bool frontOnly) {
+FormFactorRows hemicubeRows(const PatchMesh& mesh, int resolution, float sceneSize, bool frontOnly,
+                            HemicubePlacement placement = HemicubePlacement::Centroid, std::uint64_t seed = 1) {
   test::glTestContext();
   ShaderCompiler shaders;
-  HemicubeFormFactors estimator(shaders, mesh, resolution, sceneSize);
+  HemicubeFormFactors estimator(shaders, mesh, resolution, sceneSize, placement, seed);
   FormFactorRows rows(mesh.sides());
   std::vector<std::uint32_t> sides;
   for (std::uint32_t s = 0; s < mesh.sides(); ++s)
@@ -52,6 +53,51 @@ TEST(HemicubeFormFactors, PerpendicularRectanglesConvergeToTheClosedForm) {
   // Patches along the common edge see the other rectangle at grazing angles from their centroid:
   // the centroid rule converges there at first order in the patch size. Stated: within 2%.
   EXPECT_LT(fine, 0.02 * exact);
+}
+
+// Where the hemicubes stand (hemicube.h). Perpendicular unit squares at 0.5 m patches: a jittered
+// hemicube stands at a uniformly random point of its patch, so over independent seeds its factor
+// is an unbiased estimate of the area-to-area one (Howell's closed form), up to the 1/128^2 of
+// the item buffer; the centroid (one-point) and vertex (three-point) rules are printed beside it.
+// Near the common edge the point factor varies fast, so one jittered run is noisier than the
+// centroid's rule is biased here: jittering trades the rule's bias for noise.
+TEST(HemicubeFormFactors, JitteredHemicubesAreUnbiased) {
+  const Scene scene = test::perpendicularRectangles(1.0f, 1.0f, 1.0f);
+  const double exact = test::perpendicularRectanglesFormFactor(1, 1, 1);
+  const PatchMesh mesh = meshPatches(scene, 0.5f, 100000);
+  const auto factor = [&](HemicubePlacement placement, std::uint64_t seed) {
+    return test::meshFormFactor(mesh, hemicubeRows(mesh, 128, 2.0f, true, placement, seed), 0, 1);
+  };
+  const double centroid = factor(HemicubePlacement::Centroid, 1);
+  const double vertices = factor(HemicubePlacement::Vertices, 1);
+  constexpr int kSeeds = 48;
+  double sum = 0.0, squares = 0.0;
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    const double f = factor(HemicubePlacement::Jittered, std::uint64_t(seed));
+    sum += f, squares += f * f;
+  }
+  const double mean = sum / kSeeds;
+  const double spread = std::sqrt((squares / kSeeds - mean * mean) * kSeeds / (kSeeds - 1));
+  const double error = spread / std::sqrt(double(kSeeds));
+  std::printf("perpendicular squares at 0.5 m patches, 128 px: F = %.5f; centroid %.5f (%+.2f%%), "
+              "vertices %.5f (%+.2f%%), jittered: one run +- %.2f%%, the mean of %d %.5f +- %.5f (%+.2f%%)\n",
+              exact, centroid, 100 * (centroid / exact - 1), vertices, 100 * (vertices / exact - 1),
+              100 * spread / exact, kSeeds, mean, error, 100 * (mean / exact - 1));
+  EXPECT_LT(std::abs(mean - exact), 4.0 * error + 1e-4);
+  EXPECT_GT(spread, 0.0);  // the seeds do move the hemicubes
+}
+
+TEST(HemicubeFormFactors, EveryPlacementsRowsInAClosedBoxSumToOne) {
+  const Scene scene = test::closedCube(glm::vec3(0.5f), glm::vec3(0.0f));
+  const PatchMesh mesh = meshPatches(scene, 0.5f, 100000);
+  for (const HemicubePlacement placement : {HemicubePlacement::Vertices, HemicubePlacement::Jittered}) {
+    const FormFactorRows rows = hemicubeRows(mesh, 32, 1.0f, false, placement, 3);
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+      EXPECT_NEAR(rows.rowSum(2 * p), 1.0, 1e-5) << p;
+      EXPECT_EQ(rows.row(2 * p + 1).size(), 0u);
+      for (const FormFactor& f : rows.row(2 * p)) EXPECT_NE(f.side / 2, p) << "a patch saw itself";
+    }
+  }
 }
 
 TEST(HemicubeFormFactors, RowsInsideAClosedBoxSumToOneAndTheOutsideSeesNothing) {

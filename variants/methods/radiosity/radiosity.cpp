@@ -7,6 +7,8 @@
 //   max_patches          a bound on the patches (an error above it, not a silent coarsening)
 //   form_factors         "hemicube" (seed 004, 3.5-3.7) or "rays"
 //   hemicube_resolution  pixels across the hemicube's top face (even)
+//   hemicube_placement   "centroid" (the seed's), "vertices" (three, fig. 3.10) or "jittered" (a
+//                        random point and turn per side): framework/radiosity/hemicube.h
 //   rays                 form-factor rays per patch side (form_factors = "rays")
 //   solver               "gauss_seidel" (the seed's, 3.4), "jacobi" or "shooting" (2.2.3.1)
 //   tolerance            relative residual (gathering) or unshot power (shooting) to stop at
@@ -20,7 +22,7 @@
 //                        splits the patches where radiosity changes fast and solves again
 //   adaptive_threshold   a patch splits where a corner's radiosity differs from its own by more
 //                        than this times the scene's mean radiosity
-//   seed                 of the form-factor rays
+//   seed                 of the form-factor rays and of the jittered hemicubes
 // Frames redo only what changed: the camera alone, the display; lights, the first shot and the
 // solve (everything, with adaptive subdivision: the mesh followed the old light); geometry,
 // everything. Form factors are stored (the memory report counts them). The work of adaptive
@@ -56,6 +58,11 @@ public:
     formFactorsKey_ = p.where("form_factors");
     if (hemicube_) {
       resolution_ = p.get<int>("hemicube_resolution", 64, {.min = 2, .max = 2048});
+      const std::string placement =
+          p.getChoice("hemicube_placement", "centroid", {"centroid", "vertices", "jittered"});
+      placement_ = placement == "vertices"   ? HemicubePlacement::Vertices
+                   : placement == "jittered" ? HemicubePlacement::Jittered
+                                             : HemicubePlacement::Centroid;
       if (resolution_ % 2 != 0)
         throw Error(p.where("hemicube_resolution") + ": " + std::to_string(resolution_) +
                     " is odd (the side faces are half the top face's height)");
@@ -270,7 +277,7 @@ private:
     rayScene_ = std::make_unique<PatchRayScene>(scene_, mesh_);
     display_ = std::make_unique<PatchDisplay>(mesh_, *rayScene_);
     if (hemicube_)
-      estimator_ = std::make_unique<HemicubeFormFactors>(*shaders_, mesh_, resolution_, sceneSize_);
+      estimator_ = std::make_unique<HemicubeFormFactors>(*shaders_, mesh_, resolution_, sceneSize_, placement_, seed_);
     else
       estimator_ = std::make_unique<RayFormFactors>(mesh_, *rayScene_, rays_, seed_);
     rows_ = FormFactorRows(mesh_.sides());
@@ -364,6 +371,7 @@ private:
   int maxPatches_ = 0;
   bool hemicube_ = true;
   int resolution_ = 64, rays_ = 1024;
+  HemicubePlacement placement_ = HemicubePlacement::Centroid;
   std::string formFactorsKey_;  // where form_factors was read, for messages
   SolverSettings solver_;
   int lightSamples_ = 16;
