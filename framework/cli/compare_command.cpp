@@ -135,7 +135,7 @@ RelativePng writeRelativePng(const std::string& dir, const std::string& aov,
                   "1 (no difference)"};
   if (summary.p99 > 0.0) png = {png.path, summary.p99, "the 99th percentile"};
   else if (summary.max > 0.0) png = {png.path, summary.max, "the largest value"};
-  writePng(png.path, withColourBar(falseColour(largest, 0.0f, float(png.top), mask)), 0.0f, false);
+  writePng(png.path, withColourBar(falseColour(largest, 0.0f, float(png.top), mask)), 0.0f, ToneCurve::Clamp);
   return png;
 }
 
@@ -162,7 +162,8 @@ void writeDifferences(const std::string& dir, const std::vector<AovPngs>& pngs,
     // HDR-FLIP's map on its own scale, 0 (black) to 1 (pale yellow), as FLIP's tool shows it.
     const std::string flipPath =
         (std::filesystem::path(dir) / (layers(a.aov).first + "_hdr_flip.png")).string();
-    writePng(flipPath, withColourBar(falseColour(a.hdrFlip.error, 0.0f, 1.0f, covered)), 0.0f, false);
+    writePng(flipPath, withColourBar(falseColour(a.hdrFlip.error, 0.0f, 1.0f, covered)), 0.0f,
+             ToneCurve::Clamp);
     const HdrFlipExposures& e = a.hdrFlip.exposures;
     out["aovs"][a.aov]["hdr_flip_png"] = {
         {"path", flipPath},

@@ -287,6 +287,11 @@ void readImages(Params& params, Experiment& e) {
   e.settings.width = output.get<int>("width", 512, {.min = 1, .max = 16384});
   e.settings.height = output.get<int>("height", 512, {.min = 1, .max = 16384});
   e.autoExposure = output.get<bool>("auto_exposure", true);
+  e.toneCurve = output.getChoice("tone_curve", "reinhard", {"reinhard", "logarithmic"}) == "logarithmic"
+                    ? ToneCurve::Logarithmic
+                    : ToneCurve::Reinhard;
+  if (e.toneCurve == ToneCurve::Logarithmic)
+    e.whiteStops = output.get<float>("white_stops", 10.0f, {.min = 0.5f, .max = 40.0f});
   e.exposureStops = output.get<float>("exposure", 0.0f, {.min = -40.0f, .max = 40.0f});
   e.dumpGrid = output.get<bool>("dump_grid", false);
 

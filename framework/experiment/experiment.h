@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "framework/animation/animation.h"
+#include "framework/io/image.h"
 #include "framework/particles/particle_geometry.h"
 #include "framework/pipeline/pipeline.h"
 #include "framework/reference/reference_cache.h"
@@ -63,6 +64,9 @@ struct Experiment {
   // The PNG only (data in the EXR is never scaled): with autoExposure the median lit pixel goes
   // to middle grey and exposureStops is added to that; without, exposureStops alone.
   bool autoExposure = true;
+  // [output] tone_curve and white_stops: the PNG's curve (framework/io/image.h).
+  ToneCurve toneCurve = ToneCurve::Reinhard;
+  float whiteStops = 10.0f;
   // [output] dump_grid (lpvlab run --dump-grid): the method's light grid after the last frame is
   // written beside the images (grid.npy, grid.json); only for a method with one, in a static run.
   bool dumpGrid = false;

@@ -83,8 +83,9 @@ nlohmann::json runExperiment(Experiment& experiment, const GlContext& context,
   const float exposure = experiment.exposureStops +
                          (experiment.autoExposure ? middleGreyExposure(aovs[2].image) : 0.0f);
   manifest["outputs"]["png_exposure_stops"] = exposure;
-  writePng((dir / "combined.png").string(), aovs[2].image, exposure);
-  if (heatMap) writePng((dir / heatMapName).string(), *heatMap, 0.0f, false);
+  writePng((dir / "combined.png").string(), aovs[2].image, exposure, experiment.toneCurve,
+           experiment.whiteStops);
+  if (heatMap) writePng((dir / heatMapName).string(), *heatMap, 0.0f, ToneCurve::Clamp);
   writeTextAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
   return manifest;
 }

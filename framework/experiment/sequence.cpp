@@ -339,7 +339,8 @@ FrameState renderAndWriteFrame(Experiment& experiment, Pipeline& pipeline, const
            {{"lpvlab:experiment", experiment.name},
             {"lpvlab:scene_hash", hash},
             {"lpvlab:frame", std::to_string(frame)}});
-  writePng(stem + ".png", findAov(aovs, "combined"), *writer.exposure);
+  writePng(stem + ".png", findAov(aovs, "combined"), *writer.exposure, experiment.toneCurve,
+           experiment.whiteStops);
   writeTextAtomically(stem + ".json", record.dump(2) + "\n");
   return state;
 }

@@ -118,24 +118,35 @@ std::vector<NamedImage> readExr(const std::string& path) {
   return aovs;
 }
 
-void writePng(const std::string& path, const Image& rgb, float exposureStops, bool tonemap) {
+void writePng(const std::string& path, const Image& rgb, float exposureStops, ToneCurve curve,
+              float whiteStops) {
   if (rgb.channels != 3)
     throw Error(path + ": a PNG needs an RGB image, got " + std::to_string(rgb.channels) +
                 " channels");
   const float scale = std::exp2(exposureStops);
+  const double logWhite = std::log1p(std::exp2(double(whiteStops)));
   std::vector<std::uint8_t> bytes(rgb.pixels.size());
-  for (size_t i = 0; i < rgb.pixels.size(); ++i) {
-    const float value = rgb.pixels[i];
-    if (!std::isfinite(value)) {
-      const size_t pixel = i / 3;
-      throw Error(path + ": pixel (" + std::to_string(pixel % rgb.width) + ", " +
-                  std::to_string(pixel / rgb.width) + ") is not finite (NaN or Inf); " +
-                  "refusing to write an image that hides it");
+  for (size_t p = 0; p < rgb.pixels.size() / 3; ++p) {
+    glm::vec3 x;
+    for (int c = 0; c < 3; ++c) {
+      const float value = rgb.pixels[p * 3 + c];
+      if (!std::isfinite(value))
+        throw Error(path + ": pixel (" + std::to_string(p % rgb.width) + ", " +
+                    std::to_string(p / rgb.width) + ") is not finite (NaN or Inf); " +
+                    "refusing to write an image that hides it");
+      // Negative radiance (ringing from SH) shows as black rather than breaking the tone curve.
+      x[c] = std::max(0.0f, value * scale);
     }
-    // Negative radiance (ringing from SH) shows as black rather than breaking the tone curve.
-    const float x = std::max(0.0f, value * scale);
-    const float display = tonemap ? x / (1.0f + x) : std::min(x, 1.0f);
-    bytes[i] = static_cast<std::uint8_t>(std::lround(encodeSrgb(display) * 255.0f));
+    glm::vec3 display;
+    if (curve == ToneCurve::Logarithmic) {
+      const float y = 0.2126f * x.r + 0.7152f * x.g + 0.0722f * x.b;
+      const float mapped = float(std::log1p(double(y) / 0.18) / logWhite);
+      display = y > 0.0f ? glm::min(x * (mapped / y), glm::vec3(1.0f)) : glm::vec3(0.0f);
+    } else {
+      display = curve == ToneCurve::Reinhard ? x / (1.0f + x) : glm::min(x, glm::vec3(1.0f));
+    }
+    for (int c = 0; c < 3; ++c)
+      bytes[p * 3 + c] = static_cast<std::uint8_t>(std::lround(encodeSrgb(display[c]) * 255.0f));
   }
   OIIO::ImageSpec spec(rgb.width, rgb.height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");

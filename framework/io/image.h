@@ -45,10 +45,19 @@ void writeExr(const std::string& path, const std::vector<NamedImage>& aovs,
 // Reads every AOV back, grouped by the prefix before the '.' in channel names.
 std::vector<NamedImage> readExr(const std::string& path);
 
-// sRGB PNG of an RGB image scaled by 2^exposureStops, with a simple Reinhard-style tone curve
-// (x / (1 + x)) applied when `tonemap` is set, else clamped.
+// How a PNG maps the exposed linear value x (the image times 2^exposureStops) to the display:
+//   Reinhard     x / (1 + x) per channel
+//   Clamp        min(x, 1) per channel (false colour, heat maps)
+//   Logarithmic  the luminance Y to ln(1 + Y / 0.18) / ln(1 + 2^whiteStops), the colour scaled
+//                with it (hue kept) and clamped: seed 004's logarithmic display (3.8, fig. 3.17),
+//                which shows the radiosity of patches orders of magnitude below a light source's.
+//                Middle grey (0.18, where auto-exposure puts the median) shows at 0.1 of white,
+//                and white is whiteStops above it, the same for every frame of a sequence.
+enum class ToneCurve { Reinhard, Clamp, Logarithmic };
+
+// sRGB PNG of an RGB image scaled by 2^exposureStops through `curve`.
 void writePng(const std::string& path, const Image& rgb, float exposureStops = 0.0f,
-              bool tonemap = true);
+              ToneCurve curve = ToneCurve::Reinhard, float whiteStops = 10.0f);
 
 // The exposure (stops) that brings the median luminance of the non-black pixels of an RGB image
 // to middle grey (0.18), so an image is readable whatever the light's units; 0 for a black image.

@@ -1,6 +1,7 @@
 #include "framework/io/image.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <OpenImageIO/imageio.h>
@@ -90,7 +91,7 @@ TEST(Exr, ReadingAMissingFileNamesIt) {
 // The 8-bit value stored for one pixel of a one-pixel image.
 int pngValue(const test::TempDir& dir, float linear, float exposure, bool tonemap) {
   const std::string path = dir.file("pixel.png");
-  writePng(path, Image(1, 1, 3, linear), exposure, tonemap);
+  writePng(path, Image(1, 1, 3, linear), exposure, tonemap ? ToneCurve::Reinhard : ToneCurve::Clamp);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw Error(OIIO::geterror());
   unsigned char rgb[3];
@@ -112,11 +113,43 @@ TEST(Png, ExposureAndToneCurve) {
   EXPECT_EQ(pngValue(dir, -3.0f, 0.0f, true), 0);     // negative shows as black
 }
 
+// The logarithmic curve (seed 004, 3.8): luminance Y to ln(1 + Y / 0.18) / ln(1 + 2^white), the
+// colour scaled with it. Middle grey shows at 0.1 of white (10 stops), white at 2^10 middle greys,
+// anything brighter saturates; black stays black; a colour keeps its hue below white.
+TEST(Png, LogarithmicCurve) {
+  test::TempDir dir;
+  const auto pixel = [&](glm::vec3 linear, float whiteStops) {
+    Image image(1, 1, 3, 0.0f);
+    for (int c = 0; c < 3; ++c) image.pixels[c] = linear[c];
+    writePng(dir.file("log.png"), image, 0.0f, ToneCurve::Logarithmic, whiteStops);
+    auto in = OIIO::ImageInput::open(dir.file("log.png"));
+    unsigned char rgb[3];
+    in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb);
+    return glm::ivec3(rgb[0], rgb[1], rgb[2]);
+  };
+  // The sRGB encoding (IEC 61966-2-1), written out again as the test's own oracle.
+  const auto expected = [](double display) {
+    const double encoded = display <= 0.0031308 ? 12.92 * display : 1.055 * std::pow(display, 1.0 / 2.4) - 0.055;
+    return int(std::lround(encoded * 255.0));
+  };
+  const double logWhite = std::log1p(1024.0);
+  EXPECT_EQ(pixel(glm::vec3(0.18f), 10.0f), glm::ivec3(expected(std::log(2.0) / logWhite)));
+  EXPECT_EQ(pixel(glm::vec3(0.18f * 1024.0f), 10.0f), glm::ivec3(255));
+  EXPECT_EQ(pixel(glm::vec3(1e6f), 10.0f), glm::ivec3(255));
+  EXPECT_EQ(pixel(glm::vec3(0.0f), 10.0f), glm::ivec3(0));
+  EXPECT_EQ(pixel(glm::vec3(0.18f * 16.0f), 4.0f), glm::ivec3(255));  // another white point
+  // A colour: luminance 1.8 maps to ln(11) / ln(1025), each channel scaled by it over 1.8.
+  const glm::vec3 colour(3.0f, 1.5f, 0.6f);
+  const double y = 0.2126 * 3.0 + 0.7152 * 1.5 + 0.0722 * 0.6;
+  const double factor = std::log1p(y / 0.18) / logWhite / y;
+  EXPECT_EQ(pixel(colour, 10.0f), glm::ivec3(expected(3.0 * factor), expected(1.5 * factor), expected(0.6 * factor)));
+}
+
 TEST(Png, SizeAndLayout) {
   test::TempDir dir;
   Image image(7, 5, 3, 0.0f);
   image.at(6, 0, 0) = 1.0f;  // top-right red
-  writePng(dir.file("frame.png"), image, 0.0f, false);
+  writePng(dir.file("frame.png"), image, 0.0f, ToneCurve::Clamp);
   auto in = OIIO::ImageInput::open(dir.file("frame.png"));
   ASSERT_TRUE(in) << OIIO::geterror();
   EXPECT_EQ(in->spec().width, 7);
