@@ -20,7 +20,8 @@ set_tests_properties(RsmVplCpu.ItsNormalGridDrivesDirectedPropagationAsGlsOwnDoe
 set_tests_properties(Radiosity.OneBounceModeApproachesTheOneBounceReference PROPERTIES COST 11)
 set_tests_properties(TemporalNoise.TwoReferencesOfOneStaticFrameHaveATemporalErrorConsistentWithZero
                      PROPERTIES COST 10)
-set_tests_properties(PhongBrdf.ReflectsNoMoreThanItReceives PROPERTIES COST 7)
-set_tests_properties(PhongBrdf.SamplesTheDensityItReports PROPERTIES COST 6)
+set_tests_properties(PhongBrdf.WhiteFurnaceUnderAUniformSky PROPERTIES COST 16)
+set_tests_properties(LightCharts.PlacingByPowerGivesTheVplsEqualShares PROPERTIES COST 16)
+set_tests_properties(PhongBrdf.SamplesTheDensityItReports PROPERTIES COST 8)
+set_tests_properties(PhongBrdf.ReflectsNoMoreThanItReceives PROPERTIES COST 4)
 set_tests_properties(InstantRadiosity.ClampCompensationGivesTheClampedLightBackWithoutBias PROPERTIES COST 6)
-set_tests_properties(PhongBrdf.WhiteFurnaceUnderAUniformSky PROPERTIES COST 5)
