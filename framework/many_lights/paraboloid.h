@@ -10,19 +10,14 @@
 
 #include <glm/glm.hpp>
 
+#include "framework/reference/hemisphere_sampling.h"
+
 namespace lpvlab {
 
 class ParaboloidFrame {
 public:
-  // About unit normal n: an orthonormal basis without branches or small divisors (Duff et al.,
-  // "Building an Orthonormal Basis, Revisited", 2017).
-  explicit ParaboloidFrame(const glm::vec3& n) : n_(n) {
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float b = n.x * n.y * a;
-    t_ = glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    b_ = glm::vec3(b, sign + n.y * n.y * a, -n.y);
-  }
+  // About unit normal n (hemisphere_sampling.h's branch-free basis).
+  explicit ParaboloidFrame(const glm::vec3& n) : n_(n) { orthonormalBasis(n, t_, b_); }
 
   // The disk point of unit direction d; false when d is below the hemisphere (z <= 0).
   bool project(const glm::vec3& d, glm::vec2& uv) const {

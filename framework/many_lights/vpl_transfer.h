@@ -79,7 +79,7 @@ inline glm::vec3 vplTransfer(const glm::vec3& x, const glm::vec3& nx, const glm:
   if (!lobeSeen && cosAxis >= sinAlpha)
     return albedo * (cosAxis * sinAlpha * sinAlpha * cosVpl / area);
   glm::vec3 tangent, bitangent;
-  PhongBrdf::basisAbout(toVpl, tangent, bitangent);
+  orthonormalBasis(toVpl, tangent, bitangent);
   glm::vec3 sum(0.0f);
   for (int i = 0; i < kConeSide; ++i)
     for (int j = 0; j < kConeSide; ++j) {

@@ -141,24 +141,27 @@ void HemicubeFormFactors::renderBatch(const std::uint32_t* sides, std::size_t co
   const glm::mat4 topProjection = reversedFrustum(-near_, near_, -near_, near_, near_);
   const glm::mat4 sideProjection = reversedFrustum(-near_, near_, 0.0f, near_, near_);
   const int views = viewsPerSide();
-  for (std::size_t tile = 0; tile < count * std::size_t(views); ++tile) {
+  for (std::size_t k = 0; k < count; ++k) {
     View placed[3];
-    viewsOf(sides[tile / std::size_t(views)], placed);
-    const glm::vec3 n = sideNormal(mesh_, sides[tile / std::size_t(views)]);
-    const glm::vec3 eye = placed[tile % std::size_t(views)].eye;
-    // The top view's "up" in the side's plane, the side views around it.
-    const glm::vec3 t = placed[tile % std::size_t(views)].up;
-    const glm::vec3 b = glm::cross(n, t);
-    const int x0 = int(tile % std::size_t(tilesX_)) * res, y0 = int(tile / std::size_t(tilesX_)) * 3 * res;
-    auto draw = [&](const glm::mat4& clipFromWorld, int y, int height) {
-      glViewport(x0, y, res, height);
-      glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
-      glDrawArrays(GL_TRIANGLES, 0, vertexCount);
-    };
-    draw(topProjection * viewFromWorld(eye, n, t), y0, res);
-    const glm::vec3 across[4] = {t, -t, b, -b};
-    for (int face = 0; face < 4; ++face)
-      draw(sideProjection * viewFromWorld(eye, across[face], n), y0 + res + face * half, half);
+    viewsOf(sides[k], placed);
+    const glm::vec3 n = sideNormal(mesh_, sides[k]);
+    for (int v = 0; v < views; ++v) {
+      const std::size_t tile = k * std::size_t(views) + std::size_t(v);
+      const glm::vec3 eye = placed[v].eye;
+      // The top view's "up" in the side's plane, the side views around it.
+      const glm::vec3 t = placed[v].up;
+      const glm::vec3 b = glm::cross(n, t);
+      const int x0 = int(tile % std::size_t(tilesX_)) * res, y0 = int(tile / std::size_t(tilesX_)) * 3 * res;
+      auto draw = [&](const glm::mat4& clipFromWorld, int y, int height) {
+        glViewport(x0, y, res, height);
+        glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(clipFromWorld));
+        glDrawArrays(GL_TRIANGLES, 0, vertexCount);
+      };
+      draw(topProjection * viewFromWorld(eye, n, t), y0, res);
+      const glm::vec3 across[4] = {t, -t, b, -b};
+      for (int face = 0; face < 4; ++face)
+        draw(sideProjection * viewFromWorld(eye, across[face], n), y0 + res + face * half, half);
+    }
   }
   glBindVertexArray(0);
   glGetTextureImage(items_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT,

@@ -19,6 +19,16 @@ inline glm::vec2 cosSinQuarter(float angle) {
   return {cosine, sine};
 }
 
+// An orthonormal basis (tangent, bitangent) about unit n, without branches or a division by a
+// small number (Duff et al., "Building an Orthonormal Basis, Revisited", 2017).
+inline void orthonormalBasis(const glm::vec3& n, glm::vec3& tangent, glm::vec3& bitangent) {
+  const float sign = std::copysign(1.0f, n.z);
+  const float c = -1.0f / (sign + n.z);
+  const float d = n.x * n.y * c;
+  tangent = glm::vec3(1.0f + sign * n.x * n.x * c, sign * d, -sign * n.x);
+  bitangent = glm::vec3(d, sign + n.y * n.y * c, -n.y);
+}
+
 // A unit direction with density cos(theta) / pi (1/sr) about unit normal n, from two uniform
 // numbers: a uniform point on the unit disk by Shirley and Chiu's concentric map (square rings to
 // disk rings, so stratified numbers stay stratified) lifted onto the hemisphere (Malley's method).
@@ -31,13 +41,8 @@ inline glm::vec3 cosineHemisphere(const glm::vec3& n, float u1, float u2) {
     const glm::vec2 cs = cosSinQuarter(float(M_PI / 4) * (a / b));
     disk = b * glm::vec2(cs.y, cs.x);  // angle pi/2 - the quarter angle
   }
-  // An orthonormal basis about n without branches or a division by a small number (Duff et al.,
-  // "Building an Orthonormal Basis, Revisited", 2017).
-  const float sign = std::copysign(1.0f, n.z);
-  const float c = -1.0f / (sign + n.z);
-  const float d = n.x * n.y * c;
-  const glm::vec3 tangent(1.0f + sign * n.x * n.x * c, sign * d, -sign * n.x);
-  const glm::vec3 bitangent(d, sign + n.y * n.y * c, -n.y);
+  glm::vec3 tangent, bitangent;
+  orthonormalBasis(n, tangent, bitangent);
   const float height = std::sqrt(std::max(0.0f, 1.0f - glm::dot(disk, disk)));
   return disk.x * tangent + disk.y * bitangent + height * n;
 }

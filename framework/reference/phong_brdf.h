@@ -73,7 +73,7 @@ struct PhongBrdf {
       const float phi = float(2.0 * M_PI) * u2;
       const glm::vec3 r = reflect(n, wo);
       glm::vec3 tangent, bitangent;
-      basisAbout(r, tangent, bitangent);
+      orthonormalBasis(r, tangent, bitangent);
       wi = glm::normalize(s * std::cos(phi) * tangent + s * std::sin(phi) * bitangent + t * r);
     } else {
       wi = cosineHemisphere(n, u1, u2);
@@ -83,15 +83,6 @@ struct PhongBrdf {
 
   static glm::vec3 reflect(const glm::vec3& n, const glm::vec3& wo) {
     return 2.0f * glm::dot(n, wo) * n - wo;
-  }
-
-  // An orthonormal basis about unit a (Duff et al. 2017).
-  static void basisAbout(const glm::vec3& a, glm::vec3& tangent, glm::vec3& bitangent) {
-    const float sign = std::copysign(1.0f, a.z);
-    const float c = -1.0f / (sign + a.z);
-    const float d = a.x * a.y * c;
-    tangent = glm::vec3(1.0f + sign * a.x * a.x * c, sign * d, -sign * a.x);
-    bitangent = glm::vec3(d, sign + a.y * a.y * c, -a.y);
   }
 };
 

@@ -85,7 +85,7 @@ void samplesAgreeWithAFineQuadrature(const Vpl& vpl, const ReceiverLobe& sphere,
   const glm::vec3 axis = vpl.position / d;
   const double sinAlpha = sphere.sphereRadius / d, cosAlpha = std::sqrt(1.0 - sinAlpha * sinAlpha);
   glm::vec3 tangent, bitangent;
-  PhongBrdf::basisAbout(axis, tangent, bitangent);
+  orthonormalBasis(axis, tangent, bitangent);
   const PhongBrdf f{.diffuse = kAlbedo, .specular = glm::vec3(sphere.specularAlbedo), .exponent = sphere.exponent};
   const glm::vec3 wo = glm::normalize(sphere.eye);
   constexpr int kFine = 400;
